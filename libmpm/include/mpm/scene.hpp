@@ -1,0 +1,104 @@
+#pragma once
+/// \file scene.hpp
+/// Plain-data description of a simulation as read from a YAML scene file (see docs/scene-reference.md).
+/// The loader (scene_loader.hpp) fills it and validates every value; build_simulation() turns it into
+/// a running Simulation. Nothing here allocates particle or grid storage.
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mpm {
+
+/// Where a value came from in the scene file (1-based line and column; 0 when unknown).
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+/// Grid velocity constraint of one component on one box face. `expression` is a muparser expression of
+/// `t` (seconds); "0" means fixed. An empty optional means the component is free.
+using ComponentConstraint = std::optional<std::string>;
+
+/// Boundary condition on one face of the grid box.
+struct FaceBoundary {
+  std::array<ComponentConstraint, 3> component;  ///< per velocity component (x, y, z)
+  SourceLocation where;
+};
+
+struct GridDescription {
+  std::array<double, 3> origin{0, 0, 0};     ///< m, lower corner
+  std::array<double, 3> extent{0, 0, 0};     ///< m, box lengths
+  std::array<double, 3> cell_size{0, 0, 0};  ///< m, per axis
+  std::array<int, 3> cells{1, 1, 1};         ///< derived: extent / cell_size (checked to divide evenly)
+  /// Faces in the order x_min, x_max, y_min, y_max, z_min, z_max.
+  std::array<FaceBoundary, 6> boundary;
+};
+
+/// A named material: its model key (a registry name such as "linear_elastic") and its parameters, in SI
+/// units, already checked against the model's parameter specification.
+struct MaterialDescription {
+  std::string name;
+  std::string model;
+  std::map<std::string, double> parameters;
+  SourceLocation where;
+};
+
+/// Primitive shapes a body can be filled from.
+struct ShapeDescription {
+  std::string type;  ///< "box", "disk" (2D), "sphere" (3D), "cylinder" (3D)
+  std::array<double, 3> min{0, 0, 0}, max{0, 0, 0};  ///< box corners, m
+  std::array<double, 3> center{0, 0, 0};            ///< disk/sphere centre, cylinder base centre, m
+  double radius = 0;                                ///< m
+  int axis = 2;                                     ///< cylinder axis (0 = x, 1 = y, 2 = z)
+  double length = 0;                                ///< cylinder length along its axis, m
+};
+
+/// A body: a set of particles with one material.
+struct BodyDescription {
+  std::string name;
+  std::string material;  ///< key into SceneDescription::materials
+  ShapeDescription shape;
+  std::array<int, 3> particles_per_cell{2, 2, 2};  ///< per axis
+  /// Initial velocity per component: muparser expressions of x, y, z (constants are expressions too).
+  std::array<std::string, 3> velocity{"0", "0", "0"};
+  SourceLocation where;
+};
+
+struct SolverDescription {
+  std::string scheme = "musl";           ///< "usl" or "musl"
+  std::string shape_function = "linear"; ///< "linear" or "cubic_bspline"
+  double flip_fraction = 1.0;            ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
+  std::optional<double> dt;              ///< s, fixed time step (exclusive with cfl)
+  std::optional<double> cfl;             ///< CFL factor of eq. 2.73, in (0, 1]
+  double end_time = 0;                   ///< s
+  double mass_cutoff = 1e-12;            ///< relative small-nodal-mass cut-off (x max nodal mass)
+  std::array<double, 3> gravity{0, 0, 0};///< m/s^2, body force per unit mass
+  int snapshot_interval = 20;            ///< steps between in-memory snapshots used by the stability guard
+  int sort_interval = 20;                ///< steps between particle reorderings by cell
+  SourceLocation dt_where;
+};
+
+struct OutputDescription {
+  std::string directory = "output";
+  std::string prefix = "particles";
+  double interval = 0;                   ///< s between output frames (0 = only first and last)
+  std::vector<std::string> fields{"velocity", "stress", "mass", "volume", "body"};
+  bool grid = false;                     ///< also write the grid (.vti) at each frame
+  SourceLocation where;
+};
+
+struct SceneDescription {
+  std::string file;  ///< path of the scene file
+  int dimension = 2;
+  GridDescription grid;
+  std::map<std::string, MaterialDescription> materials;
+  std::vector<BodyDescription> bodies;
+  SolverDescription solver;
+  OutputDescription output;
+};
+
+}  // namespace mpm
