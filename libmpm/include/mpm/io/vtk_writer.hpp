@@ -1,0 +1,53 @@
+#pragma once
+/// \file vtk_writer.hpp
+/// Particles and grids as VTK XML files (.vtu, .vti) for ParaView: binary appended data, zlib
+/// compressed, written atomically, and never containing a NaN or an infinity.
+
+#include <array>
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace mpm::io {
+
+/// A named array of values per point; `components` numbers per point (1 scalar, 3 vector, 9 tensor,
+/// 6 symmetric tensor in the order XX, YY, ZZ, XY, YZ, XZ...). `values` is point-major:
+/// values[point * components + component].
+struct FieldArray {
+  std::string name;
+  int components = 1;
+  std::vector<double> values;
+};
+
+/// Points (always 3 coordinates per point, z = 0 in 2D) and their fields.
+struct PointCloud {
+  std::vector<double> points;
+  std::vector<FieldArray> fields;
+  /// Number of points.
+  std::size_t size() const { return points.size() / 3; }
+};
+
+/// Regular grid of nodes: origin, spacing (m), number of NODES per axis (use 1 for unused axes),
+/// point data per node (x fastest, then y, then z).
+struct ImageGrid {
+  std::array<double, 3> origin{};
+  std::array<double, 3> spacing{1, 1, 1};
+  std::array<int, 3> nodes{1, 1, 1};
+  std::vector<FieldArray> fields;
+};
+
+/// Writes the particles as a VTK XML UnstructuredGrid (.vtu), one VTK_VERTEX cell per point, binary
+/// appended data, zlib compressed, atomically (see write_atomically).
+/// Throws std::runtime_error, before anything is written, if a coordinate or a field value is not
+/// finite (the message names the field and the point index), if points.size() is not a multiple of
+/// 3, if a field's values.size() != components * size(), if a field has an empty or duplicate name
+/// or components < 1; and if VTK fails to write the file.
+void write_vtu(const std::filesystem::path& path, const PointCloud& cloud);
+
+/// Writes the grid as a VTK XML ImageData (.vti), same rules as write_vtu (binary, compressed,
+/// atomic, finite values only). Also throws if a node count is < 1, or if origin or spacing is not
+/// finite or a spacing is not > 0.
+void write_vti(const std::filesystem::path& path, const ImageGrid& grid);
+
+}  // namespace mpm::io

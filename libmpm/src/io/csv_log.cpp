@@ -1,0 +1,71 @@
+#include "mpm/io/csv_log.hpp"
+
+#include "mpm/io/atomic_file.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include <utility>
+
+namespace mpm::io {
+namespace {
+
+// %.17g in the C locale, whatever the global locale.
+std::string format_double(double v) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::general, 17).ptr;
+  return std::string(buffer, end);
+}
+
+// RFC 4180: quote a name that holds a comma, a quote or a line break.
+std::string csv_quote(const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + '"';
+}
+
+}  // namespace
+
+CsvLog::CsvLog(std::filesystem::path path, std::vector<std::string> columns)
+    : path_(std::move(path)), columns_(std::move(columns)) {
+  if (columns_.empty()) throw std::invalid_argument("CsvLog: '" + path_.string() + "' has no columns");
+  write();
+}
+
+void CsvLog::append(const std::vector<double>& row) {
+  if (row.size() != columns_.size())
+    throw std::invalid_argument("CsvLog::append: row of " + std::to_string(row.size()) + " values for " +
+                                std::to_string(columns_.size()) + " columns in '" + path_.string() + "'");
+  for (std::size_t i = 0; i < row.size(); ++i)
+    if (!std::isfinite(row[i]))
+      throw std::invalid_argument("CsvLog::append: non-finite value in column '" + columns_[i] +
+                                  "' of '" + path_.string() + "'");
+  rows_.push_back(row);
+  try {
+    write();
+  } catch (...) {
+    rows_.pop_back();
+    throw;
+  }
+}
+
+void CsvLog::write() const {
+  write_atomically(path_, [this](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    for (std::size_t i = 0; i < columns_.size(); ++i) out << (i ? "," : "") << csv_quote(columns_[i]);
+    out << '\n';
+    for (const auto& row : rows_) {
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << format_double(row[i]);
+      out << '\n';
+    }
+    out.close();
+    if (!out) throw std::runtime_error("CsvLog: cannot write '" + path_.string() + "'");
+  });
+}
+
+}  // namespace mpm::io

@@ -1,0 +1,64 @@
+#include "mpm/io/pvd_collection.hpp"
+
+#include "mpm/io/atomic_file.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace mpm::io {
+namespace {
+
+// %.17g (reads back to the same double) in the C locale, whatever the global locale.
+std::string format_double(double v) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::general, 17).ptr;
+  return std::string(buffer, end);
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+PvdCollection::PvdCollection(std::filesystem::path pvd_path) : path_(std::move(pvd_path)) {}
+
+void PvdCollection::add(double time, const std::filesystem::path& file) {
+  if (!std::isfinite(time))
+    throw std::invalid_argument("PvdCollection::add: time of '" + file.string() + "' is not finite");
+  const auto dir = std::filesystem::absolute(path_).parent_path();
+  frames_.push_back({time, std::filesystem::absolute(file).lexically_normal().lexically_relative(dir)});
+}
+
+void PvdCollection::write() const {
+  write_atomically(path_, [this](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+           "  <Collection>\n";
+    for (const auto& f : frames_)
+      out << "    <DataSet timestep=\"" << format_double(f.time) << "\" group=\"\" part=\"0\" file=\""
+          << xml_escape(f.file.generic_string()) << "\"/>\n";
+    out << "  </Collection>\n"
+           "</VTKFile>\n";
+    out.close();
+    if (!out) throw std::runtime_error("PvdCollection::write: cannot write '" + path_.string() + "'");
+  });
+}
+
+}  // namespace mpm::io

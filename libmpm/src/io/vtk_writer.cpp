@@ -1,0 +1,167 @@
+#include "mpm/io/vtk_writer.hpp"
+
+#include "mpm/io/atomic_file.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkCommand.h>
+#include <vtkIdTypeArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLImageDataWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace mpm::io {
+namespace {
+
+[[noreturn]] void fail(const char* where, const std::string& what) {
+  throw std::runtime_error(std::string(where) + ": " + what);
+}
+
+// Every value must be finite: `name` and the point index go into the message.
+void check_finite(const char* where, const std::string& name, const std::vector<double>& values,
+                  int components) {
+  const auto bad = std::find_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); });
+  if (bad == values.end()) return;
+  const auto i = static_cast<std::size_t>(bad - values.begin());
+  const auto c = static_cast<std::size_t>(components);
+  fail(where, "non-finite value " + std::to_string(*bad) + " in '" + name + "' at point " +
+                  std::to_string(i / c) + ", component " + std::to_string(i % c));
+}
+
+// Sizes, names and values of all fields, for `points` points.
+void check_fields(const char* where, const std::vector<FieldArray>& fields, std::size_t points) {
+  std::set<std::string> names;
+  for (const auto& f : fields) {
+    if (f.name.empty()) fail(where, "a field has an empty name");
+    if (!names.insert(f.name).second) fail(where, "two fields are named '" + f.name + "'");
+    if (f.components < 1)
+      fail(where, "field '" + f.name + "' has " + std::to_string(f.components) + " components");
+    const auto expected = static_cast<std::size_t>(f.components) * points;
+    if (f.values.size() != expected)
+      fail(where, "field '" + f.name + "' has " + std::to_string(f.values.size()) +
+                      " values, expected " + std::to_string(f.components) + " x " +
+                      std::to_string(points) + " = " + std::to_string(expected));
+    check_finite(where, f.name, f.values, f.components);
+  }
+}
+
+vtkSmartPointer<vtkDoubleArray> to_vtk(const FieldArray& f) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(f.name.c_str());
+  a->SetNumberOfComponents(f.components);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(f.values.size() / static_cast<std::size_t>(f.components)));
+  std::copy(f.values.begin(), f.values.end(), a->GetPointer(0));
+  if (f.components == 6) {
+    static const char* const names[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
+    for (int c = 0; c < 6; ++c) a->SetComponentName(c, names[c]);
+  }
+  return a;
+}
+
+void add_fields(vtkPointData* data, const std::vector<FieldArray>& fields) {
+  for (const auto& f : fields) data->AddArray(to_vtk(f));
+}
+
+// Keeps the last error VTK reports on the writer, for the exception message.
+class ErrorCapture : public vtkCommand {
+ public:
+  static ErrorCapture* New() { return new ErrorCapture; }
+  void Execute(vtkObject*, unsigned long, void* message) override {
+    if (message) last = static_cast<const char*>(message);
+  }
+  std::string last;
+};
+
+// Binary appended, raw (not base64), zlib compressed; 64-bit block headers so that arrays larger
+// than 4 GiB are still readable. Writes atomically; throws if VTK reports a failure.
+template <class Writer>
+void write_xml(const char* where, const std::filesystem::path& path, Writer* writer) {
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToZLib();
+  writer->SetHeaderTypeToUInt64();
+  vtkNew<ErrorCapture> errors;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    writer->SetFileName(tmp.c_str());
+    if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->last.empty())
+      fail(where, "VTK could not write '" + path.string() + "' (error code " +
+                      std::to_string(writer->GetErrorCode()) + "): " + errors->last);
+  });
+}
+
+}  // namespace
+
+void write_vtu(const std::filesystem::path& path, const PointCloud& cloud) {
+  constexpr const char* where = "write_vtu";
+  if (cloud.points.size() % 3 != 0)
+    fail(where, std::to_string(cloud.points.size()) + " coordinates is not 3 per point");
+  const auto n = cloud.size();
+  check_finite(where, "points", cloud.points, 3);
+  check_fields(where, cloud.fields, n);
+
+  vtkNew<vtkDoubleArray> coords;
+  coords->SetNumberOfComponents(3);
+  coords->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  std::copy(cloud.points.begin(), cloud.points.end(), coords->GetPointer(0));
+  vtkNew<vtkPoints> points;
+  points->SetData(coords);
+
+  // One vertex per point: offsets 0..n, connectivity 0..n-1.
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfTuples(static_cast<vtkIdType>(n + 1));
+  for (vtkIdType i = 0; i <= static_cast<vtkIdType>(n); ++i) offsets->SetValue(i, i);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(n); ++i) connectivity->SetValue(i, i);
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->SetCells(VTK_VERTEX, cells);
+  add_fields(grid->GetPointData(), cloud.fields);
+
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetInputData(grid);
+  write_xml(where, path, writer.Get());
+}
+
+void write_vti(const std::filesystem::path& path, const ImageGrid& grid) {
+  constexpr const char* where = "write_vti";
+  std::size_t n = 1;
+  for (int d = 0; d < 3; ++d) {
+    if (grid.nodes[d] < 1)
+      fail(where, "node count " + std::to_string(grid.nodes[d]) + " on axis " + std::to_string(d) +
+                      " is < 1");
+    if (!std::isfinite(grid.origin[d])) fail(where, "origin is not finite on axis " + std::to_string(d));
+    if (!std::isfinite(grid.spacing[d]) || !(grid.spacing[d] > 0))
+      fail(where, "spacing " + std::to_string(grid.spacing[d]) + " on axis " + std::to_string(d) +
+                      " is not finite and > 0");
+    n *= static_cast<std::size_t>(grid.nodes[d]);
+  }
+  check_fields(where, grid.fields, n);
+
+  vtkNew<vtkImageData> image;
+  image->SetOrigin(grid.origin.data());
+  image->SetSpacing(grid.spacing.data());
+  image->SetDimensions(grid.nodes.data());
+  add_fields(image->GetPointData(), grid.fields);
+
+  vtkNew<vtkXMLImageDataWriter> writer;
+  writer->SetInputData(image);
+  write_xml(where, path, writer.Get());
+}
+
+}  // namespace mpm::io
