@@ -1,0 +1,42 @@
+#pragma once
+/// \file run_scene.hpp
+/// `mpm run` and `mpm check` behind the command line: build, run with output and progress, summarise.
+
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+
+#include "mpm/scene.hpp"
+
+namespace mpm::app {
+
+/// Exit statuses of the `mpm` program.
+enum ExitStatus : int {
+  exit_ok = 0,
+  exit_runtime_error = 1,  ///< I/O failure or an internal error
+  exit_bad_input = 2,      ///< invalid scene or command line
+  exit_unstable = 3,       ///< the stability guard stopped the run (the last good state was written)
+};
+
+struct RunOptions {
+  std::optional<std::filesystem::path> output_directory;  ///< overrides the scene's output.directory
+  bool progress = false;                                  ///< progress line (on a terminal)
+};
+
+struct RunSummary {
+  long long steps = 0;
+  double wall_seconds = 0;
+  double particle_updates_per_second = 0;
+  double relative_energy_change = 0;  ///< (E_end - E_0)/|E_0|
+  std::size_t particles = 0;
+  std::size_t bytes_per_particle = 0;
+};
+
+/// Builds the scene's simulation without running it (throws SceneError like load_scene).
+void check_scene(const SceneDescription& scene, std::ostream& out);
+
+/// Runs the scene to its end time, writing output; returns the summary. Throws SceneError for a scene
+/// that only fails once built and StabilityError (after writing the last good state) if the guard trips.
+RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& log);
+
+}  // namespace mpm::app

@@ -1,0 +1,59 @@
+// The `mpm` command line program: `mpm run SCENE`, `mpm check SCENE`. Exit statuses in run_scene.hpp.
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <memory>
+
+#include "mpm/app/run_scene.hpp"
+#include "mpm/scene_error.hpp"
+#include "mpm/scene_loader.hpp"
+#include "mpm/stability_error.hpp"
+
+int main(int argc, char** argv) {
+  using namespace mpm::app;
+  CLI::App cli{"mpm: explicit material point method (USL/MUSL) with YAML scenes and ParaView output"};
+  cli.set_version_flag("--version", std::string("mpm ") + MPM_VERSION);
+  cli.require_subcommand(1);
+  std::string scene_file;
+  std::string output_dir;
+  int threads = 0;
+  auto* run_cmd = cli.add_subcommand("run", "run a scene and write .vtu/.pvd/energy.csv output");
+  run_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
+  run_cmd->add_option("-o,--output", output_dir, "output directory (overrides output.directory)");
+  run_cmd->add_option("--threads", threads, "number of threads (default: all cores)")->check(CLI::PositiveNumber);
+  auto* check_cmd = cli.add_subcommand("check", "validate a scene without running it");
+  check_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int status = cli.exit(e);
+    return status == 0 ? exit_ok : exit_bad_input;
+  }
+
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if (threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  try {
+    const mpm::SceneDescription scene = mpm::load_scene(scene_file);
+    if (check_cmd->parsed()) {
+      check_scene(scene, std::cout);
+      return exit_ok;
+    }
+    RunOptions options;
+    if (!output_dir.empty()) options.output_directory = output_dir;
+    options.progress = isatty(STDERR_FILENO);
+    run_scene(scene, options, std::cerr);
+    return exit_ok;
+  } catch (const mpm::SceneError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  } catch (const mpm::StabilityError& e) {
+    std::cerr << "error: " << e.what() << "\nThe last good state was written to the output.\n";
+    return exit_unstable;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_runtime_error;
+  }
+}

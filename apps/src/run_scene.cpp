@@ -1,0 +1,96 @@
+#include "mpm/app/run_scene.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <chrono>
+#include <cmath>
+#include <ostream>
+
+#include "mpm/app/scene_builder.hpp"
+#include "mpm/output_writer.hpp"
+
+namespace mpm::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <int Dim>
+void check(const SceneDescription& scene, std::ostream& out) {
+  auto sim = build_simulation<Dim>(scene);
+  const Real dt = sim->next_time_step();
+  fmt::print(out, "{}: valid. {}D, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
+                  "(stable bound {:.6g} s); about {} steps to t = {:.6g} s\n",
+             scene.file, Dim, sim->particle_count(), sim->bodies().size(), sim->grid().size(), scene.solver.scheme,
+             scene.solver.shape_function, dt, sim->stable_time_step(),
+             static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
+}
+
+template <int Dim>
+RunSummary run(const SceneDescription& scene, const RunOptions& options, std::ostream& log) {
+  auto sim = build_simulation<Dim>(scene);
+  const auto& o = scene.output;
+  OutputWriter<Dim> writer(options.output_directory.value_or(o.directory), o.prefix, o.fields, o.grid, o.interval);
+  RunSummary summary;
+  summary.particles = static_cast<std::size_t>(sim->particle_count());
+  for (const auto& b : sim->bodies()) summary.bytes_per_particle = std::max(summary.bytes_per_particle, b.particles.bytes_per_particle());
+  const Real e0 = sim->energy().total();
+  writer.write_if_due(*sim);
+
+  const auto start = Clock::now();
+  auto last_print = start;
+  auto after_step = [&](const Simulation<Dim>& s) {
+    writer.write_if_due(s);
+    if (!options.progress) return;
+    const auto now = Clock::now();
+    if (now - last_print < std::chrono::milliseconds(500)) return;
+    last_print = now;
+    const double wall = std::chrono::duration<double>(now - start).count();
+    const double rate = static_cast<double>(s.particle_count()) * s.step() / wall;
+    const double eta = wall * (s.settings().end_time - s.time()) / std::max(s.time(), 1e-300);
+    fmt::print(log, "\rstep {:>8}  t = {:<12.6g} s  {:9.3g} particle-updates/s  ETA {:7.1f} s ", s.step(), s.time(),
+               rate, eta);
+    log.flush();
+  };
+  try {
+    sim->run(after_step);
+  } catch (const StabilityError&) {
+    writer.write(*sim);  // the simulation was rolled back to the last good step
+    if (options.progress) log << '\n';
+    throw;
+  }
+  writer.write(*sim);
+  if (options.progress) log << '\n';
+  summary.steps = sim->step();
+  summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.particle_updates_per_second =
+      static_cast<double>(summary.particles) * summary.steps / std::max(summary.wall_seconds, 1e-300);
+  const Real e1 = sim->energy().total();
+  summary.relative_energy_change = e0 != 0 ? (e1 - e0) / std::abs(e0) : e1;
+  fmt::print(log,
+             "done: {} steps to t = {:.6g} s in {:.3f} s wall, {:.4g} particle-updates/s, {} particles ({} B state "
+             "each), relative energy change {:+.3e}; output in {}\n",
+             summary.steps, sim->time(), summary.wall_seconds, summary.particle_updates_per_second, summary.particles,
+             summary.bytes_per_particle, summary.relative_energy_change, writer.directory().string());
+  return summary;
+}
+
+}  // namespace
+
+void check_scene(const SceneDescription& scene, std::ostream& out) {
+  switch (scene.dimension) {
+    case 1: return check<1>(scene, out);
+    case 2: return check<2>(scene, out);
+    default: return check<3>(scene, out);
+  }
+}
+
+RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& log) {
+  switch (scene.dimension) {
+    case 1: return run<1>(scene, options, log);
+    case 2: return run<2>(scene, options, log);
+    default: return run<3>(scene, options, log);
+  }
+}
+
+}  // namespace mpm::app

@@ -1,0 +1,87 @@
+#include "mpm/app/scene_builder.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "mpm/expression.hpp"
+#include "mpm/geometry/primitive_filler.hpp"
+#include "mpm/material_factory.hpp"
+#include "mpm/scene_error.hpp"
+
+namespace mpm::app {
+
+template <int Dim>
+std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
+  const auto& gd = scene.grid;
+  Vec<Dim> origin, h;
+  std::array<int, Dim> cells{};
+  for (int d = 0; d < Dim; ++d) {
+    origin[d] = gd.origin[d];
+    h[d] = gd.cell_size[d];
+    cells[d] = gd.cells[d];
+  }
+  const GridGeometry<Dim> geometry(origin, h, cells);
+  auto scheme = make_scheme<Dim>(scene.solver.scheme, scene.solver.shape_function);
+
+  const bool wants_displacement =
+      std::find(scene.output.fields.begin(), scene.output.fields.end(), "displacement") != scene.output.fields.end();
+  std::vector<Body<Dim>> bodies;
+  Real max_particle_mass = 0;
+  for (const auto& bd : scene.bodies) {
+    const MaterialDescription& md = scene.materials.at(bd.material);
+    Body<Dim> body;
+    body.name = bd.name;
+    body.index = static_cast<int>(bodies.size());
+    body.material = make_material<Dim>(md);
+    const auto seeds = geometry::fill_primitive<Dim>(bd.shape, geometry, bd.particles_per_cell);
+    if (seeds.positions.empty())
+      throw SceneError(bd.where, "bodies[" + std::to_string(body.index) + "].shape",
+                       "body '" + bd.name + "' contains no particle: the shape is smaller than a particle spacing");
+    std::array<Expression, 3> velocity{Expression(bd.velocity[0], {"x", "y", "z"}),
+                                       Expression(bd.velocity[1], {"x", "y", "z"}),
+                                       Expression(bd.velocity[2], {"x", "y", "z"})};
+    auto& p = body.particles;
+    const Real rho = body.material->density();
+    for (const auto& x : seeds.positions) {
+      p.add(x, rho * seeds.volume, seeds.volume);
+      double xyz[3] = {0, 0, 0};
+      for (int d = 0; d < Dim; ++d) xyz[d] = x[d];
+      for (int d = 0; d < Dim; ++d) p.v.back()[d] = velocity[d].evaluate(xyz, 0);
+    }
+    if (wants_displacement) {
+      auto& x0 = p.template add_field<VecU<Dim>>("reference_position");
+      for (Index i = 0; i < p.size(); ++i) x0[i] = p.x[i];
+    }
+    max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);
+    bodies.push_back(std::move(body));
+  }
+
+  SimulationSettings<Dim> settings;
+  settings.transfer.flip_fraction = scene.solver.flip_fraction;
+  settings.transfer.mass_cutoff = scene.solver.mass_cutoff * max_particle_mass;
+  for (int d = 0; d < Dim; ++d) settings.transfer.gravity[d] = scene.solver.gravity[d];
+  settings.fixed_dt = scene.solver.dt;
+  settings.cfl = scene.solver.cfl.value_or(0.5);
+  settings.end_time = scene.solver.end_time;
+  settings.snapshot_interval = scene.solver.snapshot_interval;
+  settings.sort_interval = scene.solver.sort_interval;
+
+  auto sim = std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme),
+                                               GridBoundary<Dim>(geometry, gd.boundary), settings);
+  if (settings.fixed_dt) {
+    const Real bound = sim->stable_time_step();
+    if (*settings.fixed_dt > bound)
+      throw SceneError(scene.solver.dt_where, "solver.dt",
+                       fmt::format("dt = {:.6g} s is larger than the stable time step {:.6g} s of the initial state "
+                                   "(CFL bound h / (c + |v|), eq. 2.73); use dt <= {:.6g} or `cfl` instead",
+                                   *settings.fixed_dt, bound, bound));
+  }
+  return sim;
+}
+
+template std::unique_ptr<Simulation<1>> build_simulation<1>(const SceneDescription&);
+template std::unique_ptr<Simulation<2>> build_simulation<2>(const SceneDescription&);
+template std::unique_ptr<Simulation<3>> build_simulation<3>(const SceneDescription&);
+
+}  // namespace mpm::app

@@ -1,0 +1,22 @@
+#pragma once
+/// \file body.hpp
+/// A body: a particle set with one material.
+
+#include <memory>
+#include <string>
+
+#include "mpm/material.hpp"
+#include "mpm/slab_binning.hpp"
+
+namespace mpm {
+
+template <int Dim>
+struct Body {
+  std::string name;
+  int index = 0;                             ///< position in the scene's body list (output field `body`)
+  ParticleSet<Dim> particles;
+  std::shared_ptr<Material<Dim>> material;   ///< stateless: shared by snapshots
+  SlabBins bins;                             ///< rebuilt every step by the scheme
+};
+
+}  // namespace mpm

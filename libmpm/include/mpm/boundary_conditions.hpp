@@ -1,0 +1,41 @@
+#pragma once
+/// \file boundary_conditions.hpp
+/// Velocity constraints on the nodes of the grid box faces (review §4.2.1): per face and per component
+/// free, fixed (0) or prescribed as an expression of t. Applied to the nodal velocities at every stage
+/// where the algorithms overwrite them (v^t, v~^{t+dt}, v^{t+dt}).
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "mpm/grid.hpp"
+#include "mpm/scene.hpp"
+
+namespace mpm {
+
+class Expression;
+
+template <int Dim>
+class GridBoundary {
+ public:
+  GridBoundary() = default;
+  /// `faces` in the order x_min, x_max, y_min, y_max, z_min, z_max (only 2*Dim are read).
+  GridBoundary(const GridGeometry<Dim>& g, const std::array<FaceBoundary, 6>& faces);
+  ~GridBoundary();
+  GridBoundary(GridBoundary&&) noexcept;
+  GridBoundary& operator=(GridBoundary&&) noexcept;
+
+  bool empty() const { return constraints_.empty(); }
+  /// Sets the constrained components of `member` of every face node to their value at time t.
+  void apply(std::vector<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member, Real t) const;
+
+ private:
+  struct Constraint {
+    int component = 0;
+    std::shared_ptr<const Expression> value;  ///< of t; null means 0
+    std::vector<Index> nodes;
+  };
+  std::vector<Constraint> constraints_;
+};
+
+}  // namespace mpm

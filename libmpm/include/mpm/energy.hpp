@@ -1,0 +1,18 @@
+#pragma once
+/// \file energy.hpp
+/// Conservation audit (DESIGN.md): energies, linear momentum and mass of all bodies.
+
+#include "mpm/types.hpp"
+
+namespace mpm {
+
+struct EnergyBalance {
+  Real kinetic = 0;    ///< J: 1/2 sum m v.v
+  Real strain = 0;     ///< J: stored elastic energy (review eq. 6.5)
+  Real gravity = 0;    ///< J: potential of the body force, -sum m g.x
+  Vec3 momentum = Vec3::Zero();  ///< kg m/s
+  Real mass = 0;       ///< kg
+  Real total() const { return kinetic + strain + gravity; }
+};
+
+}  // namespace mpm

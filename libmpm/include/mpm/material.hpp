@@ -1,0 +1,52 @@
+#pragma once
+/// \file material.hpp
+/// The material interface. A material updates the stress of a whole range of particles in one call
+/// (one virtual call per body per step); the per-point law is an inlined `update_point` of the
+/// concrete model, which the batch loop in MaterialBatch calls without any virtual dispatch.
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "mpm/particle_set.hpp"
+
+namespace mpm {
+
+/// Per-axis maximum of (c_p + |v_p,axis|) over a batch: the denominator of the CFL condition
+/// (review eq. 2.72), gathered while the stress is updated so the time step costs no extra pass.
+template <int Dim>
+struct WaveSpeedBound {
+  Vec<Dim> max_speed = Vec<Dim>::Zero();  ///< m/s
+  bool finite = true;                     ///< false if any updated stress was not finite (guard)
+  void merge(const WaveSpeedBound& o) {
+    max_speed = max_speed.cwiseMax(o.max_speed);
+    finite = finite && o.finite;
+  }
+};
+
+/// Kinematics a point update receives: the deformation gradient at the end of the step (already
+/// updated by the scheme, eq. 2.55b) and the velocity gradient over the step, both embedded in 3x3.
+struct PointKinematics {
+  Mat3 F;   ///< deformation gradient F^{t+dt}
+  Mat3 L;   ///< velocity gradient L^{t+dt}, 1/s
+  Real J;   ///< det F
+  Real dt;  ///< s
+};
+
+template <int Dim>
+class Material {
+ public:
+  virtual ~Material() = default;
+  /// The registry key of the model ("linear_elastic", ...).
+  virtual std::string_view model() const = 0;
+  /// Reference density, kg/m^3.
+  virtual Real density() const = 0;
+  /// Updates the stress of particles [begin, end) from their F and L; returns the CFL speed bound.
+  virtual WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, Real dt) = 0;
+  /// The CFL speed bound of the current state, without updating anything (used before the first step).
+  virtual WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const = 0;
+  /// Stored (strain) energy of the particles, J (per unit out-of-plane size in 1D/2D).
+  virtual Real strain_energy(const ParticleSet<Dim>& p) const = 0;
+};
+
+}  // namespace mpm

@@ -1,0 +1,74 @@
+#pragma once
+/// \file module.hpp
+/// Optional physics joins the step through phases, in the spirit of LAMMPS fix masks. A module says
+/// which phases it needs; the simulation keeps one list per phase, so a phase no module subscribed to
+/// costs one empty-loop test per step, and a module the scene does not name is never constructed.
+
+#include <limits>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "mpm/step_context.hpp"
+
+namespace mpm {
+
+/// Stages at which the nodal velocities are (re)computed, for modules that constrain them (contact).
+enum class GridStage {
+  mapped,    ///< after P2G: v^t from the mapped momentum
+  updated,   ///< after the momentum update: v^{t+dt} (USL) or the trial v~ (MUSL)
+  remapped,  ///< MUSL only: after the second mapping, v^{t+dt}
+};
+
+enum Phase : unsigned {
+  phase_after_p2g = 1u << 0,
+  phase_grid_velocity = 1u << 1,
+  phase_after_g2p = 1u << 2,
+  phase_after_stress = 1u << 3,
+  phase_end_of_step = 1u << 4,
+};
+
+template <int Dim>
+class Module {
+ public:
+  virtual ~Module() = default;
+  virtual std::string_view name() const = 0;
+  /// Bitwise OR of the Phase values this module implements.
+  virtual unsigned phases() const = 0;
+  virtual void after_p2g(StepContext<Dim>&) {}
+  virtual void on_grid_velocity(StepContext<Dim>&, GridStage) {}
+  virtual void after_g2p(StepContext<Dim>&) {}
+  virtual void after_stress(StepContext<Dim>&) {}
+  virtual void end_of_step(StepContext<Dim>&) {}
+  /// The largest stable time step this module allows (s); infinity when it imposes none.
+  virtual Real stable_time_step(const std::vector<Body<Dim>>&) const {
+    return std::numeric_limits<Real>::infinity();
+  }
+};
+
+/// The modules of a run, sorted by phase.
+template <int Dim>
+class ModuleHooks {
+ public:
+  void add(std::shared_ptr<Module<Dim>> m) {
+    const unsigned p = m->phases();
+    if (p & phase_after_p2g) after_p2g_.push_back(m.get());
+    if (p & phase_grid_velocity) grid_velocity_.push_back(m.get());
+    if (p & phase_after_g2p) after_g2p_.push_back(m.get());
+    if (p & phase_after_stress) after_stress_.push_back(m.get());
+    if (p & phase_end_of_step) end_of_step_.push_back(m.get());
+    all_.push_back(std::move(m));
+  }
+  void after_p2g(StepContext<Dim>& c) { for (auto* m : after_p2g_) m->after_p2g(c); }
+  void grid_velocity(StepContext<Dim>& c, GridStage s) { for (auto* m : grid_velocity_) m->on_grid_velocity(c, s); }
+  void after_g2p(StepContext<Dim>& c) { for (auto* m : after_g2p_) m->after_g2p(c); }
+  void after_stress(StepContext<Dim>& c) { for (auto* m : after_stress_) m->after_stress(c); }
+  void end_of_step(StepContext<Dim>& c) { for (auto* m : end_of_step_) m->end_of_step(c); }
+  const std::vector<std::shared_ptr<Module<Dim>>>& all() const { return all_; }
+
+ private:
+  std::vector<Module<Dim>*> after_p2g_, grid_velocity_, after_g2p_, after_stress_, end_of_step_;
+  std::vector<std::shared_ptr<Module<Dim>>> all_;
+};
+
+}  // namespace mpm

@@ -1,0 +1,51 @@
+#pragma once
+/// \file output_writer.hpp
+/// Writes a run for ParaView: one .vtu of all particles per frame (and a .vti of the grid when asked),
+/// the .pvd collection of the series, and energy.csv (the conservation audit) with one row per frame.
+/// Every file is written atomically and the writers refuse non-finite values.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mpm/io/csv_log.hpp"
+#include "mpm/io/pvd_collection.hpp"
+#include "mpm/io/vtk_writer.hpp"
+#include "mpm/simulation.hpp"
+
+namespace mpm {
+
+/// Particle fields that can be written (the scene's output.fields); `id` is always written.
+std::vector<std::string> output_field_names();
+
+template <int Dim>
+class OutputWriter {
+ public:
+  /// Creates `directory` if needed. `interval` in s (0: first and last frames only).
+  OutputWriter(std::filesystem::path directory, std::string prefix, std::vector<std::string> fields, bool grid,
+               Real interval);
+  /// Writes a frame if the simulation time has reached the next output time (always for the first call).
+  bool write_if_due(const Simulation<Dim>& sim);
+  /// Writes a frame now (unless this time was just written).
+  void write(const Simulation<Dim>& sim);
+  /// The particles as a point cloud with the requested fields (also used by tests).
+  io::PointCloud particle_cloud(const Simulation<Dim>& sim) const;
+  const std::filesystem::path& directory() const { return directory_; }
+  int frames() const { return frame_; }
+
+ private:
+  std::filesystem::path directory_;
+  std::string prefix_;
+  std::vector<std::string> fields_;
+  bool grid_;
+  Real interval_;
+  Real next_time_ = 0;
+  Real last_written_ = -1;
+  int frame_ = 0;
+  io::PvdCollection particles_pvd_;
+  std::unique_ptr<io::PvdCollection> grid_pvd_;
+  std::unique_ptr<io::CsvLog> energy_;
+};
+
+}  // namespace mpm

@@ -1,0 +1,146 @@
+#pragma once
+/// \file particle_set.hpp
+/// Particle storage by field. The core fields that every scheme reads are typed members; fields that
+/// only some scenes need (reference position for displacement, temperature, plastic strain, ...) are
+/// added on demand by name with add_field<T>() and resolved to a std::vector once per step, never
+/// looked up per particle. Every field follows reordering (sort by cell) and snapshots.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "mpm/grid.hpp"
+
+namespace mpm {
+
+namespace detail {
+/// Type-erased on-demand field, so that reordering and snapshots reach every field.
+struct FieldBase {
+  virtual ~FieldBase() = default;
+  virtual void gather(const std::vector<Index>& order) = 0;  ///< new[i] = old[order[i]]
+  virtual void resize(std::size_t n) = 0;
+  virtual std::unique_ptr<FieldBase> clone() const = 0;
+  virtual std::size_t bytes_per_particle() const = 0;
+};
+template <class T>
+struct TypedField final : FieldBase {
+  std::vector<T> data;
+  T initial{};
+  void gather(const std::vector<Index>& order) override {
+    std::vector<T> out(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) out[i] = data[order[i]];
+    data.swap(out);
+  }
+  void resize(std::size_t n) override { data.resize(n, initial); }
+  std::unique_ptr<FieldBase> clone() const override { return std::make_unique<TypedField>(*this); }
+  std::size_t bytes_per_particle() const override { return sizeof(T); }
+};
+template <class T>
+void gather_vector(std::vector<T>& v, const std::vector<Index>& order) {
+  std::vector<T> out(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
+  v.swap(out);
+}
+}  // namespace detail
+
+/// The particles of one body (one material).
+template <int Dim>
+class ParticleSet {
+ public:
+  // Core fields (SI units). Volume is not stored: V = volume0 * det(F) (eq. 2.55c).
+  std::vector<VecU<Dim>> x;              ///< position, m
+  std::vector<VecU<Dim>> v;              ///< velocity, m/s
+  std::vector<Real> mass;                ///< kg (kg/m in 2D, kg/m^2 in 1D: per unit out-of-plane size)
+  std::vector<Real> volume0;             ///< reference volume, m^3 (per unit out-of-plane size)
+  std::vector<MatU<Dim>> F;              ///< deformation gradient
+  std::vector<MatU<Dim>> L;              ///< velocity gradient of the last step, 1/s
+  std::vector<SymTensor<Dim>> stress;    ///< Cauchy stress, Pa
+  std::vector<std::uint32_t> id;         ///< index at creation: stable under reordering
+
+  ParticleSet() = default;
+  ParticleSet(const ParticleSet& o) { *this = o; }
+  ParticleSet& operator=(const ParticleSet& o) {
+    if (this == &o) return *this;
+    x = o.x; v = o.v; mass = o.mass; volume0 = o.volume0; F = o.F; L = o.L; stress = o.stress; id = o.id;
+    extra_.clear();
+    for (const auto& [name, f] : o.extra_) extra_[name] = f->clone();
+    return *this;
+  }
+  ParticleSet(ParticleSet&&) noexcept = default;
+  ParticleSet& operator=(ParticleSet&&) noexcept = default;
+
+  Index size() const { return static_cast<Index>(x.size()); }
+
+  /// Appends one particle at rest with F = I and zero stress.
+  void add(const Vec<Dim>& position, Real particle_mass, Real particle_volume) {
+    x.push_back(position);
+    v.push_back(VecU<Dim>::Zero());
+    mass.push_back(particle_mass);
+    volume0.push_back(particle_volume);
+    F.push_back(MatU<Dim>::Identity());
+    L.push_back(MatU<Dim>::Zero());
+    stress.push_back(SymTensor<Dim>{});
+    id.push_back(static_cast<std::uint32_t>(id.size()));
+    for (auto& [name, f] : extra_) f->resize(x.size());
+  }
+
+  /// Adds (or returns) an on-demand field with an initial value. Call before the time loop.
+  template <class T>
+  std::vector<T>& add_field(const std::string& name, const T& initial = T{}) {
+    auto it = extra_.find(name);
+    if (it == extra_.end()) {
+      auto f = std::make_unique<detail::TypedField<T>>();
+      f->initial = initial;
+      f->data.assign(x.size(), initial);
+      it = extra_.emplace(name, std::move(f)).first;
+    }
+    return typed<T>(it->second.get(), name).data;
+  }
+  bool has_field(const std::string& name) const { return extra_.count(name) != 0; }
+  /// An on-demand field; throws std::out_of_range naming the field if it was never added.
+  template <class T>
+  std::vector<T>& field(const std::string& name) {
+    auto it = extra_.find(name);
+    if (it == extra_.end()) throw std::out_of_range("particle field '" + name + "' was not allocated");
+    return typed<T>(it->second.get(), name).data;
+  }
+  template <class T>
+  const std::vector<T>& field(const std::string& name) const {
+    return const_cast<ParticleSet*>(this)->field<T>(name);
+  }
+
+  /// Reorders every field: new particle i is old particle order[i].
+  void gather(const std::vector<Index>& order) {
+    detail::gather_vector(x, order);
+    detail::gather_vector(v, order);
+    detail::gather_vector(mass, order);
+    detail::gather_vector(volume0, order);
+    detail::gather_vector(F, order);
+    detail::gather_vector(L, order);
+    detail::gather_vector(stress, order);
+    detail::gather_vector(id, order);
+    for (auto& [name, f] : extra_) f->gather(order);
+  }
+
+  /// State bytes per particle: the core fields plus the on-demand fields this scene allocated.
+  std::size_t bytes_per_particle() const {
+    std::size_t b = 2 * sizeof(VecU<Dim>) + 2 * sizeof(Real) + 2 * sizeof(MatU<Dim>) +
+                    sizeof(SymTensor<Dim>) + sizeof(std::uint32_t);
+    for (const auto& [name, f] : extra_) b += f->bytes_per_particle();
+    return b;
+  }
+
+ private:
+  template <class T>
+  static detail::TypedField<T>& typed(detail::FieldBase* f, const std::string& name) {
+    auto* t = dynamic_cast<detail::TypedField<T>*>(f);
+    if (!t) throw std::logic_error("particle field '" + name + "' has another type");
+    return *t;
+  }
+  std::map<std::string, std::unique_ptr<detail::FieldBase>> extra_;
+};
+
+}  // namespace mpm

@@ -1,0 +1,111 @@
+#pragma once
+/// \file musl.hpp
+/// Modified USL, double mapping (review §2.5.4, Algorithm 2): the particle velocities are updated from
+/// the trial grid velocity, mapped back to the grid with the old weights (eq. 2.64) and the velocity
+/// gradient is computed from that re-mapped velocity (eq. 2.65), which removes the small-mass problem.
+/// The particle-velocity update and the second mapping are fused into one pass over the particles.
+
+#include "mpm/scheme.hpp"
+#include "mpm/schemes/explicit_step.hpp"
+
+namespace mpm {
+
+template <int Dim, class Shape>
+class Musl final : public Scheme<Dim> {
+ public:
+  std::string_view name() const override { return "musl"; }
+  std::string_view shape_function() const override { return Shape::name; }
+  int slab_cells() const override { return Shape::slab_cells; }
+  int min_cells() const override { return Shape::min_cells; }
+
+  void advance(StepContext<Dim>& ctx) override {
+    kernels::map_and_update_grid<Dim, Shape>(ctx);
+    clear_momentum(ctx.grid);
+    for (auto& body : ctx.bodies) update_velocity_and_remap(body, ctx);
+    remapped_velocity(ctx);
+    for (auto& body : ctx.bodies) update_position_and_deformation(body, ctx);
+    ctx.hooks.after_g2p(ctx);
+    kernels::update_stress(ctx);
+  }
+
+ private:
+  static void clear_momentum(Grid<Dim>& grid) {
+    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 14), [&](const auto& r) {
+      for (Index i = r.begin(); i != r.end(); ++i) grid.node[i].momentum.setZero();
+    });
+  }
+
+  /// v_p = alpha (v_p + sum phi (v~_I - v_I^t)) + (1 - alpha) sum phi v~_I, then
+  /// (mv)_I^{t+dt} += phi m_p v_p (eq. 2.64), scattered with the slab colouring.
+  static void update_velocity_and_remap(Body<Dim>& body, StepContext<Dim>& ctx) {
+    auto& p = body.particles;
+    const auto& g = ctx.grid.geometry;
+    NodeRecord<Dim>* node = ctx.grid.node.data();
+    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const Real alpha = ctx.settings.flip_fraction;
+    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+      Stencil<Dim, Shape> st;
+      for (Index k = 0; k < count; ++k) {
+        const Index i = index[k];
+        st.compute(p.x[i], g);
+        Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
+        for (int a = 0; a < st.count; ++a) {
+          const NodeVelocity<Dim>& nv = vel[st.node[a]];
+          v_pic += st.w[a] * nv.updated;
+          dv += st.w[a] * (nv.updated - nv.mapped);
+        }
+        const Vec<Dim> v = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
+        p.v[i] = v;
+        const Vec<Dim> mv = p.mass[i] * v;
+        for (int a = 0; a < st.count; ++a) node[st.node[a]].momentum += st.w[a] * mv;
+      }
+    });
+  }
+
+  /// v_I^{t+dt} = (mv)_I^{t+dt} / m_I (eq. 2.65), stored in `mapped`; boundary conditions again.
+  static void remapped_velocity(StepContext<Dim>& ctx) {
+    auto& grid = ctx.grid;
+    const Real cutoff = ctx.settings.mass_cutoff;
+    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        const NodeRecord<Dim>& n = grid.node[i];
+        if (n.mass > cutoff)
+          grid.velocity[i].mapped = n.momentum / n.mass;
+        else
+          grid.velocity[i].mapped.setZero();
+      }
+    });
+    if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time + ctx.dt);
+    ctx.hooks.grid_velocity(ctx, GridStage::remapped);
+  }
+
+  /// x_p += dt sum phi v~_I (Alg. 2); L_p = sum v_I^{t+dt} (x) grad phi at the old positions; F update.
+  static void update_position_and_deformation(Body<Dim>& body, StepContext<Dim>& ctx) {
+    auto& p = body.particles;
+    const auto& g = ctx.grid.geometry;
+    const Vec<Dim> upper = g.upper();
+    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const Real dt = ctx.dt;
+    tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
+      Stencil<Dim, Shape> st;
+      bool ok = true;
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        st.compute(p.x[i], g);
+        Vec<Dim> v_move = Vec<Dim>::Zero();
+        Mat<Dim> L = Mat<Dim>::Zero();
+        for (int a = 0; a < st.count; ++a) {
+          const NodeVelocity<Dim>& nv = vel[st.node[a]];
+          v_move += st.w[a] * nv.updated;
+          for (int c = 0; c < Dim; ++c) L.col(c) += nv.mapped * st.grad[a][c];
+        }
+        p.x[i] += dt * v_move;
+        p.L[i] = L;
+        ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
+              std::isfinite(p.v[i].sum());
+      }
+      if (!ok) ctx.guard_tripped = true;
+    });
+  }
+};
+
+}  // namespace mpm

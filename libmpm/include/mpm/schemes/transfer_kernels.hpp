@@ -1,0 +1,91 @@
+#pragma once
+/// \file transfer_kernels.hpp
+/// The particle-grid transfers shared by the explicit schemes (review §2.5, Alg. 1-2). Each kernel is
+/// short, templated on dimension and shape function, and has no virtual call inside its loops.
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "mpm/shape/stencil.hpp"
+#include "mpm/step_context.hpp"
+
+namespace mpm::kernels {
+
+/// Zeroes mass, momentum and force of every node.
+template <int Dim>
+void reset_grid(Grid<Dim>& grid) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 14), [&](const auto& r) {
+    std::memset(static_cast<void*>(grid.node.data() + r.begin()), 0, sizeof(NodeRecord<Dim>) * r.size());
+  });
+}
+
+/// P2G (eqs 2.40, 2.43, 2.36): nodal mass, momentum and internal force f_I = -sum V_p sigma_p grad phi.
+template <int Dim, class Shape>
+void particles_to_grid(Body<Dim>& body, Grid<Dim>& grid) {
+  const auto& p = body.particles;
+  const auto& g = grid.geometry;
+  NodeRecord<Dim>* node = grid.node.data();
+  for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+    Stencil<Dim, Shape> st;
+    for (Index k = 0; k < count; ++k) {
+      const Index i = index[k];
+      st.compute(p.x[i], g);
+      const Real m = p.mass[i];
+      const Vec<Dim> mv = m * p.v[i];
+      const Mat<Dim> vs = (p.volume0[i] * p.F[i].determinant()) * p.stress[i].block();
+      for (int a = 0; a < st.count; ++a) {
+        NodeRecord<Dim>& n = node[st.node[a]];
+        const Real w = st.w[a];
+        n.mass += w * m;
+        n.momentum += w * mv;
+        for (int r = 0; r < Dim; ++r) {
+          Real f = 0;
+          for (int c = 0; c < Dim; ++c) f += vs(r, c) * st.grad[a][c];
+          n.force[r] -= f;
+        }
+      }
+    }
+  });
+}
+
+/// Nodal velocities before and after the momentum update (eqs 2.49-2.50 with the cut-off 2.63):
+/// mapped = (mv)/m, updated = (mv + dt (f + m g))/m. Nodes lighter than the cut-off get zero.
+template <int Dim>
+void update_grid_velocity(Grid<Dim>& grid, const TransferSettings<Dim>& s, Real dt) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+    for (Index i = r.begin(); i != r.end(); ++i) {
+      const NodeRecord<Dim>& n = grid.node[i];
+      NodeVelocity<Dim>& v = grid.velocity[i];
+      if (n.mass > s.mass_cutoff) {
+        const Real inv_m = 1 / n.mass;
+        v.mapped = n.momentum * inv_m;
+        v.updated = v.mapped + dt * (n.force * inv_m + s.gravity);
+      } else {
+        v.mapped.setZero();
+        v.updated.setZero();
+      }
+    }
+  });
+}
+
+/// F^{t+dt} = (I + dt L) F^t (eq. 2.55b); returns false when the result is not admissible
+/// (det F <= 0 or not finite), which trips the stability guard.
+template <int Dim>
+inline bool update_deformation_gradient(MatU<Dim>& F, const Mat<Dim>& L, Real dt) {
+  F = (Mat<Dim>::Identity() + dt * L) * F;
+  const Real J = F.determinant();
+  return J > 0 && std::isfinite(J);
+}
+
+/// True when x is inside the grid box (false for NaN).
+template <int Dim>
+inline bool inside(const VecU<Dim>& x, const GridGeometry<Dim>& g, const Vec<Dim>& upper) {
+  bool ok = true;
+  for (int d = 0; d < Dim; ++d) ok = ok && x[d] >= g.origin[d] && x[d] <= upper[d];
+  return ok;
+}
+
+}  // namespace mpm::kernels

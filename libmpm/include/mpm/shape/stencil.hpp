@@ -1,0 +1,58 @@
+#pragma once
+/// \file stencil.hpp
+/// Tensor-product weights phi_I(x_p) and gradients grad phi_I(x_p) of one particle on every node of its
+/// support (review eq. 3.17). `Shape` supplies the 1D functions; this file is the only place that
+/// combines axes, so a new shape function is one new header with an `evaluate` like LinearHat's.
+
+#include "mpm/grid.hpp"
+
+namespace mpm {
+
+template <int Dim, class Shape>
+struct Stencil {
+  static constexpr int per_axis = Shape::support;
+  static constexpr int count = Dim == 1 ? per_axis : (Dim == 2 ? per_axis * per_axis : per_axis * per_axis * per_axis);
+
+  Index node[count];
+  Real w[count];
+  Real grad[count][Dim];  ///< 1/m
+
+  inline void compute(const VecU<Dim>& x, const GridGeometry<Dim>& g) {
+    int base[Dim];
+    Real wa[Dim][per_axis], da[Dim][per_axis];
+    for (int d = 0; d < Dim; ++d) {
+      Shape::evaluate((x[d] - g.origin[d]) * g.inv_h[d], g.nodes[d], base[d], wa[d], da[d]);
+      for (int k = 0; k < per_axis; ++k) da[d][k] *= g.inv_h[d];
+    }
+    if constexpr (Dim == 1) {
+      for (int i = 0; i < per_axis; ++i) {
+        node[i] = base[0] + i;
+        w[i] = wa[0][i];
+        grad[i][0] = da[0][i];
+      }
+    } else if constexpr (Dim == 2) {
+      int n = 0;
+      for (int j = 0; j < per_axis; ++j)
+        for (int i = 0; i < per_axis; ++i, ++n) {
+          node[n] = (base[0] + i) + g.stride[1] * (base[1] + j);
+          w[n] = wa[0][i] * wa[1][j];
+          grad[n][0] = da[0][i] * wa[1][j];
+          grad[n][1] = wa[0][i] * da[1][j];
+        }
+    } else {
+      int n = 0;
+      for (int k = 0; k < per_axis; ++k)
+        for (int j = 0; j < per_axis; ++j)
+          for (int i = 0; i < per_axis; ++i, ++n) {
+            node[n] = (base[0] + i) + g.stride[1] * (base[1] + j) + g.stride[2] * (base[2] + k);
+            const Real wjk = wa[1][j] * wa[2][k];
+            w[n] = wa[0][i] * wjk;
+            grad[n][0] = da[0][i] * wjk;
+            grad[n][1] = wa[0][i] * da[1][j] * wa[2][k];
+            grad[n][2] = wa[0][i] * wa[1][j] * da[2][k];
+          }
+    }
+  }
+};
+
+}  // namespace mpm

@@ -1,0 +1,83 @@
+#pragma once
+/// \file simulation.hpp
+/// A running simulation: grid, bodies, scheme, boundary conditions and modules, plus the time-step
+/// control (review eqs 2.71-2.73) and the stability guard. Build one with build_simulation() from a
+/// scene, or by hand in tests.
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "mpm/energy.hpp"
+#include "mpm/module.hpp"
+#include "mpm/scheme.hpp"
+#include "mpm/stability_error.hpp"
+
+namespace mpm {
+
+template <int Dim>
+struct SimulationSettings {
+  TransferSettings<Dim> transfer;
+  std::optional<Real> fixed_dt;  ///< s; when empty the time step is cfl * stable time step
+  Real cfl = 0.5;                ///< alpha_dt of eq. 2.73
+  Real end_time = 0;             ///< s
+  int snapshot_interval = 20;    ///< steps between snapshots kept for the stability guard
+  int sort_interval = 20;        ///< steps between reorderings of the particles by cell
+};
+
+template <int Dim>
+class Simulation {
+ public:
+  Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<Dim>> bodies, std::unique_ptr<Scheme<Dim>> scheme,
+             GridBoundary<Dim> boundary, const SimulationSettings<Dim>& settings);
+
+  void add_module(std::shared_ptr<Module<Dim>> module) { hooks_.add(std::move(module)); }
+
+  /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), and of the modules.
+  Real stable_time_step() const;
+  /// The time step the next step will take: the fixed dt, or cfl * stable_time_step().
+  Real next_time_step() const;
+  /// Takes one step of size dt. If the stability guard trips, the state is rolled back to the end of
+  /// the previous step (the last good state) and StabilityError is thrown.
+  void advance(Real dt);
+  /// Advances until end_time; `after_step` is called after every step (for output and progress).
+  void run(const std::function<void(const Simulation&)>& after_step = {});
+  bool finished() const;
+
+  Real time() const { return time_; }
+  Index step() const { return step_; }
+  const SimulationSettings<Dim>& settings() const { return settings_; }
+  const Grid<Dim>& grid() const { return grid_; }
+  const std::vector<Body<Dim>>& bodies() const { return bodies_; }
+  std::vector<Body<Dim>>& bodies() { return bodies_; }
+  const Scheme<Dim>& scheme() const { return *scheme_; }
+  Index particle_count() const;
+  EnergyBalance energy() const;
+
+ private:
+  struct Snapshot {
+    std::vector<ParticleSet<Dim>> particles;
+    Real time = 0;
+    Index step = 0;
+    WaveSpeedBound<Dim> wave_speed;
+    std::vector<Real> dts_since;  ///< time steps taken after the snapshot, to replay them exactly
+  };
+  void take_step(Real dt);
+  void take_snapshot();
+  StabilityReport diagnose(Real dt) const;
+  void roll_back_to_previous_step();
+
+  Grid<Dim> grid_;
+  std::vector<Body<Dim>> bodies_;
+  std::unique_ptr<Scheme<Dim>> scheme_;
+  GridBoundary<Dim> boundary_;
+  SimulationSettings<Dim> settings_;
+  ModuleHooks<Dim> hooks_;
+  WaveSpeedBound<Dim> wave_speed_;
+  Real time_ = 0;
+  Index step_ = 0;
+  Snapshot snapshot_;
+};
+
+}  // namespace mpm

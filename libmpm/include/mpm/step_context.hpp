@@ -1,0 +1,40 @@
+#pragma once
+/// \file step_context.hpp
+/// Everything one time step reads and writes, handed to the scheme and to the modules' phases.
+
+#include <atomic>
+#include <vector>
+
+#include "mpm/body.hpp"
+#include "mpm/boundary_conditions.hpp"
+
+namespace mpm {
+
+template <int Dim>
+class ModuleHooks;
+
+/// Settings of the transfers that do not change during a run.
+template <int Dim>
+struct TransferSettings {
+  Real flip_fraction = 1;            ///< alpha of eq. 2.53
+  Real mass_cutoff = 0;              ///< kg: nodes lighter than this get zero velocity (eq. 2.63)
+  Vec<Dim> gravity = Vec<Dim>::Zero();  ///< m/s^2
+};
+
+template <int Dim>
+struct StepContext {
+  Grid<Dim>& grid;
+  std::vector<Body<Dim>>& bodies;
+  const TransferSettings<Dim>& settings;
+  const GridBoundary<Dim>& boundary;
+  ModuleHooks<Dim>& hooks;
+  Real time = 0;  ///< s, at the start of the step
+  Real dt = 0;    ///< s
+  Index step = 0; ///< number of the step being taken (1 for the first)
+  /// Set by any kernel that sees a non-finite value, det F <= 0 or a particle outside the grid; the
+  /// simulation then finds and names the culprit (the kernels only raise the flag, which costs nothing).
+  std::atomic<bool> guard_tripped{false};
+  WaveSpeedBound<Dim> wave_speed;  ///< gathered by the stress update, for the next CFL time step
+};
+
+}  // namespace mpm

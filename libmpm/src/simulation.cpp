@@ -1,0 +1,186 @@
+#include "mpm/simulation.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <limits>
+
+namespace mpm {
+
+StabilityError::StabilityError(const StabilityReport& r)
+    : std::runtime_error(fmt::format("stability guard: step {} (t = {:.9g} s), body '{}', particle {}, field '{}': {}",
+                                     r.step, r.time, r.body, r.particle, r.field, r.detail)),
+      report_(r) {}
+
+template <int Dim>
+Simulation<Dim>::Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<Dim>> bodies,
+                            std::unique_ptr<Scheme<Dim>> scheme, GridBoundary<Dim> boundary,
+                            const SimulationSettings<Dim>& settings)
+    : grid_(geometry),
+      bodies_(std::move(bodies)),
+      scheme_(std::move(scheme)),
+      boundary_(std::move(boundary)),
+      settings_(settings) {
+  for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
+  take_snapshot();
+}
+
+template <int Dim>
+Index Simulation<Dim>::particle_count() const {
+  Index n = 0;
+  for (const auto& b : bodies_) n += b.particles.size();
+  return n;
+}
+
+template <int Dim>
+Real Simulation<Dim>::stable_time_step() const {
+  Real dt = std::numeric_limits<Real>::infinity();
+  const auto& h = grid_.geometry.h;
+  for (int d = 0; d < Dim; ++d)
+    if (wave_speed_.max_speed[d] > 0) dt = std::min(dt, h[d] / wave_speed_.max_speed[d]);  // eq. 2.73
+  for (const auto& m : hooks_.all()) dt = std::min(dt, m->stable_time_step(bodies_));
+  return dt;
+}
+
+template <int Dim>
+Real Simulation<Dim>::next_time_step() const {
+  if (settings_.fixed_dt) return *settings_.fixed_dt;
+  return settings_.cfl * stable_time_step();
+}
+
+template <int Dim>
+bool Simulation<Dim>::finished() const {
+  // A step that lands within a millionth of a step of end_time counts as the last one.
+  return time_ >= settings_.end_time - 1e-6 * next_time_step();
+}
+
+template <int Dim>
+void Simulation<Dim>::take_step(Real dt) {
+  if (settings_.sort_interval > 0 && step_ % settings_.sort_interval == 0)
+    for (auto& b : bodies_) b.particles.gather(order_by_cell(b.particles, grid_.geometry));
+  StepContext<Dim> ctx{grid_, bodies_, settings_.transfer, boundary_, hooks_};
+  ctx.time = time_;
+  ctx.dt = dt;
+  ctx.step = step_ + 1;
+  scheme_->advance(ctx);
+  hooks_.end_of_step(ctx);
+  if (ctx.guard_tripped.load()) {
+    StabilityReport report = diagnose(dt);
+    report.step = step_ + 1;
+    report.time = time_;
+    roll_back_to_previous_step();
+    throw StabilityError(report);
+  }
+  wave_speed_ = ctx.wave_speed;
+  time_ += dt;
+  ++step_;
+}
+
+template <int Dim>
+void Simulation<Dim>::advance(Real dt) {
+  if (!(dt > 0) || !std::isfinite(dt)) {
+    StabilityReport r;
+    r.step = step_ + 1;
+    r.time = time_;
+    r.field = "time_step";
+    r.detail = fmt::format("time step {} is not a positive finite number", dt);
+    throw StabilityError(r);
+  }
+  take_step(dt);
+  snapshot_.dts_since.push_back(dt);
+  if (settings_.snapshot_interval > 0 && step_ % settings_.snapshot_interval == 0) take_snapshot();
+}
+
+template <int Dim>
+void Simulation<Dim>::run(const std::function<void(const Simulation&)>& after_step) {
+  while (!finished()) {
+    advance(std::min(next_time_step(), settings_.end_time - time_ + 1e-12 * settings_.end_time));
+    if (after_step) after_step(*this);
+  }
+}
+
+template <int Dim>
+void Simulation<Dim>::take_snapshot() {
+  snapshot_.particles.clear();
+  for (const auto& b : bodies_) snapshot_.particles.push_back(b.particles);
+  snapshot_.time = time_;
+  snapshot_.step = step_;
+  snapshot_.wave_speed = wave_speed_;
+  snapshot_.dts_since.clear();
+}
+
+// Restores the snapshot and replays the steps taken since, which reproduces the state at the end of the
+// last good step exactly (the run is deterministic). Costs nothing until the guard trips.
+template <int Dim>
+void Simulation<Dim>::roll_back_to_previous_step() {
+  const std::vector<Real> replay = snapshot_.dts_since;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b].particles = snapshot_.particles[b];
+  time_ = snapshot_.time;
+  step_ = snapshot_.step;
+  wave_speed_ = snapshot_.wave_speed;
+  for (Real dt : replay) take_step(dt);
+  take_snapshot();
+}
+
+template <int Dim>
+StabilityReport Simulation<Dim>::diagnose(Real dt) const {
+  StabilityReport r;
+  const auto& g = grid_.geometry;
+  const Vec<Dim> upper = g.upper();
+  for (const auto& b : bodies_) {
+    const auto& p = b.particles;
+    for (Index i = 0; i < p.size(); ++i) {
+      auto fail = [&](const char* field, std::string detail) {
+        r.body = b.name;
+        r.particle = p.id[i];
+        r.field = field;
+        r.detail = std::move(detail);
+      };
+      Vec<Dim> x = p.x[i];
+      if (!x.allFinite()) {
+        fail("position", "not finite");
+      } else if ((x.array() < g.origin.array()).any() || (x.array() > upper.array()).any()) {
+        fail("position", fmt::format("x = ({}) left the grid box", fmt::join(x.data(), x.data() + Dim, ", ")));
+      } else if (!p.v[i].allFinite()) {
+        fail("velocity", "not finite");
+      } else if (!(p.F[i].determinant() > 0)) {
+        fail("deformation_gradient", fmt::format("det F = {:.6g} (inverted or degenerate)", p.F[i].determinant()));
+      } else if (!p.stress[i].full().allFinite()) {
+        fail("stress", "not finite");
+      } else {
+        continue;
+      }
+      r.detail += fmt::format(" (dt = {:.6g} s; stable dt = {:.6g} s)", dt, stable_time_step());
+      return r;
+    }
+  }
+  r.body = "?";
+  r.field = "unknown";
+  r.detail = "a module reported an invalid state";
+  return r;
+}
+
+template <int Dim>
+EnergyBalance Simulation<Dim>::energy() const {
+  EnergyBalance e;
+  const Vec<Dim>& g = settings_.transfer.gravity;
+  for (const auto& b : bodies_) {
+    const auto& p = b.particles;
+    for (Index i = 0; i < p.size(); ++i) {
+      const Real m = p.mass[i];
+      e.kinetic += 0.5 * m * p.v[i].squaredNorm();
+      e.gravity -= m * g.dot(Vec<Dim>(p.x[i]));
+      e.momentum.template head<Dim>() += m * p.v[i];
+      e.mass += m;
+    }
+    e.strain += b.material->strain_energy(p);
+  }
+  return e;
+}
+
+template class Simulation<1>;
+template class Simulation<2>;
+template class Simulation<3>;
+
+}  // namespace mpm
