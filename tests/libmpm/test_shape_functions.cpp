@@ -1,0 +1,87 @@
+// Shape-function properties every MPM weighting family must have (review §3.1): partition of unity,
+// gradients summing to zero, and linear reproduction (sum phi_I x_I = x, sum x_I (x) grad phi_I = I),
+// checked in 1D, 2D and 3D at random points including the cells next to the grid faces, where the
+// cubic B-spline uses its boundary-modified functions (review eqs 3.18-3.21).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "mpm/shape/cubic_bspline.hpp"
+#include "mpm/shape/linear_hat.hpp"
+#include "mpm/shape/stencil.hpp"
+
+namespace mpm {
+namespace {
+
+template <int Dim, class Shape>
+void check_properties(int cells) {
+  Vec<Dim> origin, h;
+  std::array<int, Dim> n{};
+  for (int d = 0; d < Dim; ++d) {
+    origin[d] = -0.3 * (d + 1);
+    h[d] = 0.1 + 0.05 * d;
+    n[d] = cells + d;
+  }
+  const GridGeometry<Dim> g(origin, h, n);
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<Real> u(0, 1);
+  Stencil<Dim, Shape> st;
+  for (int trial = 0; trial < 2000; ++trial) {
+    VecU<Dim> x;
+    for (int d = 0; d < Dim; ++d) {
+      // A third of the points in the first or last cell, where boundary functions apply.
+      Real xi = u(rng) * n[d];
+      if (trial % 3 == 1) xi = u(rng);
+      if (trial % 3 == 2) xi = n[d] - u(rng);
+      x[d] = origin[d] + xi * h[d];
+    }
+    st.compute(x, g);
+    Real sum_w = 0;
+    Vec<Dim> sum_grad = Vec<Dim>::Zero(), reproduced = Vec<Dim>::Zero();
+    Mat<Dim> grad_x = Mat<Dim>::Zero();
+    for (int a = 0; a < st.count; ++a) {
+      ASSERT_GE(st.w[a], -1e-14) << "weights must be non-negative";
+      ASSERT_GE(st.node[a], 0);
+      ASSERT_LT(st.node[a], g.node_count());
+      const Vec<Dim> xI = g.node_position(g.node_indices(st.node[a]));
+      Vec<Dim> grad;
+      for (int d = 0; d < Dim; ++d) grad[d] = st.grad[a][d];
+      sum_w += st.w[a];
+      sum_grad += grad;
+      reproduced += st.w[a] * xI;
+      grad_x += xI * grad.transpose();
+    }
+    ASSERT_NEAR(sum_w, 1, 1e-13);
+    ASSERT_LT(sum_grad.norm(), 1e-11);
+    ASSERT_LT((reproduced - Vec<Dim>(x)).norm(), 1e-12);
+    ASSERT_LT((grad_x - Mat<Dim>::Identity()).norm(), 1e-11);
+  }
+}
+
+TEST(ShapeFunctions, LinearHat1D) { check_properties<1, LinearHat>(7); }
+TEST(ShapeFunctions, LinearHat2D) { check_properties<2, LinearHat>(5); }
+TEST(ShapeFunctions, LinearHat3D) { check_properties<3, LinearHat>(4); }
+TEST(ShapeFunctions, CubicBSpline1D) { check_properties<1, CubicBSpline>(7); }
+TEST(ShapeFunctions, CubicBSpline2D) { check_properties<2, CubicBSpline>(6); }
+TEST(ShapeFunctions, CubicBSpline3D) { check_properties<3, CubicBSpline>(5); }
+TEST(ShapeFunctions, CubicBSplineMinimumGrid) { check_properties<1, CubicBSpline>(4); }
+
+// Values printed in the review for the boundary-modified cubic (eqs 3.18-3.20), at a particle half a
+// cell from the lower face: type 1 at r = 0.5, type 2 at r = -0.5, type 3 at r = -1.5.
+TEST(ShapeFunctions, CubicBSplineBoundaryValues) {
+  int base = -1;
+  Real w[4], dw[4];
+  CubicBSpline::evaluate(0.5, 10, base, w, dw);
+  EXPECT_EQ(base, 0);
+  EXPECT_NEAR(w[0], 0.125 / 6 - 0.5 + 1, 1e-15);
+  EXPECT_NEAR(w[1], 0.125 / 3 - 0.25 + 2.0 / 3, 1e-15);
+  EXPECT_NEAR(w[2], 0.125 / 6, 1e-15);
+  EXPECT_NEAR(w[3], 0, 1e-15);
+  // Interpolatory at the face: only the face node is non-zero there.
+  CubicBSpline::evaluate(0.0, 10, base, w, dw);
+  EXPECT_NEAR(w[0], 1, 1e-15);
+  EXPECT_NEAR(w[1] + w[2] + w[3], 0, 1e-15);
+}
+
+}  // namespace
+}  // namespace mpm

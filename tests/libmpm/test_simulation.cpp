@@ -1,0 +1,132 @@
+// Determinism across thread counts, the stability guard, and the time-step control (eq. 2.73).
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+
+#include "mpm/scene_error.hpp"
+#include "scene_fixture.hpp"
+
+namespace mpm {
+namespace {
+
+std::string block_scene(const std::string& solver) {
+  return "dimension: 2\n"
+         "grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.025, boundary: {y_min: fixed}}\n"
+         "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e5, poisson_ratio: 0.3}}\n"
+         "bodies:\n"
+         "  - {material: m, shape: {type: box, min: [0.2, 0.0], max: [0.8, 0.5]}, particles_per_cell: 2,\n"
+         "     velocity: [\"0.2*sin(5*y)\", \"-0.1*x\"]}\n"
+         "solver: {" + solver + "}\n";
+}
+
+template <int Dim>
+std::vector<double> state(const Simulation<Dim>& sim) {
+  std::vector<double> s;
+  for (const auto& b : sim.bodies())
+    for (Index i = 0; i < b.particles.size(); ++i) {
+      for (int d = 0; d < Dim; ++d) s.push_back(b.particles.x[i][d]), s.push_back(b.particles.v[i][d]);
+      for (double c : b.particles.stress[i].c) s.push_back(c);
+      s.push_back(b.particles.id[i]);
+    }
+  return s;
+}
+
+std::vector<double> run_with_threads(int threads, const std::string& solver) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  auto sim = test::simulation_from_yaml<2>(block_scene(solver));
+  for (int s = 0; s < 120; ++s) sim->advance(sim->next_time_step());
+  return state(*sim);
+}
+
+// Slab-coloured scatter in a fixed order (slab_binning.hpp): the same bits for any thread count.
+TEST(Simulation, BitIdenticalAcrossThreadCounts) {
+  for (const std::string solver : {"scheme: musl, cfl: 0.5, end_time: 1, sort_interval: 7",
+                                   "scheme: usl, shape_function: cubic_bspline, cfl: 0.5, end_time: 1"}) {
+    const auto one = run_with_threads(1, solver);
+    const auto two = run_with_threads(2, solver);
+    ASSERT_EQ(one.size(), two.size());
+    for (std::size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], two[i]) << solver << " entry " << i;
+  }
+}
+
+TEST(Simulation, CflTimeStepFollowsEq273) {
+  auto sim = test::simulation_from_yaml<2>(block_scene("cfl: 0.5, end_time: 1"));
+  // c = sqrt((lambda + 2 mu)/rho) for E = 1e5, nu = 0.3, rho = 1000; max |v_x| = 0.2 sin(2.5) ...
+  const Real E = 1e5, nu = 0.3, rho = 1000;
+  const Real c = std::sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / rho);
+  Real vx = 0, vy = 0;
+  for (const auto& b : sim->bodies())
+    for (Index i = 0; i < b.particles.size(); ++i) {
+      vx = std::max(vx, std::abs(b.particles.v[i][0]));
+      vy = std::max(vy, std::abs(b.particles.v[i][1]));
+    }
+  EXPECT_NEAR(sim->stable_time_step(), 0.025 / (c + std::max(vx, vy)), 1e-12);
+  EXPECT_NEAR(sim->next_time_step(), 0.5 * 0.025 / (c + std::max(vx, vy)), 1e-12);
+}
+
+TEST(Simulation, FixedTimeStepAboveStableBoundIsRefused) {
+  try {
+    test::simulation_from_yaml<2>(block_scene("dt: 0.01, end_time: 1"), "block.yaml");
+    FAIL() << "expected SceneError";
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("block.yaml:"), std::string::npos) << what;
+    EXPECT_NE(what.find("solver.dt"), std::string::npos) << what;
+    EXPECT_NE(what.find("stable time step 0.002"), std::string::npos) << what;  // 0.025/(c + |v|) = 0.00231
+  }
+}
+
+// A time step far above the bound makes the solution explode; the guard must stop it, name the step,
+// body, particle and field, and leave the simulation at the last good state: the state a run that
+// stopped one step earlier has, bit for bit.
+TEST(Simulation, StabilityGuardStopsAndRollsBack) {
+  auto sim = test::simulation_from_yaml<2>(block_scene("cfl: 0.5, end_time: 1, snapshot_interval: 4"));
+  auto reference = test::simulation_from_yaml<2>(block_scene("cfl: 0.5, end_time: 1, snapshot_interval: 4"));
+  const Real dt = 12 * sim->stable_time_step();
+  Index failed_step = -1;
+  try {
+    for (int s = 0; s < 200; ++s) sim->advance(dt);
+    FAIL() << "the guard never tripped";
+  } catch (const StabilityError& e) {
+    failed_step = e.report().step;
+    const std::string what = e.what();
+    EXPECT_NE(what.find("step " + std::to_string(failed_step)), std::string::npos) << what;
+    EXPECT_NE(what.find("body 'body0'"), std::string::npos) << what;
+    EXPECT_NE(what.find("particle "), std::string::npos) << what;
+    EXPECT_FALSE(e.report().field.empty());
+    EXPECT_GE(e.report().particle, 0);
+  }
+  ASSERT_GT(failed_step, 1);
+  EXPECT_EQ(sim->step(), failed_step - 1);
+  for (Index s = 1; s < failed_step; ++s) reference->advance(dt);
+  const auto a = state(*sim), b = state(*reference);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(a[i]));
+    ASSERT_EQ(a[i], b[i]) << "entry " << i;
+  }
+}
+
+TEST(Simulation, GuardCatchesParticleLeavingTheGrid) {
+  const std::string scene =
+      "dimension: 1\n"
+      "grid: {origin: [0], extent: [1], cell_size: 0.1}\n"
+      "materials: {m: {model: linear_elastic, density: 1, youngs_modulus: 1, poisson_ratio: 0}}\n"
+      "bodies: [{name: rod, material: m, shape: {type: box, min: [0.6], max: [0.9]}, velocity: [5]}]\n"
+      "solver: {cfl: 0.5, end_time: 1}\n";
+  auto sim = test::simulation_from_yaml<1>(scene);
+  try {
+    sim->run();
+    FAIL() << "expected StabilityError";
+  } catch (const StabilityError& e) {
+    EXPECT_EQ(e.report().field, "position");
+    EXPECT_EQ(e.report().body, "rod");
+    EXPECT_NE(std::string(e.what()).find("left the grid box"), std::string::npos) << e.what();
+  }
+  for (const auto& b : sim->bodies())
+    for (Index i = 0; i < b.particles.size(); ++i) EXPECT_LE(b.particles.x[i][0], 1.0);
+}
+
+}  // namespace
+}  // namespace mpm
