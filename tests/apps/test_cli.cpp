@@ -1,0 +1,195 @@
+// The `mpm` program as a user meets it: exit statuses, messages naming file:line:column and key, and
+// nothing written when the input is bad. Every fixture in tests/data/bad_scenes is run through both
+// `mpm check` and `mpm run` (first line "# expect: <message part>", second "# line: N").
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("mpm_cli_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+Result mpm(const std::string& args, const fs::path& dir) {
+  const std::string cmd = std::string(MPM_EXECUTABLE) + " " + args + " > " + (dir / "stdout").string() + " 2> " +
+                          (dir / "stderr").string() + " < /dev/null";
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(dir / "stdout");
+  r.err = slurp(dir / "stderr");
+  return r;
+}
+
+const fs::path data = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
+
+TEST(Cli, HelpAndVersion) {
+  const auto dir = scratch("help");
+  auto r = mpm("--help", dir);
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("run"), std::string::npos);
+  EXPECT_NE(r.out.find("check"), std::string::npos);
+  r = mpm("--version", dir);
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("mpm " MPM_VERSION_STRING), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
+TEST(Cli, BadCommandLineExitsWithTwo) {
+  const auto dir = scratch("args");
+  EXPECT_EQ(mpm("", dir).status, 2);
+  EXPECT_EQ(mpm("frobnicate", dir).status, 2);
+  auto r = mpm("run", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("scene"), std::string::npos) << r.err;
+  r = mpm("run " + (data / "good_scene_2d.yaml").string() + " --threads 0", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+TEST(Cli, MissingSceneFile) {
+  const auto dir = scratch("missing");
+  const auto r = mpm("check /nonexistent/scene.yaml", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("/nonexistent/scene.yaml"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+TEST(Cli, CheckValidScene) {
+  const auto dir = scratch("check");
+  const auto r = mpm("check " + (data / "good_scene_2d.yaml").string(), dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("valid"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
+TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
+  int checked = 0;
+  for (const auto& entry : fs::directory_iterator(data / "bad_scenes")) {
+    const fs::path file = entry.path();
+    std::ifstream in(file);
+    std::string expect_line, line_line;
+    std::getline(in, expect_line);
+    std::getline(in, line_line);
+    ASSERT_EQ(expect_line.rfind("# expect: ", 0), 0u) << file;
+    const std::string expect = expect_line.substr(10);
+    const std::string location = file.string() + ":" + (line_line.rfind("# line: ", 0) == 0 ? line_line.substr(8) + ":" : "");
+    const auto dir = scratch("bad");
+    for (const std::string command : {"check", "run"}) {
+      const fs::path out = dir / "out";
+      const auto r = mpm(command + " " + file.string() + " -o " + out.string(), dir);
+      // `check` has no -o option: run it without.
+      const auto rc = command == "check" ? mpm("check " + file.string(), dir) : r;
+      EXPECT_EQ(rc.status, 2) << command << " " << file << "\n" << rc.err;
+      EXPECT_NE(rc.err.find(expect), std::string::npos) << command << " " << file << "\n" << rc.err;
+      EXPECT_NE(rc.err.find(location), std::string::npos) << command << " " << file << "\n" << rc.err;
+      EXPECT_FALSE(fs::exists(out)) << "output written for a bad scene: " << file;
+    }
+    fs::remove_all(dir);
+    ++checked;
+  }
+  EXPECT_GE(checked, 50);
+}
+
+std::string block_scene(const std::string& solver, const std::string& velocity) {
+  return "dimension: 2\n"
+         "grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}\n"
+         "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e4, poisson_ratio: 0.3}}\n"
+         "bodies: [{name: block, material: m, shape: {type: box, min: [0.3, 0.3], max: [0.6, 0.6]}, velocity: " +
+         velocity + "}]\n"
+         "solver: {" + solver + "}\n"
+         "output: {interval: 0.05, fields: [velocity, stress, displacement, von_mises_stress]}\n";
+}
+
+TEST(Cli, UnstableFixedTimeStepIsRefusedWithTheBound) {
+  const auto dir = scratch("dt");
+  std::ofstream(dir / "scene.yaml") << block_scene("dt: 0.1, end_time: 1", "[0, 0]");
+  const auto r = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("scene.yaml:5:14:"), std::string::npos) << r.err;  // the line and column of `dt`
+  EXPECT_NE(r.err.find("solver.dt"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stable time step 0.0136277"), std::string::npos) << r.err;  // h/c = 0.05/3.669
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
+}
+
+// All finite values in a .vtu (the stability guard promises no NaN in any output file).
+bool all_finite(const fs::path& vtu) {
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(vtu.c_str());
+  reader->Update();
+  auto* grid = reader->GetOutput();
+  if (grid->GetNumberOfPoints() == 0) return false;
+  for (int a = 0; a < grid->GetPointData()->GetNumberOfArrays(); ++a) {
+    auto* array = grid->GetPointData()->GetArray(a);
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples() * array->GetNumberOfComponents(); ++i)
+      if (!std::isfinite(array->GetComponent(i / array->GetNumberOfComponents(), i % array->GetNumberOfComponents())))
+        return false;
+  }
+  return true;
+}
+
+TEST(Cli, RunWritesParaViewSeriesAndEnergyLog) {
+  const auto dir = scratch("run");
+  std::ofstream(dir / "scene.yaml") << block_scene("cfl: 0.5, end_time: 0.2", "[0.1, \"0.2*x\"]");
+  const auto r = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string() + " --threads 2", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("particle-updates/s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("relative energy change"), std::string::npos) << r.err;
+  const std::string pvd = slurp(dir / "out" / "particles.pvd");
+  EXPECT_NE(pvd.find("particles_000004.vtu"), std::string::npos) << pvd;  // t = 0, 0.05, ..., 0.2
+  EXPECT_TRUE(all_finite(dir / "out" / "particles_000004.vtu"));
+  const std::string energy = slurp(dir / "out" / "energy.csv");
+  EXPECT_EQ(energy.rfind("time,step,kinetic_energy,strain_energy", 0), 0u) << energy;
+  EXPECT_EQ(std::count(energy.begin(), energy.end(), '\n'), 6);  // header + 5 frames
+  for (const auto& e : fs::directory_iterator(dir / "out"))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "temporary left: " << e.path();
+  fs::remove_all(dir);
+}
+
+TEST(Cli, StabilityGuardStopsTheRunAndWritesTheLastGoodState) {
+  const auto dir = scratch("guard");
+  // The block is thrown at 20 m/s through the +x face: it leaves the grid within 0.02 s.
+  std::ofstream(dir / "scene.yaml") << block_scene("cfl: 0.5, end_time: 1", "[20, 0]");
+  const auto r = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.err.find("stability guard: step "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("body 'block', particle "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("field 'position'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("last good state"), std::string::npos) << r.err;
+  EXPECT_TRUE(all_finite(dir / "out" / "particles_000001.vtu"));  // frame 0 at t = 0, frame 1 = last good
+  const std::string pvd = slurp(dir / "out" / "particles.pvd");
+  EXPECT_NE(pvd.find("particles_000001.vtu"), std::string::npos) << pvd;
+  fs::remove_all(dir);
+}
+
+}  // namespace
