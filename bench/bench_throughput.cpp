@@ -1,0 +1,316 @@
+/// \file bench_throughput.cpp
+/// Throughput of the explicit engine: particle-updates per second (particles x steps / wall seconds) and
+/// state bytes per particle, for an elastic block of about 1e6 particles, in 2D and 3D, with linear (hat)
+/// and cubic B-spline functions, USL and MUSL, on 1 and 2 threads.
+///
+/// The scene is written as YAML text and goes through parse_scene() and build_simulation<Dim>(), exactly
+/// as a user scene does. Only Simulation::advance() is timed: no output is written. This is a program,
+/// not a test: timings depend on the machine and never decide whether a test passes. See bench/README.md.
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mpm/app/scene_builder.hpp"
+#include "mpm/grid.hpp"
+#include "mpm/scene_loader.hpp"
+#include "mpm/simulation.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Case {
+  std::string name;   ///< e.g. 2d_linear_usl
+  int dim;
+  std::string shape;  ///< "linear" or "cubic_bspline" (the scene-file names)
+  std::string scheme; ///< "usl" or "musl"
+};
+
+struct Options {
+  bool quick = false;
+  std::optional<long> steps;         ///< fixed number of timed steps (else calibrated)
+  std::vector<std::string> cases;    ///< empty: all
+  std::vector<int> threads{1, 2};
+  std::string csv;
+  double target_seconds = 3.0;       ///< wall time aimed at per timed run when steps are calibrated
+};
+
+struct Row {
+  std::string name;
+  int dim = 0;
+  std::string shape, scheme;
+  int threads = 0;
+  long long particles = 0, nodes = 0;
+  long steps = 0;
+  double wall = 0, rate = 0;
+  std::optional<double> speedup;  ///< against the 1-thread run of the same case, if there is one
+  std::size_t bytes_state = 0;  ///< particle state bytes per particle
+  double bytes_grid = 0;        ///< grid node records per particle
+};
+
+std::vector<Case> all_cases() {
+  std::vector<Case> out;
+  for (int dim : {2, 3})
+    for (const char* shape : {"linear", "cubic_bspline"})
+      for (const char* scheme : {"usl", "musl"})
+        out.push_back({fmt::format("{}d_{}_{}", dim, shape, scheme), dim, shape, scheme});
+  return out;
+}
+
+/// Block of `n` cells per axis (1 m side), 2 particles per cell per axis, inside a grid with a margin of
+/// 3 cells on every side; linear elastic, with a small smooth initial velocity field so that it deforms.
+std::string scene_yaml(const Case& c, int n) {
+  const int margin = 3;
+  const double h = 1.0 / n;
+  const double extent = (n + 2 * margin) * h;
+  const double lo = margin * h, hi = (margin + n) * h;
+  auto vec = [&](double v) {
+    std::string s = "[";
+    for (int d = 0; d < c.dim; ++d) s += fmt::format("{}{:.17g}", d ? ", " : "", v);
+    return s + "]";
+  };
+  const std::string velocity = c.dim == 2 ? R"v(["0.01*sin(3*x)", "0.01*cos(2*y)"])v"
+                                          : R"v(["0.01*sin(3*x)", "0.01*cos(2*y)", "0.01*sin(2*z)"])v";
+  return fmt::format(R"(dimension: {dim}
+grid:
+  origin: {origin}
+  extent: {extent}
+  cell_size: {h:.17g}
+materials:
+  block:
+    model: linear_elastic
+    density: 1000
+    youngs_modulus: 1.0e6
+    poisson_ratio: 0.3
+bodies:
+  - name: block
+    material: block
+    shape: {{type: box, min: {lo}, max: {hi}}}
+    particles_per_cell: 2
+    velocity: {velocity}
+solver:
+  scheme: {scheme}
+  shape_function: {shape}
+  cfl: 0.3
+  end_time: 1000
+output:
+  fields: []
+)",
+                     fmt::arg("dim", c.dim), fmt::arg("origin", vec(0.0)), fmt::arg("extent", vec(extent)),
+                     fmt::arg("h", h), fmt::arg("lo", vec(lo)), fmt::arg("hi", vec(hi)), fmt::arg("velocity", velocity),
+                     fmt::arg("scheme", c.scheme), fmt::arg("shape", c.shape));
+}
+
+/// Cells per axis of the block: 2D 500^2 x 4 PPC = 1e6 (quick: 250^2 x 4 = 2.5e5);
+/// 3D 50^3 x 8 PPC = 1e6 (quick: 32^3 x 8 = 2.6e5).
+int block_cells(int dim, bool quick) {
+  if (dim == 2) return quick ? 250 : 500;
+  return quick ? 32 : 50;
+}
+
+template <int Dim>
+void advance_steps(mpm::Simulation<Dim>& sim, long steps) {
+  for (long i = 0; i < steps; ++i) sim.advance(sim.next_time_step());
+}
+
+template <int Dim>
+std::vector<Row> run_case(const Case& c, const Options& opt) {
+  const int n = block_cells(Dim, opt.quick);
+  const auto t_build = Clock::now();
+  const mpm::SceneDescription scene = mpm::parse_scene(scene_yaml(c, n), c.name + ".yaml");
+  auto sim = mpm::app::build_simulation<Dim>(scene);
+  const double build_seconds = std::chrono::duration<double>(Clock::now() - t_build).count();
+
+  const long long particles = sim->particle_count();
+  std::size_t state_bytes = 0;
+  for (const auto& b : sim->bodies()) state_bytes = std::max(state_bytes, b.particles.bytes_per_particle());
+  const long long nodes = sim->grid().size();
+  const double grid_bytes =
+      static_cast<double>(nodes) * (sizeof(mpm::NodeRecord<Dim>) + sizeof(mpm::NodeVelocity<Dim>)) / particles;
+  fmt::print(std::cerr, "{}: {} particles, {} nodes, built in {:.2f} s, dt = {:.4g} s\n", c.name, particles, nodes,
+             build_seconds, sim->next_time_step());
+
+  std::vector<Row> rows;
+  constexpr int warmup = 2, probe = 2;
+  for (int threads : opt.threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    // Warm-up (first touch, thread pool start, caches), untimed.
+    advance_steps(*sim, warmup);
+    // Unless --steps is given, a short probe sets the number of timed steps to last about target_seconds.
+    long steps = 0;
+    if (opt.steps) {
+      steps = *opt.steps;
+    } else {
+      const auto p0 = Clock::now();
+      advance_steps(*sim, probe);
+      const double per_step = std::chrono::duration<double>(Clock::now() - p0).count() / probe;
+      steps = std::clamp(static_cast<long>(std::lround(opt.target_seconds / std::max(per_step, 1e-9))), 5L, 5000L);
+    }
+
+    const auto t0 = Clock::now();
+    advance_steps(*sim, steps);
+    const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+
+    Row r;
+    r.name = c.name;
+    r.dim = Dim;
+    r.shape = c.shape;
+    r.scheme = c.scheme;
+    r.threads = threads;
+    r.particles = particles;
+    r.nodes = nodes;
+    r.steps = steps;
+    r.wall = wall;
+    r.rate = static_cast<double>(particles) * steps / std::max(wall, 1e-300);
+    r.bytes_state = state_bytes;
+    r.bytes_grid = grid_bytes;
+    fmt::print(std::cerr, "  {} thread(s): {} steps in {:.3f} s, {:.4g} particle-updates/s\n", threads, steps, wall,
+               r.rate);
+    rows.push_back(r);
+  }
+  // Speed-up against the 1-thread run of the same case, when there is one.
+  for (auto& r : rows)
+    for (const auto& base : rows)
+      if (base.threads == 1) r.speedup = r.rate / base.rate;
+  return rows;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, sep))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+void usage(std::ostream& os) {
+  os << "usage: bench_throughput [--quick] [--steps N] [--case NAME[,NAME...]] [--threads 1,2] [--seconds S] "
+        "[--csv FILE]\n"
+        "  --quick      blocks of about 2.5e5 particles and ~0.5 s per timed run (smoke run)\n"
+        "  --steps N    time exactly N steps per run (default: set by a 2-step probe after the warm-up to last ~--seconds)\n"
+        "  --seconds S  wall time aimed at per timed run when calibrating (default 3, quick 0.5)\n"
+        "  --case NAME  run only these cases; NAME is e.g. 2d_linear_usl, 3d_cubic_bspline_musl\n"
+        "  --threads L  comma-separated thread counts (tbb::global_control max_allowed_parallelism)\n"
+        "  --csv FILE   also write the table as CSV\n"
+        "cases:";
+  for (const auto& c : all_cases()) os << ' ' << c.name;
+  os << '\n';
+}
+
+Options parse_args(int argc, char** argv) {
+  Options o;
+  std::optional<double> seconds;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--quick") {
+      o.quick = true;
+    } else if (a == "--steps") {
+      o.steps = std::stol(value());
+      if (*o.steps < 1) throw std::invalid_argument("--steps must be >= 1");
+    } else if (a == "--seconds") {
+      seconds = std::stod(value());
+      if (!(*seconds > 0)) throw std::invalid_argument("--seconds must be > 0");
+    } else if (a == "--case") {
+      for (auto& name : split(value(), ',')) o.cases.push_back(name);
+    } else if (a == "--threads") {
+      o.threads.clear();
+      for (auto& t : split(value(), ',')) {
+        const int n = std::stoi(t);
+        if (n < 1) throw std::invalid_argument("--threads: counts must be >= 1");
+        o.threads.push_back(n);
+      }
+      if (o.threads.empty()) throw std::invalid_argument("--threads needs at least one count");
+    } else if (a == "--csv") {
+      o.csv = value();
+    } else if (a == "-h" || a == "--help") {
+      usage(std::cout);
+      std::exit(0);
+    } else {
+      throw std::invalid_argument("unknown option '" + a + "'");
+    }
+  }
+  o.target_seconds = seconds.value_or(o.quick ? 0.5 : 3.0);
+  const auto known = all_cases();
+  for (const auto& name : o.cases)
+    if (std::none_of(known.begin(), known.end(), [&](const Case& c) { return c.name == name; }))
+      throw std::invalid_argument("unknown case '" + name + "'");
+  return o;
+}
+
+void print_table(const std::vector<Row>& rows, std::ostream& os) {
+  os << "| case | dim | shape | scheme | threads | particles | steps | wall s | particle-updates/s | "
+        "speed-up vs 1 thread | bytes/particle (state) | grid bytes/particle |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    fmt::print(os, "| {} | {} | {} | {} | {} | {} | {} | {:.3f} | {:.3e} | {} | {} | {:.1f} |\n", r.name, r.dim,
+               r.shape, r.scheme, r.threads, r.particles, r.steps, r.wall, r.rate,
+               r.speedup ? fmt::format("{:.2f}", *r.speedup) : std::string("-"), r.bytes_state, r.bytes_grid);
+}
+
+void write_csv(const std::vector<Row>& rows, const std::string& file) {
+  std::ofstream f(file);
+  if (!f) throw std::runtime_error("cannot write " + file);
+  f << "case,dim,shape,scheme,threads,particles,grid_nodes,steps,wall_seconds,particle_updates_per_second,"
+       "speedup_vs_1_thread,state_bytes_per_particle,grid_bytes_per_particle\n";
+  for (const auto& r : rows)
+    fmt::print(f, "{},{},{},{},{},{},{},{},{:.6f},{:.6e},{},{},{:.3f}\n", r.name, r.dim, r.shape, r.scheme,
+               r.threads, r.particles, r.nodes, r.steps, r.wall, r.rate,
+               r.speedup ? fmt::format("{:.4f}", *r.speedup) : std::string(), r.bytes_state, r.bytes_grid);
+  if (!f) throw std::runtime_error("error writing " + file);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  try {
+    opt = parse_args(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "bench_throughput: " << e.what() << '\n';
+    usage(std::cerr);
+    return 2;
+  }
+  try {
+    std::vector<Row> rows;
+    for (const auto& c : all_cases()) {
+      if (!opt.cases.empty() && std::find(opt.cases.begin(), opt.cases.end(), c.name) == opt.cases.end()) continue;
+      auto r = c.dim == 2 ? run_case<2>(c, opt) : run_case<3>(c, opt);
+      rows.insert(rows.end(), r.begin(), r.end());
+    }
+    std::cout << '\n';
+    print_table(rows, std::cout);
+    std::cout << "\nparticle-updates/s = particles x steps / wall seconds of Simulation::advance() only (no output).\n"
+                 "bytes/particle (state) = ParticleSet::bytes_per_particle(); the stability guard keeps one more copy "
+                 "(snapshot).\n"
+                 "grid bytes/particle = grid nodes x (sizeof NodeRecord + sizeof NodeVelocity) / particles.\n";
+    if (!opt.csv.empty()) {
+      write_csv(rows, opt.csv);
+      std::cout << "CSV written to " << opt.csv << '\n';
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "bench_throughput: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
