@@ -59,10 +59,10 @@ RunSummary run(const SceneDescription& scene, const RunOptions& options, std::os
     if (options.progress) log << '\n';
     throw;
   }
+  summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();  // stepping only
   writer.write(*sim);
   if (options.progress) log << '\n';
   summary.steps = sim->step();
-  summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   summary.particle_updates_per_second =
       static_cast<double>(summary.particles) * summary.steps / std::max(summary.wall_seconds, 1e-300);
   const Real e1 = sim->energy().total();

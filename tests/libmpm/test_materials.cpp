@@ -123,3 +123,45 @@ TEST(Materials, WaveSpeed) {
 
 }  // namespace
 }  // namespace mpm
+
+namespace mpm {
+namespace {
+
+// The packed in-plane update (used by the batch loop in 1D/2D/3D) must be the same law as the 3x3
+// update_point: drive both along the same plane-strain history.
+template <class Model, int Dim>
+void check_packed_equals_general() {
+  Mat<Dim> L = Mat<Dim>::Zero();
+  for (int r = 0; r < Dim; ++r)
+    for (int c = 0; c < Dim; ++c) L(r, c) = 0.3 * (r + 1) - 0.2 * c + (r == c ? 0.1 : -0.05);
+  ParticleSet<Dim> packed;
+  packed.add(Vec<Dim>::Zero(), 1, 1);
+  MaterialBatch<Dim, Model> batch(steel);
+  Mat3 F3 = Mat3::Identity(), s3 = Mat3::Zero();
+  const Real dt = 1e-3;
+  for (int step = 0; step < 50; ++step) {
+    packed.L[0] = L;
+    packed.F[0] = (Mat<Dim>::Identity() + dt * L) * packed.F[0];
+    batch.update_stress(packed, 0, 1, dt);
+    PointKinematics k;
+    k.L = embed<Dim>(L, 0);
+    F3 = (Mat3::Identity() + dt * k.L) * F3;
+    k.F = F3;
+    k.J = F3.determinant();
+    k.dt = dt;
+    s3 = Model::update_point(steel, k, s3);
+  }
+  EXPECT_LT((packed.stress[0].full() - s3).norm(), 1e-10 * s3.norm()) << Model::key << " " << Dim << "D";
+}
+
+TEST(Materials, PackedUpdateEqualsGeneralLaw) {
+  check_packed_equals_general<LinearElastic, 1>();
+  check_packed_equals_general<LinearElastic, 2>();
+  check_packed_equals_general<LinearElastic, 3>();
+  check_packed_equals_general<NeoHookean, 1>();
+  check_packed_equals_general<NeoHookean, 2>();
+  check_packed_equals_general<NeoHookean, 3>();
+}
+
+}  // namespace
+}  // namespace mpm

@@ -8,9 +8,9 @@
 ///   static Real energy_density(const Params&, const Mat3& F, const Mat3& stress);  per reference volume (J/m^3)
 /// The update is pure (old state in, new state out) so that an implicit scheme can call it for trial
 /// deformations without committing anything.
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
+/// A model may also provide `template <int Dim> static void update_packed(const Params&, const Mat<Dim>& F,
+/// const Mat<Dim>& L, Real J, Real dt, SymTensor<Dim>& stress)`, the same law written on the packed
+/// in-plane storage; the batch loop then uses it (the elastic laws do: it avoids 3x3 round trips).
 
 #include <cmath>
 
@@ -22,33 +22,39 @@ template <int Dim, class Model>
 class MaterialBatch final : public Material<Dim> {
  public:
   using Params = typename Model::Params;
+  static constexpr bool has_packed_update = requires(const Params& c, const Mat<Dim>& m, SymTensor<Dim>& s) {
+    Model::template update_packed<Dim>(c, m, m, Real(1), Real(1), s);
+  };
   explicit MaterialBatch(const Params& params) : params_(params) {}
   std::string_view model() const override { return Model::key; }
   Real density() const override { return params_.density; }
   const Params& params() const { return params_; }
 
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, Real dt) override {
-    return tbb::parallel_reduce(
-        tbb::blocked_range<Index>(begin, end, 1024), WaveSpeedBound<Dim>{},
-        [&](const tbb::blocked_range<Index>& r, WaveSpeedBound<Dim> bound) {
-          for (Index i = r.begin(); i != r.end(); ++i) {
-            PointKinematics k;
-            k.F = embed<Dim>(p.F[i], 1);
-            k.L = embed<Dim>(p.L[i], 0);
-            k.J = p.F[i].determinant();
-            k.dt = dt;
-            const Mat3 s = Model::update_point(params_, k, p.stress[i].full());
-            p.stress[i] = SymTensor<Dim>::from(s);
-            bound.finite = bound.finite && s.allFinite();
-            const Real c = Model::wave_speed(params_, k.J);
-            bound.max_speed = bound.max_speed.cwiseMax((p.v[i].cwiseAbs().array() + c).matrix());
-          }
-          return bound;
-        },
-        [](WaveSpeedBound<Dim> a, const WaveSpeedBound<Dim>& b) {
-          a.merge(b);
-          return a;
-        });
+    bool finite = true;
+    Vec<Dim> max_speed = Vec<Dim>::Zero();
+    for (Index i = begin; i != end; ++i) {
+      const Real J = p.F[i].determinant();
+      if constexpr (has_packed_update) {
+        Model::template update_packed<Dim>(params_, p.F[i], p.L[i], J, dt, p.stress[i]);
+      } else {
+        PointKinematics k;
+        k.F = embed<Dim>(p.F[i], 1);
+        k.L = embed<Dim>(p.L[i], 0);
+        k.J = J;
+        k.dt = dt;
+        p.stress[i] = SymTensor<Dim>::from(Model::update_point(params_, k, p.stress[i].full()));
+      }
+      Real sum = 0;
+      for (Real c : p.stress[i].c) sum += c;
+      finite = finite && std::isfinite(sum);
+      const Real c = Model::wave_speed(params_, J);
+      max_speed = max_speed.cwiseMax((p.v[i].cwiseAbs().array() + c).matrix());
+    }
+    WaveSpeedBound<Dim> bound;
+    bound.max_speed = max_speed;
+    bound.finite = finite;
+    return bound;
   }
 
   WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override {

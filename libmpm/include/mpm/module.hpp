@@ -64,6 +64,7 @@ class ModuleHooks {
   void after_g2p(StepContext<Dim>& c) { for (auto* m : after_g2p_) m->after_g2p(c); }
   void after_stress(StepContext<Dim>& c) { for (auto* m : after_stress_) m->after_stress(c); }
   void end_of_step(StepContext<Dim>& c) { for (auto* m : end_of_step_) m->end_of_step(c); }
+  bool has_after_g2p() const { return !after_g2p_.empty(); }
   const std::vector<std::shared_ptr<Module<Dim>>>& all() const { return all_; }
 
  private:

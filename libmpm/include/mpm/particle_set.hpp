@@ -17,6 +17,15 @@
 namespace mpm {
 
 namespace detail {
+/// Reorders v; the previous buffer is kept as per-thread scratch for the next reordering, so that
+/// periodic sorting does not allocate (and page-fault) a fresh array every time.
+template <class T>
+void gather_vector(std::vector<T>& v, const std::vector<Index>& order) {
+  thread_local std::vector<T> out;
+  out.resize(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
+  v.swap(out);
+}
 /// Type-erased on-demand field, so that reordering and snapshots reach every field.
 struct FieldBase {
   virtual ~FieldBase() = default;
@@ -29,21 +38,11 @@ template <class T>
 struct TypedField final : FieldBase {
   std::vector<T> data;
   T initial{};
-  void gather(const std::vector<Index>& order) override {
-    std::vector<T> out(order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) out[i] = data[order[i]];
-    data.swap(out);
-  }
+  void gather(const std::vector<Index>& order) override { gather_vector(data, order); }
   void resize(std::size_t n) override { data.resize(n, initial); }
   std::unique_ptr<FieldBase> clone() const override { return std::make_unique<TypedField>(*this); }
   std::size_t bytes_per_particle() const override { return sizeof(T); }
 };
-template <class T>
-void gather_vector(std::vector<T>& v, const std::vector<Index>& order) {
-  std::vector<T> out(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
-  v.swap(out);
-}
 }  // namespace detail
 
 /// The particles of one body (one material).

@@ -23,6 +23,8 @@ struct SlabBins {
   std::vector<Index> offsets;  ///< slab s holds order[offsets[s] .. offsets[s+1])
   std::vector<Index> order;    ///< particle indices grouped by slab, ascending inside a slab
   Index outside = -1;          ///< first particle found outside the grid box (or non-finite), -1 if none
+  std::vector<int> slab_of;    ///< scratch: slab of each particle (kept to avoid reallocating every step)
+  std::vector<Index> cursor;   ///< scratch
 };
 
 /// Groups the particles of `p` by slab. O(N) counting sort; flags particles outside the grid box.
@@ -35,7 +37,8 @@ void bin_by_slab(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab
   bins.outside = -1;
   const Index n = p.size();
   const Vec<Dim> lower = g.origin, upper = g.upper();
-  std::vector<int> slab(n);
+  std::vector<int>& slab = bins.slab_of;
+  slab.resize(n);
   bins.offsets.assign(bins.slab_count + 1, 0);
   for (Index i = 0; i < n; ++i) {
     const auto& x = p.x[i];
@@ -49,8 +52,8 @@ void bin_by_slab(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab
   }
   for (int s = 0; s < bins.slab_count; ++s) bins.offsets[s + 1] += bins.offsets[s];
   bins.order.resize(n);
-  std::vector<Index> cursor(bins.offsets.begin(), bins.offsets.end() - 1);
-  for (Index i = 0; i < n; ++i) bins.order[cursor[slab[i]]++] = i;
+  bins.cursor.assign(bins.offsets.begin(), bins.offsets.end() - 1);
+  for (Index i = 0; i < n; ++i) bins.order[bins.cursor[slab[i]]++] = i;
 }
 
 /// Calls body(indices, count) for every slab, even slabs in parallel first, then odd slabs.
@@ -66,24 +69,28 @@ void for_each_slab_coloured(const SlabBins& bins, Body&& body) {
   }
 }
 
-/// Permutation that sorts particles by the linear index of their cell (stable), for memory locality.
+/// Permutation that sorts particles by the linear index of their cell, for memory locality. Counting
+/// sort: O(N + cells), stable, so the order (and hence the results) never depends on threads.
 template <int Dim>
 std::vector<Index> order_by_cell(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g) {
   const Index n = p.size();
-  std::vector<std::pair<Index, Index>> key(n);
+  Index cell_count = 1;
+  for (int d = 0; d < Dim; ++d) cell_count *= g.cells(d);
+  std::vector<Index> cell(n), offset(cell_count + 1, 0);
   for (Index i = 0; i < n; ++i) {
     Index c = 0, stride = 1;
     for (int d = 0; d < Dim; ++d) {
       const Real xi = (p.x[i][d] - g.origin[d]) * g.inv_h[d];
-      const int cell = std::isfinite(xi) ? std::clamp(static_cast<int>(xi), 0, g.cells(d) - 1) : 0;
-      c += stride * cell;
+      const int k = std::isfinite(xi) ? std::clamp(static_cast<int>(xi), 0, g.cells(d) - 1) : 0;
+      c += stride * k;
       stride *= g.cells(d);
     }
-    key[i] = {c, i};
+    cell[i] = c;
+    ++offset[c + 1];
   }
-  std::stable_sort(key.begin(), key.end());
+  for (Index c = 0; c < cell_count; ++c) offset[c + 1] += offset[c];
   std::vector<Index> order(n);
-  for (Index i = 0; i < n; ++i) order[i] = key[i].second;
+  for (Index i = 0; i < n; ++i) order[offset[cell[i]]++] = i;
   return order;
 }
 

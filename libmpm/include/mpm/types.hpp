@@ -54,6 +54,19 @@ struct SymTensor {
     }
     return s;
   }
+  /// Overwrites the in-plane Dim x Dim block (symmetrised); out-of-plane components are kept.
+  void set_block(const Mat<Dim>& m) {
+    c[0] = m(0, 0);
+    if constexpr (Dim >= 2) {
+      c[1] = m(1, 1);
+      c[3] = 0.5 * (m(0, 1) + m(1, 0));
+    }
+    if constexpr (Dim == 3) {
+      c[2] = m(2, 2);
+      c[4] = 0.5 * (m(1, 2) + m(2, 1));
+      c[5] = 0.5 * (m(0, 2) + m(2, 0));
+    }
+  }
   /// The in-plane Dim x Dim block, which is all the internal force needs.
   Mat<Dim> block() const {
     Mat<Dim> m;

@@ -20,6 +20,14 @@ struct NeoHookean {
     const Mat3 b = k.F * k.F.transpose();
     return (c.mu * (b - Mat3::Identity()) + c.lambda * std::log(k.J) * Mat3::Identity()) / k.J;
   }
+  /// The same law on packed storage (out-of-plane stretch 1, so b_zz = 1 and sigma_zz = lambda ln J / J).
+  template <int Dim>
+  static inline void update_packed(const Params& c, const Mat<Dim>& F, const Mat<Dim>&, Real J, Real,
+                                   SymTensor<Dim>& s) {
+    const Real inv_J = 1 / J, p = c.lambda * std::log(J);
+    s.set_block((c.mu * (F * F.transpose() - Mat<Dim>::Identity()) + p * Mat<Dim>::Identity()) * inv_J);
+    for (int k = Dim; k < 3; ++k) s.c[k] = p * inv_J;
+  }
   /// Speed of the linearised dilatational wave about the current state: the spatial moduli are
   /// lambda/J and (mu - lambda ln J)/J and rho = rho0/J, so c^2 = (lambda + 2 mu - 2 lambda ln J)/rho0,
   /// never taken below its undeformed value.

@@ -3,6 +3,10 @@
 /// The parts of a step that USL and MUSL share: the first mapping with the grid update, and the
 /// batched stress update.
 
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+
 #include "mpm/schemes/transfer_kernels.hpp"
 
 namespace mpm::kernels {
@@ -28,13 +32,50 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
   ctx.hooks.grid_velocity(ctx, GridStage::updated);
 }
 
-/// Batched constitutive update of every body (one virtual call per body), gathering the CFL bound.
-template <int Dim>
-void update_stress(StepContext<Dim>& ctx) {
+/// Grid-to-particle transfer fused with the constitutive update, block by block: `transfer(p, begin,
+/// end)` updates the kinematics of a block of particles and the body's material updates the stress of
+/// the same block while it is in cache. When a module must run between the two (phase_after_g2p), all
+/// transfers run first, then the hooks, then the stress update. Gathers the CFL bound either way.
+template <int Dim, class Transfer>
+void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
+  constexpr Index block = 1024;
+  const bool fused = !ctx.hooks.has_after_g2p();
   ctx.wave_speed = {};
   for (auto& body : ctx.bodies) {
-    const auto bound = body.material->update_stress(body.particles, 0, body.particles.size(), ctx.dt);
+    auto& p = body.particles;
+    auto& material = *body.material;
+    const auto bound = tbb::parallel_reduce(
+        tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},
+        [&](const tbb::blocked_range<Index>& r, WaveSpeedBound<Dim> b) {
+          for (Index begin = r.begin(); begin < r.end(); begin += block) {
+            const Index end = std::min(begin + block, r.end());
+            if (!transfer(body, begin, end)) ctx.guard_tripped = true;
+            if (fused) b.merge(material.update_stress(p, begin, end, ctx.dt));
+          }
+          return b;
+        },
+        [](WaveSpeedBound<Dim> a, const WaveSpeedBound<Dim>& b) {
+          a.merge(b);
+          return a;
+        });
     ctx.wave_speed.merge(bound);
+  }
+  if (!fused) {
+    ctx.hooks.after_g2p(ctx);
+    for (auto& body : ctx.bodies) {
+      auto& p = body.particles;
+      const auto bound = tbb::parallel_reduce(
+          tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},
+          [&](const tbb::blocked_range<Index>& r, WaveSpeedBound<Dim> b) {
+            b.merge(body.material->update_stress(p, r.begin(), r.end(), ctx.dt));
+            return b;
+          },
+          [](WaveSpeedBound<Dim> a, const WaveSpeedBound<Dim>& b) {
+            a.merge(b);
+            return a;
+          });
+      ctx.wave_speed.merge(bound);
+    }
   }
   if (!ctx.wave_speed.finite) ctx.guard_tripped = true;
   ctx.hooks.after_stress(ctx);

@@ -23,9 +23,9 @@ class Musl final : public Scheme<Dim> {
     clear_momentum(ctx.grid);
     for (auto& body : ctx.bodies) update_velocity_and_remap(body, ctx);
     remapped_velocity(ctx);
-    for (auto& body : ctx.bodies) update_position_and_deformation(body, ctx);
-    ctx.hooks.after_g2p(ctx);
-    kernels::update_stress(ctx);
+    kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end) {
+      return update_position_and_deformation(body, ctx, begin, end);
+    });
   }
 
  private:
@@ -80,31 +80,30 @@ class Musl final : public Scheme<Dim> {
   }
 
   /// x_p += dt sum phi v~_I (Alg. 2); L_p = sum v_I^{t+dt} (x) grad phi at the old positions; F update.
-  static void update_position_and_deformation(Body<Dim>& body, StepContext<Dim>& ctx) {
+  static bool update_position_and_deformation(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin,
+                                              Index end) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const Vec<Dim> upper = g.upper();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real dt = ctx.dt;
-    tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
-      Stencil<Dim, Shape> st;
-      bool ok = true;
-      for (Index i = r.begin(); i != r.end(); ++i) {
-        st.compute(p.x[i], g);
-        Vec<Dim> v_move = Vec<Dim>::Zero();
-        Mat<Dim> L = Mat<Dim>::Zero();
-        for (int a = 0; a < st.count; ++a) {
-          const NodeVelocity<Dim>& nv = vel[st.node[a]];
-          v_move += st.w[a] * nv.updated;
-          for (int c = 0; c < Dim; ++c) L.col(c) += nv.mapped * st.grad[a][c];
-        }
-        p.x[i] += dt * v_move;
-        p.L[i] = L;
-        ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
-              std::isfinite(p.v[i].sum());
+    Stencil<Dim, Shape> st;
+    bool ok = true;
+    for (Index i = begin; i != end; ++i) {
+      st.compute(p.x[i], g);
+      Vec<Dim> v_move = Vec<Dim>::Zero();
+      Mat<Dim> L = Mat<Dim>::Zero();
+      for (int a = 0; a < st.count; ++a) {
+        const NodeVelocity<Dim>& nv = vel[st.node[a]];
+        v_move += st.w[a] * nv.updated;
+        for (int c = 0; c < Dim; ++c) L.col(c) += nv.mapped * st.grad[a][c];
       }
-      if (!ok) ctx.guard_tripped = true;
-    });
+      p.x[i] += dt * v_move;
+      p.L[i] = L;
+      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
+            std::isfinite(p.v[i].sum());
+    }
+    return ok;
   }
 };
 

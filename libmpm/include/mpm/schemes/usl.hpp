@@ -18,42 +18,40 @@ class Usl final : public Scheme<Dim> {
 
   void advance(StepContext<Dim>& ctx) override {
     kernels::map_and_update_grid<Dim, Shape>(ctx);
-    for (auto& body : ctx.bodies) grid_to_particles(body, ctx);
-    ctx.hooks.after_g2p(ctx);
-    kernels::update_stress(ctx);
+    kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end) {
+      return grid_to_particles(body, ctx, begin, end);
+    });
   }
 
  private:
   /// G2P: v_p = alpha (v_p + sum phi (v_I^{t+dt} - v_I^t)) + (1 - alpha) sum phi v_I^{t+dt};
   /// x_p += dt sum phi v_I^{t+dt}; L_p = sum v_I^{t+dt} (x) grad phi (old positions); F update.
-  static void grid_to_particles(Body<Dim>& body, StepContext<Dim>& ctx) {
+  static bool grid_to_particles(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin, Index end) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const Vec<Dim> upper = g.upper();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
-    tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
-      Stencil<Dim, Shape> st;
-      bool ok = true;
-      for (Index i = r.begin(); i != r.end(); ++i) {
-        st.compute(p.x[i], g);
-        Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
-        Mat<Dim> L = Mat<Dim>::Zero();
-        for (int a = 0; a < st.count; ++a) {
-          const NodeVelocity<Dim>& nv = vel[st.node[a]];
-          const Real w = st.w[a];
-          v_pic += w * nv.updated;
-          dv += w * (nv.updated - nv.mapped);
-          for (int c = 0; c < Dim; ++c) L.col(c) += nv.updated * st.grad[a][c];
-        }
-        p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
-        p.x[i] += dt * v_pic;
-        p.L[i] = L;
-        ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
-              std::isfinite(p.v[i].sum());
+    Stencil<Dim, Shape> st;
+    bool ok = true;
+    for (Index i = begin; i != end; ++i) {
+      st.compute(p.x[i], g);
+      Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
+      Mat<Dim> L = Mat<Dim>::Zero();
+      for (int a = 0; a < st.count; ++a) {
+        const NodeVelocity<Dim>& nv = vel[st.node[a]];
+        const Real w = st.w[a];
+        v_pic += w * nv.updated;
+        dv += w * (nv.updated - nv.mapped);
+        for (int c = 0; c < Dim; ++c) L.col(c) += nv.updated * st.grad[a][c];
       }
-      if (!ok) ctx.guard_tripped = true;
-    });
+      p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
+      p.x[i] += dt * v_pic;
+      p.L[i] = L;
+      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
+            std::isfinite(p.v[i].sum());
+    }
+    return ok;
   }
 };
 
