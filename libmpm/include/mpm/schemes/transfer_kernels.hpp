@@ -36,14 +36,21 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& grid) {
       const Real m = p.mass[i];
       const Vec<Dim> mv = m * p.v[i];
       const Mat<Dim> vs = (p.volume0[i] * p.F[i].determinant()) * p.stress[i].block();
+      // Scalar loops on the packed record: Eigen's vectorised form mixes 128-bit stores with
+      // overlapping 256-bit loads of the same record (a store-forwarding stall per node).
+      Real mvs[Dim], vss[Dim][Dim];
+      for (int r = 0; r < Dim; ++r) {
+        mvs[r] = mv[r];
+        for (int c = 0; c < Dim; ++c) vss[r][c] = vs(r, c);
+      }
       for (int a = 0; a < st.count; ++a) {
         NodeRecord<Dim>& n = node[st.node[a]];
         const Real w = st.w[a];
         n.mass += w * m;
-        n.momentum += w * mv;
+        for (int r = 0; r < Dim; ++r) n.momentum[r] += w * mvs[r];
         for (int r = 0; r < Dim; ++r) {
           Real f = 0;
-          for (int c = 0; c < Dim; ++c) f += vs(r, c) * st.grad[a][c];
+          for (int c = 0; c < Dim; ++c) f += vss[r][c] * st.grad[a][c];
           n.force[r] -= f;
         }
       }
