@@ -50,7 +50,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       for (int d = 0; d < Dim; ++d) p.v.back()[d] = velocity[d].evaluate(xyz, 0);
     }
     if (wants_displacement) {
-      auto& x0 = p.template add_field<VecU<Dim>>("reference_position");
+      auto& x0 = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) x0[i] = p.x[i];
     }
     max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);

@@ -86,7 +86,8 @@ class ParticleSet {
     for (auto& [name, f] : extra_) f->resize(x.size());
   }
 
-  /// Adds (or returns) an on-demand field with an initial value. Call before the time loop.
+  /// Adds (or returns) an on-demand field with an initial value (give one explicitly for Eigen types,
+  /// whose T{} is uninitialised). Call before the time loop.
   template <class T>
   std::vector<T>& add_field(const std::string& name, const T& initial = T{}) {
     auto it = extra_.find(name);

@@ -23,6 +23,10 @@ struct TransferSettings {
 
 template <int Dim>
 struct StepContext {
+  StepContext(Grid<Dim>& grid_, std::vector<Body<Dim>>& bodies_, const TransferSettings<Dim>& settings_,
+              const GridBoundary<Dim>& boundary_, ModuleHooks<Dim>& hooks_)
+      : grid(grid_), bodies(bodies_), settings(settings_), boundary(boundary_), hooks(hooks_) {}
+
   Grid<Dim>& grid;
   std::vector<Body<Dim>>& bodies;
   const TransferSettings<Dim>& settings;
