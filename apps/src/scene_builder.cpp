@@ -24,8 +24,9 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   const GridGeometry<Dim> geometry(origin, h, cells);
   auto scheme = make_scheme<Dim>(scene.solver.scheme, scene.solver.shape_function);
 
-  const bool wants_displacement =
-      std::find(scene.output.fields.begin(), scene.output.fields.end(), "displacement") != scene.output.fields.end();
+  const auto wants = [&](const char* field) {
+    return std::find(scene.output.fields.begin(), scene.output.fields.end(), field) != scene.output.fields.end();
+  };
   std::vector<Body<Dim>> bodies;
   Real max_particle_mass = 0;
   for (const auto& bd : scene.bodies) {
@@ -49,10 +50,12 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       for (int d = 0; d < Dim; ++d) xyz[d] = x[d];
       for (int d = 0; d < Dim; ++d) p.v.back()[d] = velocity[d].evaluate(xyz, 0);
     }
-    if (wants_displacement) {
+    // On-demand fields, allocated only when the output asks for them.
+    if (wants("displacement")) {
       auto& x0 = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) x0[i] = p.x[i];
     }
+    if (wants("velocity_gradient")) p.template add_field<MatU<Dim>>("velocity_gradient", MatU<Dim>::Zero());
     max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);
     bodies.push_back(std::move(body));
   }

@@ -44,7 +44,8 @@ void append_field(const std::string& name, const Body<Dim>& b, std::vector<doubl
   } else if (name == "deformation_gradient") {
     each([&](Index i) { push_mat3(out, embed<Dim>(p.F[i], 1)); });
   } else if (name == "velocity_gradient") {
-    each([&](Index i) { push_mat3(out, embed<Dim>(p.L[i], 0)); });
+    const auto& L = p.template field<MatU<Dim>>("velocity_gradient");
+    each([&](Index i) { push_mat3(out, embed<Dim>(Mat<Dim>(L[i]), 0)); });
   } else if (name == "mass") {
     each([&](Index i) { out.push_back(p.mass[i]); });
   } else if (name == "volume") {

@@ -23,10 +23,10 @@ SymTensor<3> drive(const Mat3& L, Real dt, int steps, const Mat3& F0 = Mat3::Ide
   p.F[0] = F0;
   p.stress[0] = SymTensor<3>::from(s0);
   MaterialBatch<3, Model> m(steel);
+  const MatU<3> Lu = L;
   for (int s = 0; s < steps; ++s) {
-    p.L[0] = L;
     p.F[0] = (Mat3::Identity() + dt * L) * p.F[0];
-    m.update_stress(p, 0, 1, dt);
+    m.update_stress(p, 0, 1, &Lu, dt);
   }
   return p.stress[0];
 }
@@ -82,7 +82,8 @@ TEST(Materials, NeoHookeanStressMatchesClosedForm) {
   p.add(Vec<3>::Zero(), 1, 1);
   p.F[0] = F;
   MaterialBatch<3, NeoHookean> m(steel);
-  m.update_stress(p, 0, 1, 1e-3);
+  const MatU<3> zero = MatU<3>::Zero();
+  m.update_stress(p, 0, 1, &zero, 1e-3);
   const Real J = F.determinant();
   const Mat3 expected = (steel.mu * (F * F.transpose() - Mat3::Identity()) + steel.lambda * std::log(J) * Mat3::Identity()) / J;
   EXPECT_LT((p.stress[0].full() - expected).norm(), 1e-12 * expected.norm());
@@ -107,9 +108,9 @@ TEST(Materials, LinearElasticEnergyIsHalfStressTimesStrain) {
   ParticleSet<3> p;
   p.add(Vec<3>::Zero(), 1, 1);
   MaterialBatch<3, LinearElastic> m(steel);
-  p.L[0] = L;
+  const MatU<3> Lu = L;
   p.F[0] = Mat3::Identity() + L;
-  m.update_stress(p, 0, 1, 1);
+  m.update_stress(p, 0, 1, &Lu, 1);
   const Mat3 eps = L;  // one step of dt = 1
   const Real expected = 0.5 * (p.stress[0].full().cwiseProduct(eps)).sum() * p.F[0].determinant();
   EXPECT_NEAR(m.strain_energy(p), expected, 1e-10 * expected);
@@ -140,9 +141,9 @@ void check_packed_equals_general() {
   Mat3 F3 = Mat3::Identity(), s3 = Mat3::Zero();
   const Real dt = 1e-3;
   for (int step = 0; step < 50; ++step) {
-    packed.L[0] = L;
+    const MatU<Dim> Lu = L;
     packed.F[0] = (Mat<Dim>::Identity() + dt * L) * packed.F[0];
-    batch.update_stress(packed, 0, 1, dt);
+    batch.update_stress(packed, 0, 1, &Lu, dt);
     PointKinematics k;
     k.L = embed<Dim>(L, 0);
     F3 = (Mat3::Identity() + dt * k.L) * F3;

@@ -17,6 +17,9 @@ struct Body {
   ParticleSet<Dim> particles;
   std::shared_ptr<Material<Dim>> material;   ///< stateless: shared by snapshots
   SlabBins bins;                             ///< rebuilt every step by the scheme
+  /// Scratch: velocity gradients of all particles, used only when a module runs between the
+  /// grid-to-particle transfer and the stress update (otherwise a per-block buffer is enough).
+  std::vector<MatU<Dim>> velocity_gradient;
 };
 
 }  // namespace mpm

@@ -41,10 +41,12 @@ class Material {
   virtual std::string_view model() const = 0;
   /// Reference density, kg/m^3.
   virtual Real density() const = 0;
-  /// Updates the stress of particles [begin, end) from their F and L, serially; returns the CFL speed
-  /// bound. The schemes call it on blocks of about a thousand particles right after the grid-to-particle
-  /// transfer of that block, while its data is still in cache (one virtual call per block).
-  virtual WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, Real dt) = 0;
+  /// Updates the stress of particles [begin, end), serially, from their (already updated) F and the
+  /// velocity gradients L[i - begin] of the step; returns the CFL speed bound. The schemes call it on
+  /// blocks of about a thousand particles right after the grid-to-particle transfer of that block,
+  /// while its data is still in cache (one virtual call per block).
+  virtual WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L,
+                                            Real dt) = 0;
   /// The CFL speed bound of the current state, without updating anything (used before the first step).
   virtual WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const = 0;
   /// Stored (strain) energy of the particles, J (per unit out-of-plane size in 1D/2D).

@@ -30,17 +30,18 @@ class MaterialBatch final : public Material<Dim> {
   Real density() const override { return params_.density; }
   const Params& params() const { return params_; }
 
-  WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, Real dt) override {
+  WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L,
+                                    Real dt) override {
     bool finite = true;
     Vec<Dim> max_speed = Vec<Dim>::Zero();
     for (Index i = begin; i != end; ++i) {
       const Real J = p.F[i].determinant();
       if constexpr (has_packed_update) {
-        Model::template update_packed<Dim>(params_, p.F[i], p.L[i], J, dt, p.stress[i]);
+        Model::template update_packed<Dim>(params_, p.F[i], L[i - begin], J, dt, p.stress[i]);
       } else {
         PointKinematics k;
         k.F = embed<Dim>(p.F[i], 1);
-        k.L = embed<Dim>(p.L[i], 0);
+        k.L = embed<Dim>(Mat<Dim>(L[i - begin]), 0);
         k.J = J;
         k.dt = dt;
         p.stress[i] = SymTensor<Dim>::from(Model::update_point(params_, k, p.stress[i].full()));

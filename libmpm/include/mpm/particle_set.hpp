@@ -1,6 +1,8 @@
 #pragma once
 /// \file particle_set.hpp
-/// Particle storage by field. The core fields that every scheme reads are typed members; fields that
+/// Particle storage by field. The velocity gradient is not state: it lives for one step in a per-block
+/// scratch buffer of the scheme (stored in the on-demand field "velocity_gradient" only when asked).
+/// The core fields that every scheme reads are typed members; fields that
 /// only some scenes need (reference position for displacement, temperature, plastic strain, ...) are
 /// added on demand by name with add_field<T>() and resolved to a std::vector once per step, never
 /// looked up per particle. Every field follows reordering (sort by cell) and snapshots.
@@ -55,7 +57,6 @@ class ParticleSet {
   std::vector<Real> mass;                ///< kg (kg/m in 2D, kg/m^2 in 1D: per unit out-of-plane size)
   std::vector<Real> volume0;             ///< reference volume, m^3 (per unit out-of-plane size)
   std::vector<MatU<Dim>> F;              ///< deformation gradient
-  std::vector<MatU<Dim>> L;              ///< velocity gradient of the last step, 1/s
   std::vector<SymTensor<Dim>> stress;    ///< Cauchy stress, Pa
   std::vector<std::uint32_t> id;         ///< index at creation: stable under reordering
 
@@ -63,7 +64,7 @@ class ParticleSet {
   ParticleSet(const ParticleSet& o) { *this = o; }
   ParticleSet& operator=(const ParticleSet& o) {
     if (this == &o) return *this;
-    x = o.x; v = o.v; mass = o.mass; volume0 = o.volume0; F = o.F; L = o.L; stress = o.stress; id = o.id;
+    x = o.x; v = o.v; mass = o.mass; volume0 = o.volume0; F = o.F; stress = o.stress; id = o.id;
     extra_.clear();
     for (const auto& [name, f] : o.extra_) extra_[name] = f->clone();
     return *this;
@@ -80,7 +81,6 @@ class ParticleSet {
     mass.push_back(particle_mass);
     volume0.push_back(particle_volume);
     F.push_back(MatU<Dim>::Identity());
-    L.push_back(MatU<Dim>::Zero());
     stress.push_back(SymTensor<Dim>{});
     id.push_back(static_cast<std::uint32_t>(id.size()));
     for (auto& [name, f] : extra_) f->resize(x.size());
@@ -119,7 +119,6 @@ class ParticleSet {
     detail::gather_vector(mass, order);
     detail::gather_vector(volume0, order);
     detail::gather_vector(F, order);
-    detail::gather_vector(L, order);
     detail::gather_vector(stress, order);
     detail::gather_vector(id, order);
     for (auto& [name, f] : extra_) f->gather(order);
@@ -127,7 +126,7 @@ class ParticleSet {
 
   /// State bytes per particle: the core fields plus the on-demand fields this scene allocated.
   std::size_t bytes_per_particle() const {
-    std::size_t b = 2 * sizeof(VecU<Dim>) + 2 * sizeof(Real) + 2 * sizeof(MatU<Dim>) +
+    std::size_t b = 2 * sizeof(VecU<Dim>) + 2 * sizeof(Real) + sizeof(MatU<Dim>) +
                     sizeof(SymTensor<Dim>) + sizeof(std::uint32_t);
     for (const auto& [name, f] : extra_) b += f->bytes_per_particle();
     return b;

@@ -32,32 +32,44 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
   ctx.hooks.grid_velocity(ctx, GridStage::updated);
 }
 
-/// Grid-to-particle transfer fused with the constitutive update, block by block: `transfer(p, begin,
-/// end)` updates the kinematics of a block of particles and the body's material updates the stress of
-/// the same block while it is in cache. When a module must run between the two (phase_after_g2p), all
-/// transfers run first, then the hooks, then the stress update. Gathers the CFL bound either way.
+/// Grid-to-particle transfer fused with the constitutive update, block by block:
+/// `transfer(body, begin, end, L)` updates the kinematics of a block of particles and writes their
+/// velocity gradients to L[0 .. end-begin); the body's material then updates the stress of the same block
+/// while it is in cache. L lives in a per-thread block buffer, so it costs no per-particle memory; it is
+/// copied to the on-demand particle field "velocity_gradient" only when that field exists (output).
+/// When a module must run between the transfer and the stress update (phase_after_g2p), the gradients of
+/// all particles are kept in the body's scratch array and the stress update runs after the hooks.
 template <int Dim, class Transfer>
 void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
   constexpr Index block = 1024;
   const bool fused = !ctx.hooks.has_after_g2p();
   ctx.wave_speed = {};
+  auto merge = [](WaveSpeedBound<Dim> a, const WaveSpeedBound<Dim>& b) {
+    a.merge(b);
+    return a;
+  };
   for (auto& body : ctx.bodies) {
     auto& p = body.particles;
     auto& material = *body.material;
+    MatU<Dim>* stored = p.has_field("velocity_gradient")
+                            ? p.template field<MatU<Dim>>("velocity_gradient").data()
+                            : nullptr;
+    if (!fused) body.velocity_gradient.resize(p.size());
     const auto bound = tbb::parallel_reduce(
         tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},
         [&](const tbb::blocked_range<Index>& r, WaveSpeedBound<Dim> b) {
+          thread_local std::vector<MatU<Dim>> buffer;
+          buffer.resize(block);
           for (Index begin = r.begin(); begin < r.end(); begin += block) {
             const Index end = std::min(begin + block, r.end());
-            if (!transfer(body, begin, end)) ctx.guard_tripped = true;
-            if (fused) b.merge(material.update_stress(p, begin, end, ctx.dt));
+            MatU<Dim>* L = fused ? buffer.data() : body.velocity_gradient.data() + begin;
+            if (!transfer(body, begin, end, L)) ctx.guard_tripped = true;
+            if (stored) std::copy(L, L + (end - begin), stored + begin);
+            if (fused) b.merge(material.update_stress(p, begin, end, L, ctx.dt));
           }
           return b;
         },
-        [](WaveSpeedBound<Dim> a, const WaveSpeedBound<Dim>& b) {
-          a.merge(b);
-          return a;
-        });
+        merge);
     ctx.wave_speed.merge(bound);
   }
   if (!fused) {
@@ -67,13 +79,11 @@ void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
       const auto bound = tbb::parallel_reduce(
           tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},
           [&](const tbb::blocked_range<Index>& r, WaveSpeedBound<Dim> b) {
-            b.merge(body.material->update_stress(p, r.begin(), r.end(), ctx.dt));
+            b.merge(body.material->update_stress(p, r.begin(), r.end(), body.velocity_gradient.data() + r.begin(),
+                                                 ctx.dt));
             return b;
           },
-          [](WaveSpeedBound<Dim> a, const WaveSpeedBound<Dim>& b) {
-            a.merge(b);
-            return a;
-          });
+          merge);
       ctx.wave_speed.merge(bound);
     }
   }

@@ -23,8 +23,8 @@ class Musl final : public Scheme<Dim> {
     clear_momentum(ctx.grid);
     for (auto& body : ctx.bodies) update_velocity_and_remap(body, ctx);
     remapped_velocity(ctx);
-    kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end) {
-      return update_position_and_deformation(body, ctx, begin, end);
+    kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) {
+      return update_position_and_deformation(body, ctx, begin, end, L);
     });
   }
 
@@ -80,8 +80,9 @@ class Musl final : public Scheme<Dim> {
   }
 
   /// x_p += dt sum phi v~_I (Alg. 2); L_p = sum v_I^{t+dt} (x) grad phi at the old positions; F update.
+  /// Writes the velocity gradient of particle i to L_out[i - begin].
   static bool update_position_and_deformation(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin,
-                                              Index end) {
+                                              Index end, MatU<Dim>* L_out) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const Vec<Dim> upper = g.upper();
@@ -99,7 +100,7 @@ class Musl final : public Scheme<Dim> {
         for (int c = 0; c < Dim; ++c) L.col(c) += nv.mapped * st.grad[a][c];
       }
       p.x[i] += dt * v_move;
-      p.L[i] = L;
+      L_out[i - begin] = L;
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
             std::isfinite(p.v[i].sum());
     }

@@ -18,15 +18,17 @@ class Usl final : public Scheme<Dim> {
 
   void advance(StepContext<Dim>& ctx) override {
     kernels::map_and_update_grid<Dim, Shape>(ctx);
-    kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end) {
-      return grid_to_particles(body, ctx, begin, end);
+    kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) {
+      return grid_to_particles(body, ctx, begin, end, L);
     });
   }
 
  private:
   /// G2P: v_p = alpha (v_p + sum phi (v_I^{t+dt} - v_I^t)) + (1 - alpha) sum phi v_I^{t+dt};
   /// x_p += dt sum phi v_I^{t+dt}; L_p = sum v_I^{t+dt} (x) grad phi (old positions); F update.
-  static bool grid_to_particles(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin, Index end) {
+  /// Writes the velocity gradient of particle i to L_out[i - begin].
+  static bool grid_to_particles(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin, Index end,
+                                MatU<Dim>* L_out) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const Vec<Dim> upper = g.upper();
@@ -47,7 +49,7 @@ class Usl final : public Scheme<Dim> {
       }
       p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
       p.x[i] += dt * v_pic;
-      p.L[i] = L;
+      L_out[i - begin] = L;
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
             std::isfinite(p.v[i].sum());
     }
