@@ -36,19 +36,19 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 struct Case {
-  std::string name;   ///< e.g. 2d_linear_usl
+  std::string name;  ///< e.g. 2d_linear_usl
   int dim;
-  std::string shape;  ///< "linear" or "cubic_bspline" (the scene-file names)
-  std::string scheme; ///< "usl" or "musl"
+  std::string shape;   ///< "linear" or "cubic_bspline" (the scene-file names)
+  std::string scheme;  ///< "usl" or "musl"
 };
 
 struct Options {
   bool quick = false;
-  std::optional<long> steps;         ///< fixed number of timed steps (else calibrated)
-  std::vector<std::string> cases;    ///< empty: all
+  std::optional<long> steps;       ///< fixed number of timed steps (else calibrated)
+  std::vector<std::string> cases;  ///< empty: all
   std::vector<int> threads{1, 2};
   std::string csv;
-  double target_seconds = 3.0;       ///< wall time aimed at per timed run when steps are calibrated
+  double target_seconds = 3.0;  ///< wall time aimed at per timed run when steps are calibrated
 };
 
 struct Row {
@@ -60,8 +60,8 @@ struct Row {
   long steps = 0;
   double wall = 0, rate = 0;
   std::optional<double> speedup;  ///< against the 1-thread run of the same case, if there is one
-  std::size_t bytes_state = 0;  ///< particle state bytes per particle
-  double bytes_grid = 0;        ///< grid node records per particle
+  std::size_t bytes_state = 0;    ///< particle state bytes per particle
+  double bytes_grid = 0;          ///< grid node records per particle
 };
 
 std::vector<Case> all_cases() {
@@ -204,7 +204,8 @@ void usage(std::ostream& os) {
   os << "usage: bench_throughput [--quick] [--steps N] [--case NAME[,NAME...]] [--threads 1,2] [--seconds S] "
         "[--csv FILE]\n"
         "  --quick      blocks of about 2.5e5 particles and ~0.5 s per timed run (smoke run)\n"
-        "  --steps N    time exactly N steps per run (default: set by a 2-step probe after the warm-up to last ~--seconds)\n"
+        "  --steps N    time exactly N steps per run (default: set by a 2-step probe after the warm-up to last "
+        "~--seconds)\n"
         "  --seconds S  wall time aimed at per timed run when calibrating (default 3, quick 0.5)\n"
         "  --case NAME  run only these cases; NAME is e.g. 2d_linear_usl, 3d_cubic_bspline_musl\n"
         "  --threads L  comma-separated thread counts (tbb::global_control max_allowed_parallelism)\n"
@@ -274,8 +275,8 @@ void write_csv(const std::vector<Row>& rows, const std::string& file) {
   f << "case,dim,shape,scheme,threads,particles,grid_nodes,steps,wall_seconds,particle_updates_per_second,"
        "speedup_vs_1_thread,state_bytes_per_particle,grid_bytes_per_particle\n";
   for (const auto& r : rows)
-    fmt::print(f, "{},{},{},{},{},{},{},{},{:.6f},{:.6e},{},{},{:.3f}\n", r.name, r.dim, r.shape, r.scheme,
-               r.threads, r.particles, r.nodes, r.steps, r.wall, r.rate,
+    fmt::print(f, "{},{},{},{},{},{},{},{},{:.6f},{:.6e},{},{},{:.3f}\n", r.name, r.dim, r.shape, r.scheme, r.threads,
+               r.particles, r.nodes, r.steps, r.wall, r.rate,
                r.speedup ? fmt::format("{:.4f}", *r.speedup) : std::string(), r.bytes_state, r.bytes_grid);
   if (!f) throw std::runtime_error("error writing " + file);
 }

@@ -8,7 +8,7 @@ case "$mode" in example|test) ;; *) echo "usage: bash scripts/setup.sh [example|
 cd "$(dirname "$0")/.."
 
 # Every Debian package the project needs: build tools, libraries, and the Python used for plots.
-packages=(cmake g++ make pkg-config
+packages=(cmake g++ make pkg-config git clang-format
           libeigen3-dev libtbb-dev libyaml-cpp-dev libvtk9-dev libcgal-dev libgtest-dev libgmock-dev
           libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev
           python3 python3-numpy python3-matplotlib python3-vtk9)

@@ -19,8 +19,9 @@ template <int Dim>
 void check(const SceneDescription& scene, std::ostream& out) {
   auto sim = build_simulation<Dim>(scene);
   const Real dt = sim->next_time_step();
-  fmt::print(out, "{}: valid. {}D, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
-                  "(stable bound {:.6g} s); about {} steps to t = {:.6g} s\n",
+  fmt::print(out,
+             "{}: valid. {}D, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
+             "(stable bound {:.6g} s); about {} steps to t = {:.6g} s\n",
              scene.file, Dim, sim->particle_count(), sim->bodies().size(), sim->grid().size(), scene.solver.scheme,
              scene.solver.shape_function, dt, sim->stable_time_step(),
              static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
@@ -33,7 +34,8 @@ RunSummary run(const SceneDescription& scene, const RunOptions& options, std::os
   OutputWriter<Dim> writer(options.output_directory.value_or(o.directory), o.prefix, o.fields, o.grid, o.interval);
   RunSummary summary;
   summary.particles = static_cast<std::size_t>(sim->particle_count());
-  for (const auto& b : sim->bodies()) summary.bytes_per_particle = std::max(summary.bytes_per_particle, b.particles.bytes_per_particle());
+  for (const auto& b : sim->bodies())
+    summary.bytes_per_particle = std::max(summary.bytes_per_particle, b.particles.bytes_per_particle());
   const Real e0 = sim->energy().total();
   writer.write_if_due(*sim);
 
@@ -79,17 +81,23 @@ RunSummary run(const SceneDescription& scene, const RunOptions& options, std::os
 
 void check_scene(const SceneDescription& scene, std::ostream& out) {
   switch (scene.dimension) {
-    case 1: return check<1>(scene, out);
-    case 2: return check<2>(scene, out);
-    default: return check<3>(scene, out);
+    case 1:
+      return check<1>(scene, out);
+    case 2:
+      return check<2>(scene, out);
+    default:
+      return check<3>(scene, out);
   }
 }
 
 RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& log) {
   switch (scene.dimension) {
-    case 1: return run<1>(scene, options, log);
-    case 2: return run<2>(scene, options, log);
-    default: return run<3>(scene, options, log);
+    case 1:
+      return run<1>(scene, options, log);
+    case 2:
+      return run<2>(scene, options, log);
+    default:
+      return run<3>(scene, options, log);
   }
 }
 

@@ -17,16 +17,20 @@ struct Expression::Impl {
   bool constant = false;
   double constant_value = 0;
 
-  Impl(const std::string& text_, const std::vector<std::string>& variables_)
-      : text(text_), variables(variables_) {
+  Impl(const std::string& text_, const std::vector<std::string>& variables_) : text(text_), variables(variables_) {
     try {
       for (const auto& name : variables) {
-        if (name == "x") parser.DefineVar("x", &x);
-        else if (name == "y") parser.DefineVar("y", &y);
-        else if (name == "z") parser.DefineVar("z", &z);
-        else if (name == "t") parser.DefineVar("t", &t);
-        else throw std::invalid_argument("unsupported expression variable '" + name +
-                                         "' (only x, y, z and t are available)");
+        if (name == "x")
+          parser.DefineVar("x", &x);
+        else if (name == "y")
+          parser.DefineVar("y", &y);
+        else if (name == "z")
+          parser.DefineVar("z", &z);
+        else if (name == "t")
+          parser.DefineVar("t", &t);
+        else
+          throw std::invalid_argument("unsupported expression variable '" + name +
+                                      "' (only x, y, z and t are available)");
       }
       // muparser's own _pi and _e carry only 12 digits; use the full double values.
       parser.DefineConst("_pi", std::numbers::pi);
@@ -35,8 +39,7 @@ struct Expression::Impl {
       // muparser parses lazily: evaluate once so that syntax errors surface here, not mid-run.
       constant_value = parser.Eval();
       if (parser.GetNumResults() != 1)
-        throw std::invalid_argument("expression \"" + text + "\" gives " +
-                                    std::to_string(parser.GetNumResults()) +
+        throw std::invalid_argument("expression \"" + text + "\" gives " + std::to_string(parser.GetNumResults()) +
                                     " comma-separated values, expected one");
       constant = parser.GetUsedVar().empty();
     } catch (const mu::Parser::exception_type& e) {

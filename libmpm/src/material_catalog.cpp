@@ -17,11 +17,9 @@ std::vector<ParameterSpec> elastic_parameters() {
 
 std::vector<MaterialModelSpec>& catalog() {
   static std::vector<MaterialModelSpec> models = {
-      {"linear_elastic",
-       "Isotropic linear elasticity, incremental (hypoelastic) form B.5 with the Jaumann rate",
+      {"linear_elastic", "Isotropic linear elasticity, incremental (hypoelastic) form B.5 with the Jaumann rate",
        elastic_parameters()},
-      {"neo_hookean", "Compressible Neo-Hookean hyperelasticity, eq. B.6-B.7 (Bonet & Wood)",
-       elastic_parameters()},
+      {"neo_hookean", "Compressible Neo-Hookean hyperelasticity, eq. B.6-B.7 (Bonet & Wood)", elastic_parameters()},
   };
   return models;
 }

@@ -8,8 +8,8 @@
 namespace mpm {
 
 std::vector<std::string> output_field_names() {
-  return {"velocity", "displacement", "stress", "deformation_gradient", "mass", "volume", "density",
-          "body", "velocity_gradient", "pressure", "von_mises_stress"};
+  return {"velocity", "displacement",      "stress",   "deformation_gradient", "mass", "volume", "density",
+          "body",     "velocity_gradient", "pressure", "von_mises_stress"};
 }
 
 namespace {

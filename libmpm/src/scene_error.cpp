@@ -10,8 +10,7 @@ SceneError::SceneError(SourceLocation where_, std::string key_, std::string mess
       key(std::move(key_)),
       message(std::move(message_)) {}
 
-std::string SceneError::format(const SourceLocation& where, const std::string& key,
-                               const std::string& message) {
+std::string SceneError::format(const SourceLocation& where, const std::string& key, const std::string& message) {
   std::string text = where.file;
   if (where.line > 0) {
     text += ':' + std::to_string(where.line) + ':' + std::to_string(where.column > 0 ? where.column : 1);

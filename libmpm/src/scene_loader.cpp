@@ -28,8 +28,8 @@ namespace {
 constexpr const char* axis_names[3] = {"x", "y", "z"};
 constexpr const char* face_names[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
 const std::vector<std::string> output_fields = {
-    "velocity", "displacement",       "stress",   "deformation_gradient", "mass",           "volume",
-    "density",  "body",               "velocity_gradient", "pressure",    "von_mises_stress"};
+    "velocity", "displacement",      "stress",   "deformation_gradient", "mass", "volume", "density",
+    "body",     "velocity_gradient", "pressure", "von_mises_stress"};
 /// Relative tolerance of "extent / cell_size is an integer" and of "the body lies inside the grid".
 constexpr double geometric_tolerance = 1e-9;
 
@@ -71,8 +71,8 @@ struct Range {
   std::string describe(std::string_view unit) const {
     const bool has_lower = std::isfinite(lower), has_upper = std::isfinite(upper);
     if (has_lower && has_upper)
-      return fmt::format("in {}{}, {}{}{}", lower_inclusive ? '[' : '(', lower, upper,
-                         upper_inclusive ? ']' : ')', unit_suffix(unit));
+      return fmt::format("in {}{}, {}{}{}", lower_inclusive ? '[' : '(', lower, upper, upper_inclusive ? ']' : ')',
+                         unit_suffix(unit));
     if (has_lower) return fmt::format("{} {}{}", lower_inclusive ? ">=" : ">", lower, unit_suffix(unit));
     if (has_upper) return fmt::format("{} {}{}", upper_inclusive ? "<=" : "<", upper, unit_suffix(unit));
     return "finite";
@@ -100,10 +100,14 @@ YAML::Mark mark_of(const YAML::Node& node, const YAML::Mark& fallback) {
 /// What a node is, for "expected X, got Y" messages.
 std::string describe(const YAML::Node& node) {
   switch (node.Type()) {
-    case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
-    case YAML::NodeType::Sequence: return "a list";
-    case YAML::NodeType::Map: return "a map";
-    default: return "nothing";
+    case YAML::NodeType::Scalar:
+      return "'" + node.Scalar() + "'";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a map";
+    default:
+      return "nothing";
   }
 }
 
@@ -312,8 +316,7 @@ void read_boundary(const Reader& r, const Value& v, int dimension, GridDescripti
     if (e.value.node.IsMap()) {
       const MapReader condition = r.map(e.value);
       condition.allow({"velocity"});
-      const auto components = r.list(condition.required("velocity"), dimension,
-                                     "components");
+      const auto components = r.list(condition.required("velocity"), dimension, "components");
       for (int d = 0; d < dimension; ++d) {
         if (components[d].node.IsScalar() && components[d].node.Scalar() == "free") continue;
         boundary.component[d] = r.expression(components[d], {"t"});
@@ -363,8 +366,8 @@ MaterialDescription read_material(const Reader& r, const MapReader::Entry& entry
   material.model = r.string(model);
   const MaterialModelSpec* spec = find_material_model(material.model);
   if (!spec)
-    r.fail(model, fmt::format("unknown material model '{}'; valid models: {}", material.model,
-                              join(material_model_names())));
+    r.fail(model,
+           fmt::format("unknown material model '{}'; valid models: {}", material.model, join(material_model_names())));
   std::vector<std::string> keys{"model"};
   for (const auto& p : spec->parameters) keys.push_back(p.name);
   m.allow(keys, "parameter", " for model " + material.model);
@@ -392,8 +395,7 @@ std::map<std::string, MaterialDescription> read_materials(const Reader& r, const
 }
 
 /// Shape types per dimension (index 1..3).
-const std::vector<std::string> shape_types[4] = {
-    {}, {"box"}, {"box", "disk"}, {"box", "sphere", "cylinder"}};
+const std::vector<std::string> shape_types[4] = {{}, {"box"}, {"box", "disk"}, {"box", "sphere", "cylinder"}};
 
 ShapeDescription read_shape(const Reader& r, const Value& v, int dimension) {
   const MapReader m = r.map(v);
@@ -403,9 +405,9 @@ ShapeDescription read_shape(const Reader& r, const Value& v, int dimension) {
   const auto& valid = shape_types[dimension];
   if (!contains(valid, shape.type)) {
     const bool elsewhere = shape.type == "disk" || shape.type == "sphere" || shape.type == "cylinder";
-    r.fail(type, fmt::format("{} '{}'{}; valid types in {}D: {}", elsewhere ? "shape type" : "unknown shape type",
-                             shape.type, elsewhere ? fmt::format(" is not available in {}D", dimension) : "",
-                             dimension, join(valid)));
+    r.fail(type,
+           fmt::format("{} '{}'{}; valid types in {}D: {}", elsewhere ? "shape type" : "unknown shape type", shape.type,
+                       elsewhere ? fmt::format(" is not available in {}D", dimension) : "", dimension, join(valid)));
   }
   if (shape.type == "box") {
     m.allow({"type", "min", "max"});
@@ -414,8 +416,8 @@ ShapeDescription read_shape(const Reader& r, const Value& v, int dimension) {
     shape.max = r.vector(max, dimension, any_number, "m");
     for (int d = 0; d < dimension; ++d)
       if (!(shape.min[d] < shape.max[d]))
-        r.fail(max, fmt::format("max must exceed min on every axis; on axis {}: min {} m, max {} m",
-                                axis_names[d], shape.min[d], shape.max[d]));
+        r.fail(max, fmt::format("max must exceed min on every axis; on axis {}: min {} m, max {} m", axis_names[d],
+                                shape.min[d], shape.max[d]));
   } else if (shape.type == "cylinder") {
     m.allow({"type", "center", "radius", "axis", "length"});
     shape.center = r.vector(m.required("center"), dimension, any_number, "m");

@@ -102,7 +102,8 @@ TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
     std::getline(in, line_line);
     ASSERT_EQ(expect_line.rfind("# expect: ", 0), 0u) << file;
     const std::string expect = expect_line.substr(10);
-    const std::string location = file.string() + ":" + (line_line.rfind("# line: ", 0) == 0 ? line_line.substr(8) + ":" : "");
+    const std::string location =
+        file.string() + ":" + (line_line.rfind("# line: ", 0) == 0 ? line_line.substr(8) + ":" : "");
     const auto dir = scratch("bad");
     for (const std::string command : {"check", "run"}) {
       const fs::path out = dir / "out";
@@ -125,8 +126,11 @@ std::string block_scene(const std::string& solver, const std::string& velocity) 
          "grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}\n"
          "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e4, poisson_ratio: 0.3}}\n"
          "bodies: [{name: block, material: m, shape: {type: box, min: [0.3, 0.3], max: [0.6, 0.6]}, velocity: " +
-         velocity + "}]\n"
-         "solver: {" + solver + "}\n"
+         velocity +
+         "}]\n"
+         "solver: {" +
+         solver +
+         "}\n"
          "output: {interval: 0.05, fields: [velocity, stress, displacement, von_mises_stress]}\n";
 }
 

@@ -85,7 +85,8 @@ TEST(Materials, NeoHookeanStressMatchesClosedForm) {
   const MatU<3> zero = MatU<3>::Zero();
   m.update_stress(p, 0, 1, &zero, 1e-3);
   const Real J = F.determinant();
-  const Mat3 expected = (steel.mu * (F * F.transpose() - Mat3::Identity()) + steel.lambda * std::log(J) * Mat3::Identity()) / J;
+  const Mat3 expected =
+      (steel.mu * (F * F.transpose() - Mat3::Identity()) + steel.lambda * std::log(J) * Mat3::Identity()) / J;
   EXPECT_LT((p.stress[0].full() - expected).norm(), 1e-12 * expected.norm());
   // Stored energy W(F) (Bonet & Wood) times the reference volume 1.
   const Real W = 0.5 * steel.mu * ((F.transpose() * F).trace() - 3) - steel.mu * std::log(J) +

@@ -64,16 +64,14 @@ TEST_P(SceneLoaderBadScene, ReportsMessageAndLine) {
     EXPECT_NE(what.find(scene.expect), std::string::npos) << "message: " << what;
     EXPECT_EQ(e.where.line, scene.line) << "message: " << what;
     EXPECT_GT(e.where.column, 0) << "message: " << what;
-    const std::string prefix = scene.file.string() + ":" + std::to_string(e.where.line) + ":" +
-                               std::to_string(e.where.column) + ": ";
+    const std::string prefix =
+        scene.file.string() + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column) + ": ";
     EXPECT_EQ(what.rfind(prefix, 0), 0u) << "message: " << what;
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(SceneLoader, SceneLoaderBadScene, testing::ValuesIn(bad_scenes()),
-                         [](const testing::TestParamInfo<BadScene>& info) {
-                           return info.param.file.stem().string();
-                         });
+                         [](const testing::TestParamInfo<BadScene>& info) { return info.param.file.stem().string(); });
 
 TEST(SceneLoader, HasBadSceneFixtures) { EXPECT_GE(bad_scenes().size(), 50u); }
 
@@ -330,7 +328,8 @@ grid: {origin: [1], extent: [2], cell_size: 0.5, boundary: {x_min: fixed, x_max:
 materials: {bar: {model: linear_elastic, density: 1, youngs_modulus: 1, poisson_ratio: 0}}
 bodies: [{material: bar, shape: {type: box, min: [1], max: [3]}, velocity: ["x - 1"]}]
 solver: {cfl: 1, end_time: 1, gravity: [-1]}
-)", "one.yaml");
+)",
+                                  "one.yaml");
   EXPECT_EQ(s.grid.origin, (std::array<double, 3>{1, 0, 0}));
   EXPECT_EQ(s.grid.extent, (std::array<double, 3>{2, 0, 0}));
   EXPECT_EQ(s.grid.cell_size, (std::array<double, 3>{0.5, 0, 0}));
@@ -358,8 +357,8 @@ TEST(SceneLoader, BodyTouchingTheGridBoundaryIsInside) {
 }
 
 TEST(SceneLoader, VelocityNumbersBecomeExpressionText) {
-  const auto s = mpm::parse_scene(
-      replaced(valid_2d, "radius: 0.2}", "radius: 0.2}\n    velocity: [1.0e6, -0.50]"), "v.yaml");
+  const auto s =
+      mpm::parse_scene(replaced(valid_2d, "radius: 0.2}", "radius: 0.2}\n    velocity: [1.0e6, -0.50]"), "v.yaml");
   EXPECT_EQ(s.bodies[0].velocity[0], "1000000");
   EXPECT_EQ(s.bodies[0].velocity[1], "-0.5");
   EXPECT_DOUBLE_EQ(mpm::Expression(s.bodies[0].velocity[0])(0, 0, 0, 0), 1.0e6);
@@ -402,8 +401,7 @@ TEST(Expression, DependsOnPosition) {
 TEST(Expression, DependsOnTime) {
   const mpm::Expression e("0.1*sin(t) + cos(2*t)", {"t"});
   EXPECT_FALSE(e.is_constant());
-  for (double t : {0.0, 0.3, 1.7, 10.0})
-    EXPECT_NEAR(e(9, 9, 9, t), 0.1 * std::sin(t) + std::cos(2 * t), 1e-14) << t;
+  for (double t : {0.0, 0.3, 1.7, 10.0}) EXPECT_NEAR(e(9, 9, 9, t), 0.1 * std::sin(t) + std::cos(2 * t), 1e-14) << t;
 }
 
 TEST(Expression, RepeatedEvaluation) {

@@ -17,7 +17,8 @@ std::string block_scene(const std::string& solver) {
          "bodies:\n"
          "  - {material: m, shape: {type: box, min: [0.2, 0.0], max: [0.8, 0.5]}, particles_per_cell: 2,\n"
          "     velocity: [\"0.2*sin(5*y)\", \"-0.1*x\"]}\n"
-         "solver: {" + solver + "}\n";
+         "solver: {" +
+         solver + "}\n";
 }
 
 template <int Dim>
@@ -172,7 +173,8 @@ TEST(Simulation, VelocityGradientOutputOnDemand) {
       "dimension: 2\n"
       "grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.1}\n"
       "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e5, poisson_ratio: 0.3}}\n"
-      "bodies: [{material: m, shape: {type: box, min: [0.2, 0.2], max: [0.8, 0.8]}, velocity: [\"0.1*x\", \"-0.05*y\"]}]\n"
+      "bodies: [{material: m, shape: {type: box, min: [0.2, 0.2], max: [0.8, 0.8]}, velocity: [\"0.1*x\", "
+      "\"-0.05*y\"]}]\n"
       "solver: {scheme: musl, flip_fraction: 1, dt: 1.0e-6, end_time: 1}\n"
       "output: {fields: [velocity_gradient]}\n";
   auto sim = test::simulation_from_yaml<2>(scene);

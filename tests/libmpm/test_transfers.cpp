@@ -62,8 +62,11 @@ std::string free_disk(const std::string& scheme, const std::string& shape, doubl
          "materials: {m: {model: neo_hookean, density: 1000, youngs_modulus: 1.0e5, poisson_ratio: 0.3}}\n"
          "bodies:\n"
          "  - {material: m, shape: {type: disk, center: [0.5, 0.5], radius: 0.25}, particles_per_cell: 2,\n"
-         "     velocity: [\"" + a + "*0.3*sin(6*y)\", \"" + a + "*(0.2*cos(5*x)+0.1)\"]}\n"
-         "solver: {scheme: " + scheme + ", shape_function: " + shape + ", flip_fraction: " + std::to_string(flip) +
+         "     velocity: [\"" +
+         a + "*0.3*sin(6*y)\", \"" + a +
+         "*(0.2*cos(5*x)+0.1)\"]}\n"
+         "solver: {scheme: " +
+         scheme + ", shape_function: " + shape + ", flip_fraction: " + std::to_string(flip) +
          ", cfl: 0.4, end_time: 0.1}\n";
 }
 

@@ -19,9 +19,9 @@ namespace {
 const std::string examples = std::string(MPM_SOURCE_DIR) + "/examples/";
 
 struct BarResult {
-  double max_error = 0;        ///< max |v_cm - exact| over the first period, m/s
-  double amplitude_end = 0;    ///< |v_cm| at t = 10 (one period: exact value is the amplitude)
-  double energy_change = 0;    ///< relative, over the whole run
+  double max_error = 0;      ///< max |v_cm - exact| over the first period, m/s
+  double amplitude_end = 0;  ///< |v_cm| at t = 10 (one period: exact value is the amplitude)
+  double energy_change = 0;  ///< relative, over the whole run
 };
 
 BarResult run_bar(const std::string& scene_file, const std::string& scheme, double flip, double end_time) {
@@ -36,7 +36,8 @@ BarResult run_bar(const std::string& scene_file, const std::string& scheme, doub
   sim->run([&](const Simulation<1>& s) {
     const auto e = s.energy();
     const double vcm = e.momentum[0] / e.mass;
-    if (s.time() <= 10 + 1e-9) r.max_error = std::max(r.max_error, std::abs(vcm - amplitude * std::cos(omega * s.time())));
+    if (s.time() <= 10 + 1e-9)
+      r.max_error = std::max(r.max_error, std::abs(vcm - amplitude * std::cos(omega * s.time())));
     if (std::abs(s.time() - 10) < 0.5 * s.next_time_step()) r.amplitude_end = std::abs(vcm);
   });
   r.energy_change = sim->energy().total() / e0 - 1;
@@ -46,8 +47,9 @@ BarResult run_bar(const std::string& scene_file, const std::string& scheme, doub
 TEST(BarVibration, Mode1CentreOfMassVelocityFlipMusl) {
   const double amplitude = 0.0636620;  // v0/(beta_1 L) = 0.2/pi
   const BarResult r = run_bar(examples + "01_bar_vibration/mode1.yaml", "musl", 1.0, 10);
-  std::printf("[ measured ] bar mode 1, MUSL FLIP: max |v_cm - exact| = %.4e (%.3f%% of amplitude), energy change %.3e\n",
-              r.max_error, 100 * r.max_error / amplitude, r.energy_change);
+  std::printf(
+      "[ measured ] bar mode 1, MUSL FLIP: max |v_cm - exact| = %.4e (%.3f%% of amplitude), energy change %.3e\n",
+      r.max_error, 100 * r.max_error / amplitude, r.energy_change);
   EXPECT_LT(r.max_error, 0.012 * amplitude);  // measured 0.93%: 16 cells, 2 PPC (period error of the grid)
   EXPECT_NEAR(r.amplitude_end, amplitude, 0.01 * amplitude);
   EXPECT_LT(std::abs(r.energy_change), 1e-3);
@@ -65,8 +67,8 @@ TEST(BarVibration, Mode1PicDissipates) {
   const double amplitude = 0.0636620;
   const BarResult flip = run_bar(examples + "01_bar_vibration/mode1.yaml", "musl", 1.0, 10);
   const BarResult pic = run_bar(examples + "01_bar_vibration/mode1.yaml", "musl", 0.0, 10);
-  std::printf("[ measured ] bar mode 1 after one period: |v_cm| FLIP %.5f, PIC %.5f (exact %.5f)\n",
-              flip.amplitude_end, pic.amplitude_end, amplitude);
+  std::printf("[ measured ] bar mode 1 after one period: |v_cm| FLIP %.5f, PIC %.5f (exact %.5f)\n", flip.amplitude_end,
+              pic.amplitude_end, amplitude);
   EXPECT_LT(pic.amplitude_end, 0.9 * amplitude);  // PIC loses more than 10% in one period
   EXPECT_LT(pic.energy_change, -0.1);
 }
@@ -94,8 +96,10 @@ TEST(TwoDisks, MuslEnergyAndContactTime) {
     worst = std::max(worst, std::abs(e.total() / e0.total() - 1));
   });
   const double final_change = sim->energy().total() / e0.total() - 1;
-  std::printf("[ measured ] two disks MUSL: contact (kinetic energy down 0.1%%) at t = %.3f s; total energy: worst "
-              "%.3e, final %.3e\n", contact, worst, final_change);
+  std::printf(
+      "[ measured ] two disks MUSL: contact (kinetic energy down 0.1%%) at t = %.3f s; total energy: worst "
+      "%.3e, final %.3e\n",
+      contact, worst, final_change);
   EXPECT_NEAR(contact, 1.25, 0.1);           // paper: about 1.3 s; exact bodies: 1.5858 s
   EXPECT_LT(std::abs(final_change), 0.005);  // measured -0.27% after rebound and separation
   EXPECT_LT(worst, 0.085);                   // measured 7.5% during the impact (lumped-mass dissipation)

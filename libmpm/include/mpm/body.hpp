@@ -13,10 +13,10 @@ namespace mpm {
 template <int Dim>
 struct Body {
   std::string name;
-  int index = 0;                             ///< position in the scene's body list (output field `body`)
+  int index = 0;  ///< position in the scene's body list (output field `body`)
   ParticleSet<Dim> particles;
-  std::shared_ptr<Material<Dim>> material;   ///< stateless: shared by snapshots
-  SlabBins bins;                             ///< rebuilt every step by the scheme
+  std::shared_ptr<Material<Dim>> material;  ///< stateless: shared by snapshots
+  SlabBins bins;                            ///< rebuilt every step by the scheme
   /// Scratch: velocity gradients of all particles, used only when a module runs between the
   /// grid-to-particle transfer and the stress update (otherwise a per-block buffer is enough).
   std::vector<MatU<Dim>> velocity_gradient;

@@ -16,14 +16,14 @@ namespace mpm {
 /// operators (+ - * / ^, comparisons, `?:`) and constants (_pi, _e) are available.
 ///
 /// Copying re-parses the text (muparser binds variable addresses, which live inside the object);
-/// moving is cheap (a moved-from Expression may only be assigned to or destroyed). Evaluation writes the variables into the object, so one Expression must not be
-/// evaluated from several threads at the same time: give each thread its own copy.
+/// moving is cheap (a moved-from Expression may only be assigned to or destroyed). Evaluation writes the variables into
+/// the object, so one Expression must not be evaluated from several threads at the same time: give each thread its own
+/// copy.
 class Expression {
  public:
   /// Parses `text`. Throws std::invalid_argument (with muparser's message) on a syntax error, on a
   /// variable that is not in `variables`, or on a `variables` entry other than x, y, z, t.
-  explicit Expression(const std::string& text,
-                      const std::vector<std::string>& variables = {"x", "y", "z", "t"});
+  explicit Expression(const std::string& text, const std::vector<std::string>& variables = {"x", "y", "z", "t"});
   Expression(const Expression& other);
   Expression(Expression&& other) noexcept;
   Expression& operator=(const Expression& other);

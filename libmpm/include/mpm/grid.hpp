@@ -21,11 +21,11 @@ using MatU = Eigen::Matrix<Real, Dim, Dim, Eigen::DontAlign>;
 /// Geometry of the grid: everything the shape functions need, nothing else.
 template <int Dim>
 struct GridGeometry {
-  Vec<Dim> origin = Vec<Dim>::Zero();   ///< m, position of node 0
-  Vec<Dim> h = Vec<Dim>::Ones();        ///< m, cell size per axis
-  Vec<Dim> inv_h = Vec<Dim>::Ones();    ///< 1/m
-  std::array<int, Dim> nodes{};         ///< nodes per axis (cells + 1)
-  std::array<Index, Dim> stride{};      ///< linear-index stride per axis
+  Vec<Dim> origin = Vec<Dim>::Zero();  ///< m, position of node 0
+  Vec<Dim> h = Vec<Dim>::Ones();       ///< m, cell size per axis
+  Vec<Dim> inv_h = Vec<Dim>::Ones();   ///< 1/m
+  std::array<int, Dim> nodes{};        ///< nodes per axis (cells + 1)
+  std::array<Index, Dim> stride{};     ///< linear-index stride per axis
 
   GridGeometry() = default;
   GridGeometry(const Vec<Dim>& origin_, const Vec<Dim>& h_, const std::array<int, Dim>& cells)
@@ -91,11 +91,10 @@ struct NodeVelocity {
 template <int Dim>
 struct Grid {
   GridGeometry<Dim> geometry;
-  std::vector<NodeRecord<Dim>> node;          ///< mass (kg), momentum (kg m/s), force (N)
-  std::vector<NodeVelocity<Dim>> velocity;    ///< m/s
+  std::vector<NodeRecord<Dim>> node;        ///< mass (kg), momentum (kg m/s), force (N)
+  std::vector<NodeVelocity<Dim>> velocity;  ///< m/s
 
-  explicit Grid(const GridGeometry<Dim>& g = {})
-      : geometry(g), node(g.node_count()), velocity(g.node_count()) {}
+  explicit Grid(const GridGeometry<Dim>& g = {}) : geometry(g), node(g.node_count()), velocity(g.node_count()) {}
   Index size() const { return static_cast<Index>(node.size()); }
 };
 

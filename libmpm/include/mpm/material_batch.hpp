@@ -30,8 +30,7 @@ class MaterialBatch final : public Material<Dim> {
   Real density() const override { return params_.density; }
   const Params& params() const { return params_; }
 
-  WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L,
-                                    Real dt) override {
+  WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
     bool finite = true;
     Vec<Dim> max_speed = Vec<Dim>::Zero();
     for (Index i = begin; i != end; ++i) {

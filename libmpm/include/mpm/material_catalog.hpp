@@ -14,8 +14,8 @@ namespace mpm {
 
 /// One named parameter of a material model.
 struct ParameterSpec {
-  std::string name;                  ///< YAML key, snake_case, e.g. "youngs_modulus"
-  std::string unit;                  ///< SI unit, e.g. "Pa"
+  std::string name;  ///< YAML key, snake_case, e.g. "youngs_modulus"
+  std::string unit;  ///< SI unit, e.g. "Pa"
   std::string description;
   std::optional<double> default_value;  ///< empty: required
   double lower = -std::numeric_limits<double>::infinity();

@@ -41,9 +41,7 @@ class Module {
   virtual void after_stress(StepContext<Dim>&) {}
   virtual void end_of_step(StepContext<Dim>&) {}
   /// The largest stable time step this module allows (s); infinity when it imposes none.
-  virtual Real stable_time_step(const std::vector<Body<Dim>>&) const {
-    return std::numeric_limits<Real>::infinity();
-  }
+  virtual Real stable_time_step(const std::vector<Body<Dim>>&) const { return std::numeric_limits<Real>::infinity(); }
 };
 
 /// The modules of a run, sorted by phase.
@@ -59,11 +57,21 @@ class ModuleHooks {
     if (p & phase_end_of_step) end_of_step_.push_back(m.get());
     all_.push_back(std::move(m));
   }
-  void after_p2g(StepContext<Dim>& c) { for (auto* m : after_p2g_) m->after_p2g(c); }
-  void grid_velocity(StepContext<Dim>& c, GridStage s) { for (auto* m : grid_velocity_) m->on_grid_velocity(c, s); }
-  void after_g2p(StepContext<Dim>& c) { for (auto* m : after_g2p_) m->after_g2p(c); }
-  void after_stress(StepContext<Dim>& c) { for (auto* m : after_stress_) m->after_stress(c); }
-  void end_of_step(StepContext<Dim>& c) { for (auto* m : end_of_step_) m->end_of_step(c); }
+  void after_p2g(StepContext<Dim>& c) {
+    for (auto* m : after_p2g_) m->after_p2g(c);
+  }
+  void grid_velocity(StepContext<Dim>& c, GridStage s) {
+    for (auto* m : grid_velocity_) m->on_grid_velocity(c, s);
+  }
+  void after_g2p(StepContext<Dim>& c) {
+    for (auto* m : after_g2p_) m->after_g2p(c);
+  }
+  void after_stress(StepContext<Dim>& c) {
+    for (auto* m : after_stress_) m->after_stress(c);
+  }
+  void end_of_step(StepContext<Dim>& c) {
+    for (auto* m : end_of_step_) m->end_of_step(c);
+  }
   bool has_after_g2p() const { return !after_g2p_.empty(); }
   const std::vector<std::shared_ptr<Module<Dim>>>& all() const { return all_; }
 

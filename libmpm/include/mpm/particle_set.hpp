@@ -52,19 +52,25 @@ template <int Dim>
 class ParticleSet {
  public:
   // Core fields (SI units). Volume is not stored: V = volume0 * det(F) (eq. 2.55c).
-  std::vector<VecU<Dim>> x;              ///< position, m
-  std::vector<VecU<Dim>> v;              ///< velocity, m/s
-  std::vector<Real> mass;                ///< kg (kg/m in 2D, kg/m^2 in 1D: per unit out-of-plane size)
-  std::vector<Real> volume0;             ///< reference volume, m^3 (per unit out-of-plane size)
-  std::vector<MatU<Dim>> F;              ///< deformation gradient
-  std::vector<SymTensor<Dim>> stress;    ///< Cauchy stress, Pa
-  std::vector<std::uint32_t> id;         ///< index at creation: stable under reordering
+  std::vector<VecU<Dim>> x;            ///< position, m
+  std::vector<VecU<Dim>> v;            ///< velocity, m/s
+  std::vector<Real> mass;              ///< kg (kg/m in 2D, kg/m^2 in 1D: per unit out-of-plane size)
+  std::vector<Real> volume0;           ///< reference volume, m^3 (per unit out-of-plane size)
+  std::vector<MatU<Dim>> F;            ///< deformation gradient
+  std::vector<SymTensor<Dim>> stress;  ///< Cauchy stress, Pa
+  std::vector<std::uint32_t> id;       ///< index at creation: stable under reordering
 
   ParticleSet() = default;
   ParticleSet(const ParticleSet& o) { *this = o; }
   ParticleSet& operator=(const ParticleSet& o) {
     if (this == &o) return *this;
-    x = o.x; v = o.v; mass = o.mass; volume0 = o.volume0; F = o.F; stress = o.stress; id = o.id;
+    x = o.x;
+    v = o.v;
+    mass = o.mass;
+    volume0 = o.volume0;
+    F = o.F;
+    stress = o.stress;
+    id = o.id;
     extra_.clear();
     for (const auto& [name, f] : o.extra_) extra_[name] = f->clone();
     return *this;
@@ -126,8 +132,8 @@ class ParticleSet {
 
   /// State bytes per particle: the core fields plus the on-demand fields this scene allocated.
   std::size_t bytes_per_particle() const {
-    std::size_t b = 2 * sizeof(VecU<Dim>) + 2 * sizeof(Real) + sizeof(MatU<Dim>) +
-                    sizeof(SymTensor<Dim>) + sizeof(std::uint32_t);
+    std::size_t b =
+        2 * sizeof(VecU<Dim>) + 2 * sizeof(Real) + sizeof(MatU<Dim>) + sizeof(SymTensor<Dim>) + sizeof(std::uint32_t);
     for (const auto& [name, f] : extra_) b += f->bytes_per_particle();
     return b;
   }

@@ -49,12 +49,12 @@ struct MaterialDescription {
 
 /// Primitive shapes a body can be filled from.
 struct ShapeDescription {
-  std::string type;  ///< "box", "disk" (2D), "sphere" (3D), "cylinder" (3D)
+  std::string type;                                  ///< "box", "disk" (2D), "sphere" (3D), "cylinder" (3D)
   std::array<double, 3> min{0, 0, 0}, max{0, 0, 0};  ///< box corners, m
-  std::array<double, 3> center{0, 0, 0};            ///< disk/sphere centre, cylinder base centre, m
-  double radius = 0;                                ///< m
-  int axis = 2;                                     ///< cylinder axis (0 = x, 1 = y, 2 = z)
-  double length = 0;                                ///< cylinder length along its axis, m
+  std::array<double, 3> center{0, 0, 0};             ///< disk/sphere centre, cylinder base centre, m
+  double radius = 0;                                 ///< m
+  int axis = 2;                                      ///< cylinder axis (0 = x, 1 = y, 2 = z)
+  double length = 0;                                 ///< cylinder length along its axis, m
 };
 
 /// A body: a set of particles with one material.
@@ -69,25 +69,25 @@ struct BodyDescription {
 };
 
 struct SolverDescription {
-  std::string scheme = "musl";           ///< "usl" or "musl"
-  std::string shape_function = "linear"; ///< "linear" or "cubic_bspline"
-  double flip_fraction = 1.0;            ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
-  std::optional<double> dt;              ///< s, fixed time step (exclusive with cfl)
-  std::optional<double> cfl;             ///< CFL factor of eq. 2.73, in (0, 1]
-  double end_time = 0;                   ///< s
-  double mass_cutoff = 1e-12;            ///< relative small-nodal-mass cut-off (x max nodal mass)
-  std::array<double, 3> gravity{0, 0, 0};///< m/s^2, body force per unit mass
-  int snapshot_interval = 20;            ///< steps between in-memory snapshots used by the stability guard
-  int sort_interval = 20;                ///< steps between particle reorderings by cell
+  std::string scheme = "musl";             ///< "usl" or "musl"
+  std::string shape_function = "linear";   ///< "linear" or "cubic_bspline"
+  double flip_fraction = 1.0;              ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
+  std::optional<double> dt;                ///< s, fixed time step (exclusive with cfl)
+  std::optional<double> cfl;               ///< CFL factor of eq. 2.73, in (0, 1]
+  double end_time = 0;                     ///< s
+  double mass_cutoff = 1e-12;              ///< relative small-nodal-mass cut-off (x max nodal mass)
+  std::array<double, 3> gravity{0, 0, 0};  ///< m/s^2, body force per unit mass
+  int snapshot_interval = 20;              ///< steps between in-memory snapshots used by the stability guard
+  int sort_interval = 20;                  ///< steps between particle reorderings by cell
   SourceLocation dt_where;
 };
 
 struct OutputDescription {
   std::string directory = "output";
   std::string prefix = "particles";
-  double interval = 0;                   ///< s between output frames (0 = only first and last)
+  double interval = 0;  ///< s between output frames (0 = only first and last)
   std::vector<std::string> fields{"velocity", "stress", "mass", "volume", "body"};
-  bool grid = false;                     ///< also write the grid (.vti) at each frame
+  bool grid = false;  ///< also write the grid (.vti) at each frame
   SourceLocation where;
 };
 

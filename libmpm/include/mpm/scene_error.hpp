@@ -27,8 +27,7 @@ class SceneError : public std::runtime_error {
   std::string message;   ///< the bare message (what() without the `FILE:LINE:COLUMN: KEY: ` prefix)
 
   /// The what() text for these parts.
-  static std::string format(const SourceLocation& where, const std::string& key,
-                            const std::string& message);
+  static std::string format(const SourceLocation& where, const std::string& key, const std::string& message);
 };
 
 }  // namespace mpm

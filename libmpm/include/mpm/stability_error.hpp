@@ -11,12 +11,12 @@
 namespace mpm {
 
 struct StabilityReport {
-  Index step = 0;          ///< the step that failed
-  Real time = 0;           ///< s, at the start of the failing step
-  std::string body;        ///< body name
-  Index particle = -1;     ///< particle id (its index at creation, stable under reordering)
-  std::string field;       ///< "position", "velocity", "deformation_gradient", "stress", ...
-  std::string detail;      ///< the offending value, e.g. "det F = -0.2"
+  Index step = 0;       ///< the step that failed
+  Real time = 0;        ///< s, at the start of the failing step
+  std::string body;     ///< body name
+  Index particle = -1;  ///< particle id (its index at creation, stable under reordering)
+  std::string field;    ///< "position", "velocity", "deformation_gradient", "stress", ...
+  std::string detail;   ///< the offending value, e.g. "det F = -0.2"
 };
 
 class StabilityError : public std::runtime_error {

@@ -16,8 +16,8 @@ class ModuleHooks;
 /// Settings of the transfers that do not change during a run.
 template <int Dim>
 struct TransferSettings {
-  Real flip_fraction = 1;            ///< alpha of eq. 2.53
-  Real mass_cutoff = 0;              ///< kg: nodes lighter than this get zero velocity (eq. 2.63)
+  Real flip_fraction = 1;               ///< alpha of eq. 2.53
+  Real mass_cutoff = 0;                 ///< kg: nodes lighter than this get zero velocity (eq. 2.63)
   Vec<Dim> gravity = Vec<Dim>::Zero();  ///< m/s^2
 };
 
@@ -32,9 +32,9 @@ struct StepContext {
   const TransferSettings<Dim>& settings;
   const GridBoundary<Dim>& boundary;
   ModuleHooks<Dim>& hooks;
-  Real time = 0;  ///< s, at the start of the step
-  Real dt = 0;    ///< s
-  Index step = 0; ///< number of the step being taken (1 for the first)
+  Real time = 0;   ///< s, at the start of the step
+  Real dt = 0;     ///< s
+  Index step = 0;  ///< number of the step being taken (1 for the first)
   /// Set by any kernel that sees a non-finite value, det F <= 0 or a particle outside the grid; the
   /// simulation then finds and names the culprit (the kernels only raise the flag, which costs nothing).
   std::atomic<bool> guard_tripped{false};

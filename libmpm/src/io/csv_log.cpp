@@ -43,8 +43,8 @@ void CsvLog::append(const std::vector<double>& row) {
                                 std::to_string(columns_.size()) + " columns in '" + path_.string() + "'");
   for (std::size_t i = 0; i < row.size(); ++i)
     if (!std::isfinite(row[i]))
-      throw std::invalid_argument("CsvLog::append: non-finite value in column '" + columns_[i] +
-                                  "' of '" + path_.string() + "'");
+      throw std::invalid_argument("CsvLog::append: non-finite value in column '" + columns_[i] + "' of '" +
+                                  path_.string() + "'");
   rows_.push_back(row);
   try {
     write();

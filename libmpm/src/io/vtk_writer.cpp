@@ -4,8 +4,8 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
-#include <vtkDoubleArray.h>
 #include <vtkCommand.h>
+#include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -29,14 +29,13 @@ namespace {
 }
 
 // Every value must be finite: `name` and the point index go into the message.
-void check_finite(const char* where, const std::string& name, const std::vector<double>& values,
-                  int components) {
+void check_finite(const char* where, const std::string& name, const std::vector<double>& values, int components) {
   const auto bad = std::find_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); });
   if (bad == values.end()) return;
   const auto i = static_cast<std::size_t>(bad - values.begin());
   const auto c = static_cast<std::size_t>(components);
-  fail(where, "non-finite value " + std::to_string(*bad) + " in '" + name + "' at point " +
-                  std::to_string(i / c) + ", component " + std::to_string(i % c));
+  fail(where, "non-finite value " + std::to_string(*bad) + " in '" + name + "' at point " + std::to_string(i / c) +
+                  ", component " + std::to_string(i % c));
 }
 
 // Sizes, names and values of all fields, for `points` points.
@@ -45,13 +44,11 @@ void check_fields(const char* where, const std::vector<FieldArray>& fields, std:
   for (const auto& f : fields) {
     if (f.name.empty()) fail(where, "a field has an empty name");
     if (!names.insert(f.name).second) fail(where, "two fields are named '" + f.name + "'");
-    if (f.components < 1)
-      fail(where, "field '" + f.name + "' has " + std::to_string(f.components) + " components");
+    if (f.components < 1) fail(where, "field '" + f.name + "' has " + std::to_string(f.components) + " components");
     const auto expected = static_cast<std::size_t>(f.components) * points;
     if (f.values.size() != expected)
-      fail(where, "field '" + f.name + "' has " + std::to_string(f.values.size()) +
-                      " values, expected " + std::to_string(f.components) + " x " +
-                      std::to_string(points) + " = " + std::to_string(expected));
+      fail(where, "field '" + f.name + "' has " + std::to_string(f.values.size()) + " values, expected " +
+                      std::to_string(f.components) + " x " + std::to_string(points) + " = " + std::to_string(expected));
     check_finite(where, f.name, f.values, f.components);
   }
 }
@@ -96,8 +93,8 @@ void write_xml(const char* where, const std::filesystem::path& path, Writer* wri
   write_atomically(path, [&](const std::filesystem::path& tmp) {
     writer->SetFileName(tmp.c_str());
     if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->last.empty())
-      fail(where, "VTK could not write '" + path.string() + "' (error code " +
-                      std::to_string(writer->GetErrorCode()) + "): " + errors->last);
+      fail(where, "VTK could not write '" + path.string() + "' (error code " + std::to_string(writer->GetErrorCode()) +
+                      "): " + errors->last);
   });
 }
 
@@ -143,12 +140,11 @@ void write_vti(const std::filesystem::path& path, const ImageGrid& grid) {
   std::size_t n = 1;
   for (int d = 0; d < 3; ++d) {
     if (grid.nodes[d] < 1)
-      fail(where, "node count " + std::to_string(grid.nodes[d]) + " on axis " + std::to_string(d) +
-                      " is < 1");
+      fail(where, "node count " + std::to_string(grid.nodes[d]) + " on axis " + std::to_string(d) + " is < 1");
     if (!std::isfinite(grid.origin[d])) fail(where, "origin is not finite on axis " + std::to_string(d));
     if (!std::isfinite(grid.spacing[d]) || !(grid.spacing[d] > 0))
-      fail(where, "spacing " + std::to_string(grid.spacing[d]) + " on axis " + std::to_string(d) +
-                      " is not finite and > 0");
+      fail(where,
+           "spacing " + std::to_string(grid.spacing[d]) + " on axis " + std::to_string(d) + " is not finite and > 0");
     n *= static_cast<std::size_t>(grid.nodes[d]);
   }
   check_fields(where, grid.fields, n);

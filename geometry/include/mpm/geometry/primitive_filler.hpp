@@ -26,6 +26,6 @@ bool contains(const ShapeDescription& shape, const Vec<Dim>& x);
 /// Sub-cell centres inside the shape, in the order of the cells (x fastest).
 template <int Dim>
 ParticleSeeds<Dim> fill_primitive(const ShapeDescription& shape, const GridGeometry<Dim>& grid,
-                                   const std::array<int, 3>& particles_per_cell);
+                                  const std::array<int, 3>& particles_per_cell);
 
 }  // namespace mpm::geometry

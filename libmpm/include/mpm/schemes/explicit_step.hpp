@@ -51,9 +51,8 @@ void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
   for (auto& body : ctx.bodies) {
     auto& p = body.particles;
     auto& material = *body.material;
-    MatU<Dim>* stored = p.has_field("velocity_gradient")
-                            ? p.template field<MatU<Dim>>("velocity_gradient").data()
-                            : nullptr;
+    MatU<Dim>* stored =
+        p.has_field("velocity_gradient") ? p.template field<MatU<Dim>>("velocity_gradient").data() : nullptr;
     if (!fused) body.velocity_gradient.resize(p.size());
     const auto bound = tbb::parallel_reduce(
         tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},
@@ -79,8 +78,8 @@ void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
       const auto bound = tbb::parallel_reduce(
           tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},
           [&](const tbb::blocked_range<Index>& r, WaveSpeedBound<Dim> b) {
-            b.merge(body.material->update_stress(p, r.begin(), r.end(), body.velocity_gradient.data() + r.begin(),
-                                                 ctx.dt));
+            b.merge(
+                body.material->update_stress(p, r.begin(), r.end(), body.velocity_gradient.data() + r.begin(), ctx.dt));
             return b;
           },
           merge);

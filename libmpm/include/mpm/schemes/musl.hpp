@@ -81,8 +81,8 @@ class Musl final : public Scheme<Dim> {
 
   /// x_p += dt sum phi v~_I (Alg. 2); L_p = sum v_I^{t+dt} (x) grad phi at the old positions; F update.
   /// Writes the velocity gradient of particle i to L_out[i - begin].
-  static bool update_position_and_deformation(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin,
-                                              Index end, MatU<Dim>* L_out) {
+  static bool update_position_and_deformation(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin, Index end,
+                                              MatU<Dim>* L_out) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const Vec<Dim> upper = g.upper();
