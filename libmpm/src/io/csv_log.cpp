@@ -8,15 +8,10 @@
 #include <stdexcept>
 #include <utility>
 
+#include "mpm/io/number_format.hpp"
+
 namespace mpm::io {
 namespace {
-
-// %.17g in the C locale, whatever the global locale.
-std::string format_double(double v) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::general, 17).ptr;
-  return std::string(buffer, end);
-}
 
 // RFC 4180: quote a name that holds a comma, a quote or a line break.
 std::string csv_quote(const std::string& s) {

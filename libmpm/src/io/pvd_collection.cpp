@@ -9,15 +9,10 @@
 #include <string>
 #include <utility>
 
+#include "mpm/io/number_format.hpp"
+
 namespace mpm::io {
 namespace {
-
-// %.17g (reads back to the same double) in the C locale, whatever the global locale.
-std::string format_double(double v) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::general, 17).ptr;
-  return std::string(buffer, end);
-}
 
 std::string xml_escape(const std::string& s) {
   std::string out;
