@@ -202,3 +202,55 @@ TEST(Simulation, VelocityGradientOutputOnDemand) {
 
 }  // namespace
 }  // namespace mpm
+
+namespace mpm {
+namespace {
+
+std::string floor_scene(const std::string& floor) {
+  return "dimension: 2\n"
+         "grid: {origin: [0, 0], extent: [2, 1], cell_size: 0.05, boundary: {y_min: " +
+         floor +
+         "}}\n"
+         "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e5, poisson_ratio: 0.3}}\n"
+         "bodies: [{material: m, shape: {type: box, min: [0.2, 0.0], max: [0.6, 0.2]}, velocity: [0.5, 0]}]\n"
+         "solver: {scheme: musl, cfl: 0.4, end_time: 0.3, gravity: [0, -9.81]}\n";
+}
+
+// A block sliding on the floor under gravity: a slip floor fixes only the normal velocity, so the
+// horizontal momentum is untouched (frictionless) and the block does not sink; a fixed floor also
+// stops the tangential velocity of the bottom nodes, which brakes the block.
+TEST(Simulation, SlipAndFixedFloors) {
+  auto slip = test::simulation_from_yaml<2>(floor_scene("slip"));
+  auto fixed = test::simulation_from_yaml<2>(floor_scene("fixed"));
+  const Real p0 = slip->energy().momentum[0];
+  slip->run();
+  fixed->run();
+  EXPECT_NEAR(slip->energy().momentum[0], p0, 1e-9 * p0);
+  EXPECT_LT(fixed->energy().momentum[0], 0.9 * p0);
+  Real lowest = 1;
+  for (Index i = 0; i < slip->bodies()[0].particles.size(); ++i)
+    lowest = std::min(lowest, slip->bodies()[0].particles.x[i][1]);
+  EXPECT_GT(lowest, 0.0);
+}
+
+// A prescribed face velocity is an expression of t, applied at t for v^t and at t + dt for the updated
+// and re-mapped velocities.
+TEST(Simulation, PrescribedFaceVelocityFollowsExpressionOfTime) {
+  const std::string scene =
+      "dimension: 1\n"
+      "grid: {origin: [0], extent: [1], cell_size: 0.1, boundary: {x_min: fixed, x_max: {velocity: [\"0.02*t\"]}}}\n"
+      "materials: {m: {model: linear_elastic, density: 1, youngs_modulus: 1, poisson_ratio: 0}}\n"
+      "bodies: [{material: m, shape: {type: box, min: [0], max: [1]}}]\n"
+      "solver: {scheme: musl, dt: 0.01, end_time: 1}\n";
+  auto sim = test::simulation_from_yaml<1>(scene);
+  for (int s = 0; s < 10; ++s) sim->advance(0.01);
+  const auto& v = sim->grid().velocity;
+  EXPECT_DOUBLE_EQ(v.back().mapped[0], 0.02 * sim->time());  // re-mapped v^{t+dt}, t + dt = now
+  EXPECT_DOUBLE_EQ(v.back().updated[0], 0.02 * sim->time());
+  EXPECT_EQ(v.front().mapped[0], 0.0);
+  // The bar is pulled: its last particle moves towards +x.
+  EXPECT_GT(sim->bodies()[0].particles.v.back()[0], 0.0);
+}
+
+}  // namespace
+}  // namespace mpm
