@@ -18,6 +18,8 @@
 
 #include "mpm/expression.hpp"
 #include "mpm/material_catalog.hpp"
+#include "mpm/output_writer.hpp"
+#include "mpm/scheme.hpp"
 
 namespace mpm {
 namespace {
@@ -27,9 +29,6 @@ namespace {
 
 constexpr const char* axis_names[3] = {"x", "y", "z"};
 constexpr const char* face_names[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
-const std::vector<std::string> output_fields = {
-    "velocity", "displacement",      "stress",   "deformation_gradient", "mass", "volume", "density",
-    "body",     "velocity_gradient", "pressure", "von_mises_stress"};
 /// Relative tolerance of "extent / cell_size is an integer" and of "the body lies inside the grid".
 constexpr double geometric_tolerance = 1e-9;
 
@@ -519,15 +518,19 @@ SolverDescription read_solver(const Reader& r, const Value& v, const SceneDescri
   m.allow({"scheme", "shape_function", "flip_fraction", "dt", "cfl", "end_time", "mass_cutoff", "gravity",
            "snapshot_interval", "sort_interval"});
   SolverDescription solver;
-  if (const auto scheme = m.find("scheme")) solver.scheme = r.choice(*scheme, {"usl", "musl"});
+  if (const auto scheme = m.find("scheme")) solver.scheme = r.choice(*scheme, scheme_names());
   if (const auto shape_function = m.find("shape_function")) {
-    solver.shape_function = r.choice(*shape_function, {"linear", "cubic_bspline"});
-    if (solver.shape_function == "cubic_bspline")
-      for (int d = 0; d < dimension; ++d)
-        if (scene.grid.cells[d] < 4)
-          r.fail(*shape_function, fmt::format("cubic_bspline needs at least 4 cells per axis; the grid has {} "
-                                              "on axis {}",
-                                              scene.grid.cells[d], axis_names[d]));
+    solver.shape_function = r.choice(*shape_function, shape_function_names());
+    const ShapeFunctionInfo& info = *find_shape_function(solver.shape_function);
+    for (int d = 0; d < dimension; ++d) {
+      if (scene.grid.cells[d] < info.min_cells)
+        r.fail(*shape_function, fmt::format("{} needs at least {} cells per axis; the grid has {} on axis {}",
+                                            info.name, info.min_cells, scene.grid.cells[d], axis_names[d]));
+      if (info.even_cells && scene.grid.cells[d] % 2 != 0)
+        r.fail(*shape_function, fmt::format("{} needs an even number of cells per axis (two per element); the "
+                                            "grid has {} on axis {}",
+                                            info.name, scene.grid.cells[d], axis_names[d]));
+    }
   }
   if (const auto flip = m.find("flip_fraction")) solver.flip_fraction = r.number(*flip, zero_to_one, "");
 
@@ -567,7 +570,7 @@ OutputDescription read_output(const Reader& r, const Value& v) {
   if (const auto fields = m.find("fields")) {
     output.fields.clear();
     for (const auto& item : r.list(*fields, std::nullopt, "field names")) {
-      std::string field = r.choice(item, output_fields);
+      std::string field = r.choice(item, output_field_names());
       if (contains(output.fields, field)) r.fail(item, fmt::format("field '{}' is listed twice", field));
       output.fields.push_back(std::move(field));
     }

@@ -22,6 +22,7 @@ Simulation<Dim>::Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<
       scheme_(std::move(scheme)),
       boundary_(std::move(boundary)),
       settings_(settings) {
+  scheme_->initialize(bodies_, grid_);
   for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
   take_snapshot();
 }
@@ -57,7 +58,7 @@ bool Simulation<Dim>::finished() const {
 
 template <int Dim>
 void Simulation<Dim>::take_step(Real dt) {
-  if (settings_.sort_interval > 0 && step_ % settings_.sort_interval == 0)
+  if (scheme_->reorders_particles() && settings_.sort_interval > 0 && step_ % settings_.sort_interval == 0)
     for (auto& b : bodies_) b.particles.gather(order_by_cell(b.particles, grid_.geometry));
   StepContext<Dim> ctx{grid_, bodies_, settings_.transfer, boundary_, hooks_};
   ctx.time = time_;
@@ -140,7 +141,8 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
       Vec<Dim> x = p.x[i];
       if (!x.allFinite()) {
         fail("position", "not finite");
-      } else if ((x.array() < g.origin.array()).any() || (x.array() > upper.array()).any()) {
+      } else if (scheme_->positions_must_stay_in_grid() &&
+                 ((x.array() < g.origin.array()).any() || (x.array() > upper.array()).any())) {
         fail("position", fmt::format("x = ({}) left the grid box", fmt::join(x.data(), x.data() + Dim, ", ")));
       } else if (!p.v[i].allFinite()) {
         fail("velocity", "not finite");

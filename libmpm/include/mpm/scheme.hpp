@@ -24,6 +24,13 @@ class Scheme {
   virtual int min_cells() const = 0;
   /// One full step: transfers, grid update, boundary conditions, particle update, stress update.
   virtual void advance(StepContext<Dim>& ctx) = 0;
+  /// Called once with the initial state, before the first step and the first snapshot (TLMPM caches
+  /// its reference weights here).
+  virtual void initialize(std::vector<Body<Dim>>&, Grid<Dim>&) {}
+  /// False when the scheme keeps per-particle data in particle order (TLMPM): no periodic sorting.
+  virtual bool reorders_particles() const { return true; }
+  /// False when particle positions are not used by the transfers (TLMPM: they may leave the grid).
+  virtual bool positions_must_stay_in_grid() const { return true; }
 };
 
 /// "usl" or "musl" with "linear" or "cubic_bspline"; throws std::invalid_argument listing valid names.
@@ -33,5 +40,14 @@ std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::s
 /// Names accepted by make_scheme.
 std::vector<std::string> scheme_names();
 std::vector<std::string> shape_function_names();
+
+/// What the scene loader must check about the grid for a shape function.
+struct ShapeFunctionInfo {
+  std::string name;
+  int min_cells = 1;        ///< cells an axis needs at least
+  bool even_cells = false;  ///< the number of cells per axis must be even (Bernstein elements)
+};
+/// The entry for `name`, or nullptr.
+const ShapeFunctionInfo* find_shape_function(const std::string& name);
 
 }  // namespace mpm

@@ -2,6 +2,8 @@
 #include <stdexcept>
 
 #include "mpm/schemes/musl.hpp"
+#include "mpm/schemes/tlmpm.hpp"
+#include "mpm/schemes/usf.hpp"
 #include "mpm/schemes/usl.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/linear_hat.hpp"
@@ -13,13 +15,40 @@ template <int Dim, class Shape>
 std::unique_ptr<Scheme<Dim>> make_with_shape(const std::string& scheme) {
   if (scheme == "usl") return std::make_unique<Usl<Dim, Shape>>();
   if (scheme == "musl") return std::make_unique<Musl<Dim, Shape>>();
-  throw std::invalid_argument("unknown scheme '" + scheme + "' (valid: usl, musl)");
+  if (scheme == "usf") return std::make_unique<Usf<Dim, Shape>>();
+  if (scheme == "tlmpm") return std::make_unique<Tlmpm<Dim, Shape>>();
+  throw std::invalid_argument("unknown scheme '" + scheme + "' (valid: musl, tlmpm, usf, usl)");
 }
 
 }  // namespace
 
-std::vector<std::string> scheme_names() { return {"musl", "usl"}; }
-std::vector<std::string> shape_function_names() { return {LinearHat::name, CubicBSpline::name}; }
+namespace {
+template <class Shape>
+ShapeFunctionInfo info() {
+  ShapeFunctionInfo i;
+  i.name = Shape::name;
+  i.min_cells = Shape::min_cells;
+  if constexpr (requires { Shape::even_cells; }) i.even_cells = Shape::even_cells;
+  return i;
+}
+// Every shape function, once: the scene loader's list of names and grid checks come from here.
+const std::vector<ShapeFunctionInfo>& shape_functions() {
+  static const std::vector<ShapeFunctionInfo> all = {info<LinearHat>(), info<CubicBSpline>()};
+  return all;
+}
+}  // namespace
+
+std::vector<std::string> scheme_names() { return {"musl", "tlmpm", "usf", "usl"}; }
+std::vector<std::string> shape_function_names() {
+  std::vector<std::string> names;
+  for (const auto& s : shape_functions()) names.push_back(s.name);
+  return names;
+}
+const ShapeFunctionInfo* find_shape_function(const std::string& name) {
+  for (const auto& s : shape_functions())
+    if (s.name == name) return &s;
+  return nullptr;
+}
 
 template <int Dim>
 std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape) {

@@ -23,7 +23,8 @@ void reset_grid(Grid<Dim>& grid) {
 }
 
 /// P2G (eqs 2.40, 2.43, 2.36): nodal mass, momentum and internal force f_I = -sum V_p sigma_p grad phi.
-template <int Dim, class Shape>
+/// USF maps mass and momentum first and the force of the updated stress later: the two flags select.
+template <int Dim, class Shape, bool MassMomentum = true, bool Force = true>
 void particles_to_grid(Body<Dim>& body, Grid<Dim>& grid) {
   const auto& p = body.particles;
   const auto& g = grid.geometry;
@@ -46,12 +47,16 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& grid) {
       for (int a = 0; a < st.count; ++a) {
         NodeRecord<Dim>& n = node[st.node[a]];
         const Real w = st.w[a];
-        n.mass += w * m;
-        for (int r = 0; r < Dim; ++r) n.momentum[r] += w * mvs[r];
-        for (int r = 0; r < Dim; ++r) {
-          Real f = 0;
-          for (int c = 0; c < Dim; ++c) f += vss[r][c] * st.grad[a][c];
-          n.force[r] -= f;
+        if constexpr (MassMomentum) {
+          n.mass += w * m;
+          for (int r = 0; r < Dim; ++r) n.momentum[r] += w * mvs[r];
+        }
+        if constexpr (Force) {
+          for (int r = 0; r < Dim; ++r) {
+            Real f = 0;
+            for (int c = 0; c < Dim; ++c) f += vss[r][c] * st.grad[a][c];
+            n.force[r] -= f;
+          }
         }
       }
     }

@@ -1,0 +1,172 @@
+#pragma once
+/// \file tlmpm.hpp
+/// Total-Lagrangian MPM (review §2.6, Algorithm 3, with the MUSL double mapping). Weights and gradients
+/// are taken at the reference positions X_p, computed once and cached, with the nodal mass
+/// m_I = sum phi_I(X_p) m_p (constant: erratum 35). Each step:
+///   (mv)_I = sum phi_I(X_p) m_p v_p;  f_I = -sum V_p^0 P_p grad_0 phi_I(X_p) + m_I g, P = J sigma F^-T;
+///   v~_I = (mv + dt f)/m;  v_p = alpha (v_p + sum phi (v~ - v)) + (1 - alpha) sum phi v~;
+///   (mv)_I^{t+dt} = sum phi m_p v_p -> v_I^{t+dt};  dF/dt = sum v_I^{t+dt} (x) grad_0 phi (eq. 2.67);
+///   F += dt dF/dt;  L = dF/dt F^-1 (eq. 2.69);  stress update;  x_p += dt sum phi v~_I (for output only).
+/// The grid only needs to cover the reference shape: current positions may leave it. Particles are
+/// never reordered (the cache is in particle order). There is no automatic contact between bodies.
+
+#include <tbb/parallel_for.h>
+
+#include "mpm/scheme.hpp"
+#include "mpm/schemes/explicit_step.hpp"
+
+namespace mpm {
+
+template <int Dim, class Shape>
+class Tlmpm final : public Scheme<Dim> {
+ public:
+  std::string_view name() const override { return "tlmpm"; }
+  std::string_view shape_function() const override { return Shape::name; }
+  int slab_cells() const override { return Shape::slab_cells; }
+  int min_cells() const override { return Shape::min_cells; }
+  bool reorders_particles() const override { return false; }
+  bool positions_must_stay_in_grid() const override { return false; }
+
+  /// Sorts each body by reference cell once, bins it by slab, caches phi_I(X_p) and grad_0 phi_I(X_p),
+  /// and computes the constant nodal mass.
+  void initialize(std::vector<Body<Dim>>& bodies, Grid<Dim>& grid) override {
+    stencils_.assign(bodies.size(), {});
+    nodal_mass_.assign(grid.size(), 0);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      auto& p = bodies[b].particles;
+      p.gather(order_by_cell(p, grid.geometry));
+      auto& X = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
+      for (Index i = 0; i < p.size(); ++i) X[i] = p.x[i];
+      bin_by_slab(p, grid.geometry, Shape::slab_cells, bodies[b].bins);
+      auto& cache = stencils_[b];
+      cache.resize(p.size());
+      for (Index i = 0; i < p.size(); ++i) {
+        cache[i].compute(X[i], grid.geometry);
+        for (int a = 0; a < cache[i].count; ++a) nodal_mass_[cache[i].node[a]] += cache[i].w[a] * p.mass[i];
+      }
+    }
+  }
+
+  void advance(StepContext<Dim>& ctx) override {
+    auto& grid = ctx.grid;
+    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        grid.node[i].mass = nodal_mass_[i];
+        grid.node[i].momentum.setZero();
+        grid.node[i].force.setZero();
+      }
+    });
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) map_momentum_and_force(ctx.bodies[b], stencils_[b], grid);
+    ctx.hooks.after_p2g(ctx);
+    kernels::update_grid_velocity(grid, ctx.settings, ctx.dt);
+    if (!ctx.boundary.empty()) {
+      ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
+      ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);
+    }
+    ctx.hooks.grid_velocity(ctx, GridStage::mapped);
+    ctx.hooks.grid_velocity(ctx, GridStage::updated);
+
+    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 14), [&](const auto& r) {
+      for (Index i = r.begin(); i != r.end(); ++i) grid.node[i].momentum.setZero();
+    });
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_velocity_and_remap(ctx.bodies[b], stencils_[b], ctx);
+    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        const NodeRecord<Dim>& n = grid.node[i];
+        if (n.mass > ctx.settings.mass_cutoff)
+          grid.velocity[i].mapped = n.momentum / n.mass;
+        else
+          grid.velocity[i].mapped.setZero();
+      }
+    });
+    if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time + ctx.dt);
+    ctx.hooks.grid_velocity(ctx, GridStage::remapped);
+
+    kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) {
+      return deform(body, stencils_[static_cast<std::size_t>(body.index)], ctx, begin, end, L);
+    });
+  }
+
+ private:
+  using Cache = std::vector<Stencil<Dim, Shape>>;
+
+  /// (mv)_I and f_I = -sum V0 P grad_0 phi, scattered with the slab colouring of the reference positions.
+  static void map_momentum_and_force(Body<Dim>& body, const Cache& cache, Grid<Dim>& grid) {
+    const auto& p = body.particles;
+    NodeRecord<Dim>* node = grid.node.data();
+    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+      for (Index k = 0; k < count; ++k) {
+        const Index i = index[k];
+        const auto& st = cache[i];
+        const Mat<Dim> F = p.F[i];
+        const Real J = F.determinant();
+        // First Piola-Kirchhoff stress P = J sigma F^-T (review Table 4), times V0.
+        const Mat<Dim> vP = (p.volume0[i] * J) * p.stress[i].block() * F.inverse().transpose();
+        const Vec<Dim> mv = p.mass[i] * p.v[i];
+        for (int a = 0; a < st.count; ++a) {
+          NodeRecord<Dim>& n = node[st.node[a]];
+          for (int r = 0; r < Dim; ++r) {
+            Real f = 0;
+            for (int c = 0; c < Dim; ++c) f += vP(r, c) * st.grad[a][c];
+            n.momentum[r] += st.w[a] * mv[r];
+            n.force[r] -= f;
+          }
+        }
+      }
+    });
+  }
+
+  static void update_velocity_and_remap(Body<Dim>& body, const Cache& cache, StepContext<Dim>& ctx) {
+    auto& p = body.particles;
+    NodeRecord<Dim>* node = ctx.grid.node.data();
+    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const Real alpha = ctx.settings.flip_fraction;
+    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+      for (Index k = 0; k < count; ++k) {
+        const Index i = index[k];
+        const auto& st = cache[i];
+        Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
+        for (int a = 0; a < st.count; ++a) {
+          const NodeVelocity<Dim>& nv = vel[st.node[a]];
+          v_pic += st.w[a] * nv.updated;
+          dv += st.w[a] * (nv.updated - nv.mapped);
+        }
+        const Vec<Dim> v = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
+        p.v[i] = v;
+        const Vec<Dim> mv = p.mass[i] * v;
+        for (int a = 0; a < st.count; ++a)
+          for (int r = 0; r < Dim; ++r) node[st.node[a]].momentum[r] += st.w[a] * mv[r];
+      }
+    });
+  }
+
+  /// dF/dt = sum v_I^{t+dt} (x) grad_0 phi (eq. 2.67), F += dt dF/dt, L = dF/dt F^-1 (eq. 2.69).
+  static bool deform(Body<Dim>& body, const Cache& cache, const StepContext<Dim>& ctx, Index begin, Index end,
+                     MatU<Dim>* L_out) {
+    auto& p = body.particles;
+    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    bool ok = true;
+    for (Index i = begin; i != end; ++i) {
+      const auto& st = cache[i];
+      Mat<Dim> Fdot = Mat<Dim>::Zero();
+      Vec<Dim> v_move = Vec<Dim>::Zero();
+      for (int a = 0; a < st.count; ++a) {
+        const NodeVelocity<Dim>& nv = vel[st.node[a]];
+        v_move += st.w[a] * nv.updated;
+        for (int c = 0; c < Dim; ++c) Fdot.col(c) += nv.mapped * st.grad[a][c];
+      }
+      p.x[i] += ctx.dt * v_move;
+      const Mat<Dim> F = Mat<Dim>(p.F[i]) + ctx.dt * Fdot;
+      p.F[i] = F;
+      const Real J = F.determinant();
+      ok &= J > 0 && std::isfinite(J) && p.x[i].allFinite() && std::isfinite(p.v[i].sum());
+      L_out[i - begin] = Fdot * F.inverse();
+    }
+    return ok;
+  }
+
+  std::vector<Cache> stencils_;
+  std::vector<Real> nodal_mass_;
+};
+
+}  // namespace mpm

@@ -1,0 +1,107 @@
+#pragma once
+/// \file usf.hpp
+/// Update Stress First (Bardenhagen 2002; review Remark 17, the single-body form of Alg. 6, digest
+/// §A.3): the velocity gradient and stress are updated from the mapped velocity v^t before the
+/// internal force is computed, then the momentum is updated and the particles move:
+///   P2G m_I, (mv)_I -> v_I^t;  L_p = sum v_I^t (x) grad phi;  F, sigma updated;
+///   f_I = -sum V_p sigma_p grad phi + m_I g;  v_I^{t+dt} = v_I^t + dt f_I/m_I;
+///   v_p = alpha (v_p + sum phi (v^{t+dt} - v^t)) + (1 - alpha) sum phi v^{t+dt};  x_p += dt sum phi v^{t+dt}.
+
+#include "mpm/scheme.hpp"
+#include "mpm/schemes/explicit_step.hpp"
+
+namespace mpm {
+
+template <int Dim, class Shape>
+class Usf final : public Scheme<Dim> {
+ public:
+  std::string_view name() const override { return "usf"; }
+  std::string_view shape_function() const override { return Shape::name; }
+  int slab_cells() const override { return Shape::slab_cells; }
+  int min_cells() const override { return Shape::min_cells; }
+
+  void advance(StepContext<Dim>& ctx) override {
+    auto& grid = ctx.grid;
+    for (auto& body : ctx.bodies) {
+      bin_by_slab(body.particles, grid.geometry, Shape::slab_cells, body.bins);
+      if (body.bins.outside >= 0) ctx.guard_tripped = true;
+    }
+    kernels::reset_grid(grid);
+    for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, true, false>(body, grid);
+    kernels::update_grid_velocity(grid, ctx.settings, ctx.dt);  // mapped = v^t (the force is still zero)
+    if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
+    ctx.hooks.grid_velocity(ctx, GridStage::mapped);
+
+    kernels::transfer_and_update_stress(
+        ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) { return deform(body, ctx, begin, end, L); });
+
+    for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, false, true>(body, grid);
+    ctx.hooks.after_p2g(ctx);
+    momentum_update(ctx);
+    if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);
+    ctx.hooks.grid_velocity(ctx, GridStage::updated);
+    for (auto& body : ctx.bodies) move(body, ctx);
+  }
+
+ private:
+  /// L_p = sum v_I^t (x) grad phi_I(x_p^t) and F^{t+dt} = (I + dt L_p) F^t.
+  static bool deform(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin, Index end, MatU<Dim>* L_out) {
+    auto& p = body.particles;
+    const auto& g = ctx.grid.geometry;
+    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    Stencil<Dim, Shape> st;
+    bool ok = true;
+    for (Index i = begin; i != end; ++i) {
+      st.compute(p.x[i], g);
+      Mat<Dim> L = Mat<Dim>::Zero();
+      for (int a = 0; a < st.count; ++a)
+        for (int c = 0; c < Dim; ++c) L.col(c) += vel[st.node[a]].mapped * st.grad[a][c];
+      L_out[i - begin] = L;
+      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, ctx.dt);
+    }
+    return ok;
+  }
+
+  /// updated = mapped + dt (f/m + g), with the small-mass cut-off.
+  static void momentum_update(StepContext<Dim>& ctx) {
+    auto& grid = ctx.grid;
+    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        const NodeRecord<Dim>& n = grid.node[i];
+        NodeVelocity<Dim>& v = grid.velocity[i];
+        if (n.mass > ctx.settings.mass_cutoff)
+          v.updated = v.mapped + ctx.dt * (n.force / n.mass + ctx.settings.gravity);
+        else
+          v.updated.setZero();
+      }
+    });
+  }
+
+  /// Particle velocity (PIC/FLIP blend, eq. 2.53) and position (eq. 2.54).
+  static void move(Body<Dim>& body, StepContext<Dim>& ctx) {
+    auto& p = body.particles;
+    const auto& g = ctx.grid.geometry;
+    const Vec<Dim> upper = g.upper();
+    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
+    tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
+      Stencil<Dim, Shape> st;
+      bool ok = true;
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        st.compute(p.x[i], g);
+        Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
+        for (int a = 0; a < st.count; ++a) {
+          const NodeVelocity<Dim>& nv = vel[st.node[a]];
+          v_pic += st.w[a] * nv.updated;
+          dv += st.w[a] * (nv.updated - nv.mapped);
+        }
+        p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
+        p.x[i] += dt * v_pic;
+        ok &= kernels::inside(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
+      }
+      if (!ok) ctx.guard_tripped = true;
+    });
+  }
+};
+
+}  // namespace mpm
