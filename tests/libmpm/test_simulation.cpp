@@ -43,7 +43,8 @@ std::vector<double> run_with_threads(int threads, const std::string& solver) {
 // Slab-coloured scatter in a fixed order (slab_binning.hpp): the same bits for any thread count.
 TEST(Simulation, BitIdenticalAcrossThreadCounts) {
   for (const std::string solver : {"scheme: musl, cfl: 0.5, end_time: 1, sort_interval: 7",
-                                   "scheme: usl, shape_function: cubic_bspline, cfl: 0.5, end_time: 1"}) {
+                                   "scheme: usl, shape_function: cubic_bspline, cfl: 0.5, end_time: 1",
+                                   "scheme: usf, cfl: 0.5, end_time: 1", "scheme: tlmpm, cfl: 0.5, end_time: 1"}) {
     const auto one = run_with_threads(1, solver);
     const auto two = run_with_threads(2, solver);
     ASSERT_EQ(one.size(), two.size());
@@ -147,7 +148,8 @@ struct CountingModule final : Module<2> {
 };
 
 TEST(Simulation, ModuleBetweenTransferAndStressGivesSameResults) {
-  for (const std::string solver : {"scheme: musl, cfl: 0.5, end_time: 1", "scheme: usl, cfl: 0.5, end_time: 1"}) {
+  for (const std::string solver : {"scheme: musl, cfl: 0.5, end_time: 1", "scheme: usl, cfl: 0.5, end_time: 1",
+                                   "scheme: usf, cfl: 0.5, end_time: 1", "scheme: tlmpm, cfl: 0.5, end_time: 1"}) {
     auto fused = test::simulation_from_yaml<2>(block_scene(solver));
     auto split = test::simulation_from_yaml<2>(block_scene(solver));
     auto module = std::make_shared<CountingModule>();

@@ -84,6 +84,10 @@ TEST(Transfers, MuslConservesMomentum) { check_momentum("musl", "linear", 1.0); 
 TEST(Transfers, MuslPicBlendConservesMomentum) { check_momentum("musl", "linear", 0.5); }
 TEST(Transfers, MuslCubicConservesMomentum) { check_momentum("musl", "cubic_bspline", 1.0); }
 TEST(Transfers, UslCubicConservesMomentum) { check_momentum("usl", "cubic_bspline", 0.9); }
+TEST(Transfers, UsfConservesMomentum) { check_momentum("usf", "linear", 1.0, 0.1); }
+TEST(Transfers, UsfCubicConservesMomentum) { check_momentum("usf", "cubic_bspline", 1.0); }
+TEST(Transfers, TlmpmConservesMomentum) { check_momentum("tlmpm", "linear", 1.0); }
+TEST(Transfers, TlmpmCubicConservesMomentum) { check_momentum("tlmpm", "cubic_bspline", 0.99); }
 
 }  // namespace
 }  // namespace mpm
