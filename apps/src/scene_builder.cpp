@@ -55,6 +55,12 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       auto& x0 = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) x0[i] = p.x[i];
     }
+    if (find_shape_function(scene.solver.shape_function)->particle_domain) {
+      // GIMP: the initial particle domain is the sub-cell the particle was placed in (review §3.3).
+      VecU<Dim> half;
+      for (int d = 0; d < Dim; ++d) half[d] = 0.5 * h[d] / bd.particles_per_cell[d];
+      p.template add_field<VecU<Dim>>("domain_half_length0", half);
+    }
     if (wants("velocity_gradient")) p.template add_field<MatU<Dim>>("velocity_gradient", MatU<Dim>::Zero());
     max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);
     bodies.push_back(std::move(body));

@@ -85,3 +85,113 @@ TEST(ShapeFunctions, CubicBSplineBoundaryValues) {
 
 }  // namespace
 }  // namespace mpm
+
+#include "mpm/shape/gimp.hpp"
+
+namespace mpm {
+namespace {
+
+// uGIMP in the paper's piecewise form (eq. 3.12-3.13), h = 1, particle length l = 2a <= 1.
+void paper_ugimp(Real x, Real l, Real& w, Real& dw) {
+  const Real ax = std::abs(x), s = x < 0 ? -1 : 1;
+  if (ax < l / 2) {
+    w = 1 - (4 * x * x + l * l) / (4 * l);
+    dw = -2 * x / l;
+  } else if (ax <= 1 - l / 2) {
+    w = 1 - ax;
+    dw = -s;
+  } else if (ax < 1 + l / 2) {
+    w = (1 + l / 2 - ax) * (1 + l / 2 - ax) / (2 * l);
+    dw = -s * (1 + l / 2 - ax) / l;
+  } else {
+    w = dw = 0;
+  }
+}
+
+TEST(ShapeFunctions, GimpMatchesPaperFormulaAndFiniteDifferences) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<Real> u(0, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Real xi = 3 + 4 * u(rng), a = 0.05 + 0.95 * u(rng);  // half-length up to one cell
+    int base;
+    Real w[4], dw[4];
+    gimp_detail::evaluate(xi, 12, a, base, w, dw);
+    for (int k = 0; k < 4; ++k) {
+      const Real r = xi - (base + k);
+      if (a <= 0.5) {
+        Real wp, dwp;
+        paper_ugimp(r, 2 * a, wp, dwp);
+        ASSERT_NEAR(w[k], wp, 1e-14) << "r " << r << " a " << a;
+        ASSERT_NEAR(dw[k], dwp, 1e-13);
+      }
+      const Real e = 1e-6;
+      int b2;
+      Real wp[4], wm[4], d2[4];
+      gimp_detail::evaluate(xi + e, 12, a, b2, wp, d2);
+      if (b2 != base) continue;
+      gimp_detail::evaluate(xi - e, 12, a, b2, wm, d2);
+      if (b2 != base) continue;
+      ASSERT_NEAR(dw[k], (wp[k] - wm[k]) / (2 * e), 1e-7);
+    }
+  }
+}
+
+// PU, zero gradient sum and linear reproduction hold wherever the domain lies inside the grid
+// (no ghost nodes), for any domain up to two cells long, in 2D and 3D.
+template <int Dim>
+void check_gimp(int cells) {
+  Vec<Dim> origin = Vec<Dim>::Zero(), h;
+  std::array<int, Dim> n{};
+  for (int d = 0; d < Dim; ++d) h[d] = 0.1 * (d + 1), n[d] = cells;
+  const GridGeometry<Dim> g(origin, h, n);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<Real> u(0, 1);
+  Stencil<Dim, CpGimp> st;
+  for (int trial = 0; trial < 2000; ++trial) {
+    VecU<Dim> x;
+    Vec<Dim> half;
+    for (int d = 0; d < Dim; ++d) {
+      const Real a = 0.05 + 0.95 * u(rng);  // cells
+      half[d] = a * h[d];
+      x[d] = (a + (cells - 2 * a) * u(rng)) * h[d];  // domain inside the box
+    }
+    st.compute(x, g, half);
+    Real sum = 0;
+    Vec<Dim> grad_sum = Vec<Dim>::Zero(), reproduced = Vec<Dim>::Zero();
+    Mat<Dim> grad_x = Mat<Dim>::Zero();
+    for (int a = 0; a < st.count; ++a) {
+      ASSERT_GE(st.w[a], -1e-15);
+      const Vec<Dim> xI = g.node_position(g.node_indices(st.node[a]));
+      Vec<Dim> grad;
+      for (int d = 0; d < Dim; ++d) grad[d] = st.grad[a][d];
+      sum += st.w[a];
+      grad_sum += grad;
+      reproduced += st.w[a] * xI;
+      grad_x += xI * grad.transpose();
+    }
+    ASSERT_NEAR(sum, 1, 1e-13);
+    ASSERT_LT(grad_sum.norm(), 1e-11);
+    ASSERT_LT((reproduced - Vec<Dim>(x)).norm(), 1e-12);
+    ASSERT_LT((grad_x - Mat<Dim>::Identity()).norm(), 1e-11);
+  }
+}
+
+TEST(ShapeFunctions, Gimp1D) { check_gimp<1>(6); }
+TEST(ShapeFunctions, Gimp2D) { check_gimp<2>(5); }
+TEST(ShapeFunctions, Gimp3D) { check_gimp<3>(4); }
+
+// cpGIMP stretches the domain with the diagonal of F (eq. 3.14); uGIMP keeps it.
+TEST(ShapeFunctions, CpGimpDomainFollowsF) {
+  ParticleSet<2> p;
+  p.add(Vec<2>(0.5, 0.5), 1, 0.01);
+  p.add_field<VecU<2>>("domain_half_length0", VecU<2>(0.05, 0.05));
+  p.F[0] << 1.5, 0.3, 0.1, 0.8;
+  const ParticleDomain<2, CpGimp> cp(p);
+  const ParticleDomain<2, UGimp> u(p);
+  EXPECT_NEAR(cp(0)[0], 0.075, 1e-15);
+  EXPECT_NEAR(cp(0)[1], 0.04, 1e-15);
+  EXPECT_NEAR(u(0)[0], 0.05, 1e-15);
+}
+
+}  // namespace
+}  // namespace mpm

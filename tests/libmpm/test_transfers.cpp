@@ -88,6 +88,9 @@ TEST(Transfers, UsfConservesMomentum) { check_momentum("usf", "linear", 1.0, 0.1
 TEST(Transfers, UsfCubicConservesMomentum) { check_momentum("usf", "cubic_bspline", 1.0); }
 TEST(Transfers, TlmpmConservesMomentum) { check_momentum("tlmpm", "linear", 1.0); }
 TEST(Transfers, TlmpmCubicConservesMomentum) { check_momentum("tlmpm", "cubic_bspline", 0.99); }
+TEST(Transfers, MuslGimpConservesMomentum) { check_momentum("musl", "gimp", 1.0); }
+TEST(Transfers, UslCpGimpConservesMomentum) { check_momentum("usl", "cpgimp", 1.0, 0.1); }
+TEST(Transfers, TlmpmGimpConservesMomentum) { check_momentum("tlmpm", "gimp", 1.0); }
 
 }  // namespace
 }  // namespace mpm

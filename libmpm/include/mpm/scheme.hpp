@@ -46,6 +46,7 @@ struct ShapeFunctionInfo {
   std::string name;
   int min_cells = 1;        ///< cells an axis needs at least
   bool even_cells = false;  ///< the number of cells per axis must be even (Bernstein elements)
+  bool particle_domain = false;  ///< weights depend on the particle domain (GIMP): field "domain_half_length0"
 };
 /// The entry for `name`, or nullptr.
 const ShapeFunctionInfo* find_shape_function(const std::string& name);

@@ -6,6 +6,7 @@
 #include "mpm/schemes/usf.hpp"
 #include "mpm/schemes/usl.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
+#include "mpm/shape/gimp.hpp"
 #include "mpm/shape/linear_hat.hpp"
 
 namespace mpm {
@@ -29,11 +30,13 @@ ShapeFunctionInfo info() {
   i.name = Shape::name;
   i.min_cells = Shape::min_cells;
   if constexpr (requires { Shape::even_cells; }) i.even_cells = Shape::even_cells;
+  if constexpr (requires { Shape::uses_domain; }) i.particle_domain = Shape::uses_domain;
   return i;
 }
 // Every shape function, once: the scene loader's list of names and grid checks come from here.
 const std::vector<ShapeFunctionInfo>& shape_functions() {
-  static const std::vector<ShapeFunctionInfo> all = {info<LinearHat>(), info<CubicBSpline>()};
+  static const std::vector<ShapeFunctionInfo> all = {info<LinearHat>(), info<CubicBSpline>(), info<UGimp>(),
+                                                      info<CpGimp>()};
   return all;
 }
 }  // namespace
@@ -54,7 +57,9 @@ template <int Dim>
 std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape) {
   if (shape == LinearHat::name) return make_with_shape<Dim, LinearHat>(scheme);
   if (shape == CubicBSpline::name) return make_with_shape<Dim, CubicBSpline>(scheme);
-  throw std::invalid_argument("unknown shape function '" + shape + "' (valid: linear, cubic_bspline)");
+  if (shape == UGimp::name) return make_with_shape<Dim, UGimp>(scheme);
+  if (shape == CpGimp::name) return make_with_shape<Dim, CpGimp>(scheme);
+  throw std::invalid_argument("unknown shape function '" + shape + "'");
 }
 
 template std::unique_ptr<Scheme<1>> make_scheme<1>(const std::string&, const std::string&);

@@ -45,9 +45,10 @@ class Musl final : public Scheme<Dim> {
     const Real alpha = ctx.settings.flip_fraction;
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
       Stencil<Dim, Shape> st;
+      const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
-        st.compute(p.x[i], g);
+        st.compute(p.x[i], g, domain(i));
         Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
         for (int a = 0; a < st.count; ++a) {
           const NodeVelocity<Dim>& nv = vel[st.node[a]];
@@ -89,9 +90,10 @@ class Musl final : public Scheme<Dim> {
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real dt = ctx.dt;
     Stencil<Dim, Shape> st;
+    const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
-      st.compute(p.x[i], g);
+      st.compute(p.x[i], g, domain(i));
       Vec<Dim> v_move = Vec<Dim>::Zero();
       Mat<Dim> L = Mat<Dim>::Zero();
       for (int a = 0; a < st.count; ++a) {

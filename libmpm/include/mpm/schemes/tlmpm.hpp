@@ -40,8 +40,9 @@ class Tlmpm final : public Scheme<Dim> {
       bin_by_slab(p, grid.geometry, Shape::slab_cells, bodies[b].bins);
       auto& cache = stencils_[b];
       cache.resize(p.size());
+      const ParticleDomain<Dim, Shape> domain(p);
       for (Index i = 0; i < p.size(); ++i) {
-        cache[i].compute(X[i], grid.geometry);
+        cache[i].compute(X[i], grid.geometry, domain(i));
         for (int a = 0; a < cache[i].count; ++a) nodal_mass_[cache[i].node[a]] += cache[i].w[a] * p.mass[i];
       }
     }

@@ -31,9 +31,10 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& grid) {
   NodeRecord<Dim>* node = grid.node.data();
   for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
     Stencil<Dim, Shape> st;
+    const ParticleDomain<Dim, Shape> domain(p);
     for (Index k = 0; k < count; ++k) {
       const Index i = index[k];
-      st.compute(p.x[i], g);
+      st.compute(p.x[i], g, domain(i));
       const Real m = p.mass[i];
       const Vec<Dim> mv = m * p.v[i];
       const Mat<Dim> vs = (p.volume0[i] * p.F[i].determinant()) * p.stress[i].block();

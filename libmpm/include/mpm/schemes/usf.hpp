@@ -50,9 +50,10 @@ class Usf final : public Scheme<Dim> {
     const auto& g = ctx.grid.geometry;
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     Stencil<Dim, Shape> st;
+    const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
-      st.compute(p.x[i], g);
+      st.compute(p.x[i], g, domain(i));
       Mat<Dim> L = Mat<Dim>::Zero();
       for (int a = 0; a < st.count; ++a)
         for (int c = 0; c < Dim; ++c) L.col(c) += vel[st.node[a]].mapped * st.grad[a][c];
@@ -86,9 +87,10 @@ class Usf final : public Scheme<Dim> {
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
       Stencil<Dim, Shape> st;
+      const ParticleDomain<Dim, Shape> domain(p);
       bool ok = true;
       for (Index i = r.begin(); i != r.end(); ++i) {
-        st.compute(p.x[i], g);
+        st.compute(p.x[i], g, domain(i));
         Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
         for (int a = 0; a < st.count; ++a) {
           const NodeVelocity<Dim>& nv = vel[st.node[a]];

@@ -35,9 +35,10 @@ class Usl final : public Scheme<Dim> {
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     Stencil<Dim, Shape> st;
+    const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
-      st.compute(p.x[i], g);
+      st.compute(p.x[i], g, domain(i));
       Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
       Mat<Dim> L = Mat<Dim>::Zero();
       for (int a = 0; a < st.count; ++a) {

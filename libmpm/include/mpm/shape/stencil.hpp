@@ -4,9 +4,22 @@
 /// support (review eq. 3.17). `Shape` supplies the 1D functions; this file is the only place that
 /// combines axes, so a new shape function is one new header with an `evaluate` like LinearHat's.
 
-#include "mpm/grid.hpp"
+#include "mpm/particle_set.hpp"
 
 namespace mpm {
+
+/// Per-particle data a shape function needs besides the position: nothing for grid-only functions;
+/// the domain half-lengths for GIMP (Shape::Domain resolves the fields once per kernel, not per particle).
+template <int Dim, class Shape>
+struct ParticleDomain {
+  explicit ParticleDomain(const ParticleSet<Dim>&) {}
+  Vec<Dim> operator()(Index) const { return Vec<Dim>::Zero(); }
+};
+template <int Dim, class Shape>
+  requires Shape::uses_domain
+struct ParticleDomain<Dim, Shape> : Shape::template Domain<Dim> {
+  using Shape::template Domain<Dim>::Domain;
+};
 
 template <int Dim, class Shape>
 struct Stencil {
@@ -17,11 +30,16 @@ struct Stencil {
   Real w[count];
   Real grad[count][Dim];  ///< 1/m
 
-  inline void compute(const VecU<Dim>& x, const GridGeometry<Dim>& g) {
+  /// `half` (m): the particle's domain half-lengths, read only by domain-based functions (GIMP).
+  inline void compute(const VecU<Dim>& x, const GridGeometry<Dim>& g, const Vec<Dim>& half = Vec<Dim>::Zero()) {
     int base[Dim];
     Real wa[Dim][per_axis], da[Dim][per_axis];
     for (int d = 0; d < Dim; ++d) {
-      Shape::evaluate((x[d] - g.origin[d]) * g.inv_h[d], g.nodes[d], base[d], wa[d], da[d]);
+      const Real xi = (x[d] - g.origin[d]) * g.inv_h[d];
+      if constexpr (requires { Shape::uses_domain; })
+        Shape::evaluate(xi, g.nodes[d], half[d] * g.inv_h[d], base[d], wa[d], da[d]);
+      else
+        Shape::evaluate(xi, g.nodes[d], base[d], wa[d], da[d]);
       for (int k = 0; k < per_axis; ++k) da[d][k] *= g.inv_h[d];
     }
     if constexpr (Dim == 1) {
