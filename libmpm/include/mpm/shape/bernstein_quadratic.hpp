@@ -31,8 +31,8 @@ namespace mpm {
 struct BernsteinQuadratic {
   static constexpr const char* name = "bernstein";
   static constexpr int support = 3;
-  static constexpr int slab_cells = 2;    // one element; slabs start at node 0, so they align with elements
-  static constexpr int min_cells = 2;     // one element
+  static constexpr int slab_cells = 2;     // one element; slabs start at node 0, so they align with elements
+  static constexpr int min_cells = 2;      // one element
   static constexpr int cell_multiple = 2;  // every axis needs an even number of cells
 
   /// `nodes` must be odd (an even number of cells). A particle on an element vertex belongs to the

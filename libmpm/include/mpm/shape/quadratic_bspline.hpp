@@ -60,12 +60,12 @@ struct QuadraticBSpline {
       w = dw = 0;
     }
   }
-  /// Type 1, the face node (symmetric in r; only the side facing into the box is ever used).
-  static inline void face(Real r, Real& w, Real& dw) {
-    const Real a = std::abs(r);
-    if (a <= Real(0.5)) {
-      w = 1 - a;
-      dw = r < 0 ? 1 : -1;
+  /// Type 1, the node on the lower face, for r >= 0 (the side in the box). The upper face node is its
+  /// mirror image; mirroring (rather than |r|) gives the in-box slope at r = 0, where the kink is.
+  static inline void face_lower(Real r, Real& w, Real& dw) {
+    if (r <= Real(0.5)) {
+      w = 1 - r;
+      dw = -1;
     } else {
       interior(r, w, dw);
     }
@@ -77,8 +77,11 @@ struct QuadraticBSpline {
     for (int k = 0; k < support; ++k) {
       const int node = base + k;
       const Real r = xi - node;
-      if (node == 0 || node == last) {
-        face(r, w[k], dw[k]);
+      if (node == 0) {
+        face_lower(r, w[k], dw[k]);
+      } else if (node == last) {
+        face_lower(-r, w[k], dw[k]);
+        dw[k] = -dw[k];
       } else if (node == 1 && r <= Real(-0.5)) {  // type 2, in the half cell next to the lower face
         w[k] = 1 + r;
         dw[k] = 1;
