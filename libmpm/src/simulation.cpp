@@ -64,6 +64,7 @@ void Simulation<Dim>::take_step(Real dt) {
   ctx.time = time_;
   ctx.dt = dt;
   ctx.step = step_ + 1;
+  hooks_.before_step(ctx);
   scheme_->advance(ctx);
   hooks_.end_of_step(ctx);
   if (ctx.guard_tripped.load()) {

@@ -8,6 +8,7 @@
 
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/linear_hat.hpp"
+#include "mpm/shape/quadratic_bspline.hpp"
 #include "mpm/shape/stencil.hpp"
 
 namespace mpm {
@@ -33,6 +34,8 @@ void check_properties(int cells) {
       Real xi = u(rng) * n[d];
       if (trial % 3 == 1) xi = u(rng);
       if (trial % 3 == 2) xi = n[d] - u(rng);
+      if (trial % 97 == 0) xi = 0;     // exactly on the lower face
+      if (trial % 89 == 0) xi = n[d];  // exactly on the upper face
       x[d] = origin[d] + xi * h[d];
     }
     st.compute(x, g);
@@ -65,6 +68,8 @@ TEST(ShapeFunctions, CubicBSpline1D) { check_properties<1, CubicBSpline>(7); }
 TEST(ShapeFunctions, CubicBSpline2D) { check_properties<2, CubicBSpline>(6); }
 TEST(ShapeFunctions, CubicBSpline3D) { check_properties<3, CubicBSpline>(5); }
 TEST(ShapeFunctions, CubicBSplineMinimumGrid) { check_properties<1, CubicBSpline>(4); }
+TEST(ShapeFunctions, QuadraticBSpline2DFaces) { check_properties<2, QuadraticBSpline>(6); }
+TEST(ShapeFunctions, QuadraticBSpline3DFaces) { check_properties<3, QuadraticBSpline>(4); }
 
 // Values printed in the review for the boundary-modified cubic (eqs 3.18-3.20), at a particle half a
 // cell from the lower face: type 1 at r = 0.5, type 2 at r = -0.5, type 3 at r = -1.5.

@@ -26,6 +26,7 @@ enum Phase : unsigned {
   phase_after_g2p = 1u << 2,
   phase_after_stress = 1u << 3,
   phase_end_of_step = 1u << 4,
+  phase_before_step = 1u << 5,
 };
 
 template <int Dim>
@@ -40,6 +41,8 @@ class Module {
   virtual void after_g2p(StepContext<Dim>&) {}
   virtual void after_stress(StepContext<Dim>&) {}
   virtual void end_of_step(StepContext<Dim>&) {}
+  /// Before any transfer of the step (e.g. to set the particle field "body_force" for time t).
+  virtual void before_step(StepContext<Dim>&) {}
   /// The largest stable time step this module allows (s); infinity when it imposes none.
   virtual Real stable_time_step(const std::vector<Body<Dim>>&) const { return std::numeric_limits<Real>::infinity(); }
 };
@@ -55,6 +58,7 @@ class ModuleHooks {
     if (p & phase_after_g2p) after_g2p_.push_back(m.get());
     if (p & phase_after_stress) after_stress_.push_back(m.get());
     if (p & phase_end_of_step) end_of_step_.push_back(m.get());
+    if (p & phase_before_step) before_step_.push_back(m.get());
     all_.push_back(std::move(m));
   }
   void after_p2g(StepContext<Dim>& c) {
@@ -69,6 +73,9 @@ class ModuleHooks {
   void after_stress(StepContext<Dim>& c) {
     for (auto* m : after_stress_) m->after_stress(c);
   }
+  void before_step(StepContext<Dim>& c) {
+    for (auto* m : before_step_) m->before_step(c);
+  }
   void end_of_step(StepContext<Dim>& c) {
     for (auto* m : end_of_step_) m->end_of_step(c);
   }
@@ -76,7 +83,7 @@ class ModuleHooks {
   const std::vector<std::shared_ptr<Module<Dim>>>& all() const { return all_; }
 
  private:
-  std::vector<Module<Dim>*> after_p2g_, grid_velocity_, after_g2p_, after_stress_, end_of_step_;
+  std::vector<Module<Dim>*> after_p2g_, grid_velocity_, after_g2p_, after_stress_, end_of_step_, before_step_;
   std::vector<std::shared_ptr<Module<Dim>>> all_;
 };
 

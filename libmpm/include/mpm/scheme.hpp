@@ -44,8 +44,8 @@ std::vector<std::string> shape_function_names();
 /// What the scene loader must check about the grid for a shape function.
 struct ShapeFunctionInfo {
   std::string name;
-  int min_cells = 1;        ///< cells an axis needs at least
-  bool even_cells = false;  ///< the number of cells per axis must be even (Bernstein elements)
+  int min_cells = 1;             ///< cells an axis needs at least
+  bool even_cells = false;       ///< the number of cells per axis must be even (Bernstein: two cells per element)
   bool particle_domain = false;  ///< weights depend on the particle domain (GIMP): field "domain_half_length0"
 };
 /// The entry for `name`, or nullptr.

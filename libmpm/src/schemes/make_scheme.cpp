@@ -5,9 +5,11 @@
 #include "mpm/schemes/tlmpm.hpp"
 #include "mpm/schemes/usf.hpp"
 #include "mpm/schemes/usl.hpp"
+#include "mpm/shape/bernstein_quadratic.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "mpm/shape/linear_hat.hpp"
+#include "mpm/shape/quadratic_bspline.hpp"
 
 namespace mpm {
 namespace {
@@ -29,14 +31,15 @@ ShapeFunctionInfo info() {
   ShapeFunctionInfo i;
   i.name = Shape::name;
   i.min_cells = Shape::min_cells;
-  if constexpr (requires { Shape::even_cells; }) i.even_cells = Shape::even_cells;
+  if constexpr (requires { Shape::cell_multiple; }) i.even_cells = Shape::cell_multiple == 2;
   if constexpr (requires { Shape::uses_domain; }) i.particle_domain = Shape::uses_domain;
   return i;
 }
 // Every shape function, once: the scene loader's list of names and grid checks come from here.
 const std::vector<ShapeFunctionInfo>& shape_functions() {
-  static const std::vector<ShapeFunctionInfo> all = {info<LinearHat>(), info<CubicBSpline>(), info<UGimp>(),
-                                                      info<CpGimp>()};
+  static const std::vector<ShapeFunctionInfo> all = {
+      info<LinearHat>(), info<CubicBSpline>(),     info<UGimp>(),
+      info<CpGimp>(),    info<QuadraticBSpline>(), info<BernsteinQuadratic>()};
   return all;
 }
 }  // namespace
@@ -58,6 +61,8 @@ std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::s
   if (shape == LinearHat::name) return make_with_shape<Dim, LinearHat>(scheme);
   if (shape == CubicBSpline::name) return make_with_shape<Dim, CubicBSpline>(scheme);
   if (shape == UGimp::name) return make_with_shape<Dim, UGimp>(scheme);
+  if (shape == QuadraticBSpline::name) return make_with_shape<Dim, QuadraticBSpline>(scheme);
+  if (shape == BernsteinQuadratic::name) return make_with_shape<Dim, BernsteinQuadratic>(scheme);
   if (shape == CpGimp::name) return make_with_shape<Dim, CpGimp>(scheme);
   throw std::invalid_argument("unknown shape function '" + shape + "'");
 }

@@ -95,6 +95,7 @@ class Tlmpm final : public Scheme<Dim> {
   static void map_momentum_and_force(Body<Dim>& body, const Cache& cache, Grid<Dim>& grid) {
     const auto& p = body.particles;
     NodeRecord<Dim>* node = grid.node.data();
+    const VecU<Dim>* body_force = kernels::body_force_of(p);
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
@@ -111,6 +112,7 @@ class Tlmpm final : public Scheme<Dim> {
             for (int c = 0; c < Dim; ++c) f += vP(r, c) * st.grad[a][c];
             n.momentum[r] += st.w[a] * mv[r];
             n.force[r] -= f;
+            if (body_force) n.force[r] += st.w[a] * p.mass[i] * body_force[i][r];
           }
         }
       }

@@ -22,6 +22,13 @@ void reset_grid(Grid<Dim>& grid) {
   });
 }
 
+/// The on-demand particle field "body_force" (acceleration b_p, m/s^2, set by a module before the step),
+/// or nullptr: P2G adds f_I += phi_I m_p b_p (eq. 2.35) when it exists. Gravity is separate (m_I g).
+template <int Dim>
+const VecU<Dim>* body_force_of(const ParticleSet<Dim>& p) {
+  return p.has_field("body_force") ? p.template field<VecU<Dim>>("body_force").data() : nullptr;
+}
+
 /// P2G (eqs 2.40, 2.43, 2.36): nodal mass, momentum and internal force f_I = -sum V_p sigma_p grad phi.
 /// USF maps mass and momentum first and the force of the updated stress later: the two flags select.
 template <int Dim, class Shape, bool MassMomentum = true, bool Force = true>
@@ -29,6 +36,7 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& grid) {
   const auto& p = body.particles;
   const auto& g = grid.geometry;
   NodeRecord<Dim>* node = grid.node.data();
+  const VecU<Dim>* body_force = Force ? body_force_of(p) : nullptr;
   for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
     Stencil<Dim, Shape> st;
     const ParticleDomain<Dim, Shape> domain(p);
@@ -58,6 +66,8 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& grid) {
             for (int c = 0; c < Dim; ++c) f += vss[r][c] * st.grad[a][c];
             n.force[r] -= f;
           }
+          if (body_force)
+            for (int r = 0; r < Dim; ++r) n.force[r] += w * m * body_force[i][r];
         }
       }
     }

@@ -59,13 +59,21 @@ struct CubicBSpline {
   }
 
   static inline void evaluate(Real xi, int nodes, int& base, Real* w, Real* dw) {
+    // Particles are inside the box (the guard checks it), but (x - origin)/h of a particle on the
+    // upper face can exceed nodes - 1 by an ulp, where the face functions would be read outside.
+    xi = std::clamp<Real>(xi, 0, nodes - 1);
     const int cell = std::clamp(static_cast<int>(std::floor(xi)), 0, nodes - 2);
     base = std::clamp(cell - 1, 0, nodes - 4);
     for (int k = 0; k < support; ++k) {
       const int node = base + k;
       const Real r = xi - node;
-      if (node == 0 || node == nodes - 1) {
+      if (node == 0) {
         boundary(r, w[k], dw[k]);
+      } else if (node == nodes - 1) {
+        // Mirrored, so that a particle exactly on the upper face takes the interior side of the kink at
+        // r = 0 (boundary() alone would take the outer side there: gradients summing to -2).
+        boundary(-r, w[k], dw[k]);
+        dw[k] = -dw[k];
       } else if (node == 1) {
         near_lower(r, w[k], dw[k]);
       } else if (node == nodes - 2) {

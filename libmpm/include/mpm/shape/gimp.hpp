@@ -55,8 +55,7 @@ struct UGimp {
   template <int Dim>
   struct Domain {
     const VecU<Dim>* half0;
-    explicit Domain(const ParticleSet<Dim>& p)
-        : half0(p.template field<VecU<Dim>>("domain_half_length0").data()) {}
+    explicit Domain(const ParticleSet<Dim>& p) : half0(p.template field<VecU<Dim>>("domain_half_length0").data()) {}
     Vec<Dim> operator()(Index i) const { return half0[i]; }
   };
 };

@@ -16,8 +16,7 @@ struct ParticleDomain {
   Vec<Dim> operator()(Index) const { return Vec<Dim>::Zero(); }
 };
 template <int Dim, class Shape>
-  requires Shape::uses_domain
-struct ParticleDomain<Dim, Shape> : Shape::template Domain<Dim> {
+requires Shape::uses_domain struct ParticleDomain<Dim, Shape> : Shape::template Domain<Dim> {
   using Shape::template Domain<Dim>::Domain;
 };
 
