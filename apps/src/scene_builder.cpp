@@ -61,6 +61,8 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       for (int d = 0; d < Dim; ++d) half[d] = 0.5 * h[d] / bd.particles_per_cell[d];
       p.template add_field<VecU<Dim>>("domain_half_length0", half);
     }
+    if (scene.solver.velocity_transfer == "apic")
+      p.template add_field<MatU<Dim>>("affine_velocity", MatU<Dim>::Zero());  // C_p = 0 at the start
     if (wants("velocity_gradient")) p.template add_field<MatU<Dim>>("velocity_gradient", MatU<Dim>::Zero());
     max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);
     bodies.push_back(std::move(body));

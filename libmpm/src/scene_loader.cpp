@@ -515,8 +515,8 @@ std::vector<BodyDescription> read_bodies(const Reader& r, const Value& v, const 
 SolverDescription read_solver(const Reader& r, const Value& v, const SceneDescription& scene) {
   const int dimension = scene.dimension;
   const MapReader m = r.map(v);
-  m.allow({"scheme", "shape_function", "flip_fraction", "dt", "cfl", "end_time", "mass_cutoff", "gravity",
-           "snapshot_interval", "sort_interval"});
+  m.allow({"scheme", "shape_function", "velocity_transfer", "flip_fraction", "dt", "cfl", "end_time", "mass_cutoff",
+           "gravity", "snapshot_interval", "sort_interval"});
   SolverDescription solver;
   if (const auto scheme = m.find("scheme")) solver.scheme = r.choice(*scheme, scheme_names());
   if (const auto shape_function = m.find("shape_function")) {
@@ -533,6 +533,13 @@ SolverDescription read_solver(const Reader& r, const Value& v, const SceneDescri
     }
   }
   if (const auto flip = m.find("flip_fraction")) solver.flip_fraction = r.number(*flip, zero_to_one, "");
+  if (const auto transfer = m.find("velocity_transfer")) {
+    solver.velocity_transfer = r.choice(*transfer, {"flip", "apic"});
+    if (solver.velocity_transfer == "apic" && solver.scheme == "tlmpm")
+      r.fail(*transfer, "apic is not available with tlmpm (review Remark 35: it does not work well with the TLMPM)");
+    if (solver.velocity_transfer == "apic" && m.find("flip_fraction"))
+      r.fail(*m.find("flip_fraction"), "flip_fraction applies to velocity_transfer: flip, not to apic");
+  }
 
   const auto dt = m.find("dt");
   const auto cfl = m.find("cfl");

@@ -92,5 +92,16 @@ TEST(Transfers, MuslGimpConservesMomentum) { check_momentum("musl", "gimp", 1.0)
 TEST(Transfers, UslCpGimpConservesMomentum) { check_momentum("usl", "cpgimp", 1.0, 0.1); }
 TEST(Transfers, TlmpmGimpConservesMomentum) { check_momentum("tlmpm", "gimp", 1.0); }
 
+std::string apic_disk(const std::string& scheme) {
+  std::string s = free_disk(scheme, "linear", 1.0);
+  return s.replace(s.find("flip_fraction: "), std::string("flip_fraction: 1.000000").size(), "velocity_transfer: apic");
+}
+TEST(Transfers, MuslApicConservesMomentum) {
+  auto sim = test::simulation_from_yaml<2>(apic_disk("musl"));
+  const EnergyBalance e0 = sim->energy();
+  for (int s = 0; s < 200; ++s) sim->advance(sim->next_time_step());
+  EXPECT_LT((sim->energy().momentum - e0.momentum).norm(), 1e-11 * e0.mass);
+}
+
 }  // namespace
 }  // namespace mpm

@@ -71,6 +71,7 @@ struct BodyDescription {
 struct SolverDescription {
   std::string scheme = "musl";             ///< "usl" or "musl"
   std::string shape_function = "linear";   ///< "linear" or "cubic_bspline"
+  std::string velocity_transfer = "flip";  ///< "flip" (PIC/FLIP blend) or "apic" (affine, review §5.5.1)
   double flip_fraction = 1.0;              ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
   std::optional<double> dt;                ///< s, fixed time step (exclusive with cfl)
   std::optional<double> cfl;               ///< CFL factor of eq. 2.73, in (0, 1]

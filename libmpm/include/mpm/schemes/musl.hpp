@@ -43,6 +43,7 @@ class Musl final : public Scheme<Dim> {
     NodeRecord<Dim>* node = ctx.grid.node.data();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction;
+    MatU<Dim>* affine = kernels::affine_of(p);
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
       Stencil<Dim, Shape> st;
       const ParticleDomain<Dim, Shape> domain(p);
@@ -54,6 +55,16 @@ class Musl final : public Scheme<Dim> {
           const NodeVelocity<Dim>& nv = vel[st.node[a]];
           v_pic += st.w[a] * nv.updated;
           dv += st.w[a] * (nv.updated - nv.mapped);
+        }
+        if (affine) {
+          // APIC: PIC velocity, re-mapped with the affine term of the particle's current C_p (eq. 5.37).
+          // The new C_p is taken in the last pass from the re-mapped v^{t+dt}: from the trial velocity it
+          // would carry the small-mass blow-up (eq. 2.62) that the double mapping exists to avoid.
+          p.v[i] = v_pic;
+          const Mat<Dim> C = affine[i];
+          for (int a = 0; a < st.count; ++a)
+            node[st.node[a]].momentum += st.w[a] * p.mass[i] * (v_pic + C * st.node_offset(a));
+          continue;
         }
         const Vec<Dim> v = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
         p.v[i] = v;
@@ -89,6 +100,7 @@ class Musl final : public Scheme<Dim> {
     const Vec<Dim> upper = g.upper();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real dt = ctx.dt;
+    MatU<Dim>* affine = kernels::affine_of(p);
     Stencil<Dim, Shape> st;
     const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
@@ -103,6 +115,7 @@ class Musl final : public Scheme<Dim> {
       }
       p.x[i] += dt * v_move;
       L_out[i - begin] = L;
+      if (affine) affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].mapped); });
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
             std::isfinite(p.v[i].sum());
     }

@@ -85,6 +85,7 @@ class Usf final : public Scheme<Dim> {
     const Vec<Dim> upper = g.upper();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
+    MatU<Dim>* affine = kernels::affine_of(p);
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
       Stencil<Dim, Shape> st;
       const ParticleDomain<Dim, Shape> domain(p);
@@ -97,7 +98,12 @@ class Usf final : public Scheme<Dim> {
           v_pic += st.w[a] * nv.updated;
           dv += st.w[a] * (nv.updated - nv.mapped);
         }
-        p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
+        if (affine) {  // APIC
+          p.v[i] = v_pic;
+          affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].updated); });
+        } else {
+          p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
+        }
         p.x[i] += dt * v_pic;
         ok &= kernels::inside(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
       }

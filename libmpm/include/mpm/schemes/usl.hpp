@@ -34,6 +34,7 @@ class Usl final : public Scheme<Dim> {
     const Vec<Dim> upper = g.upper();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
+    MatU<Dim>* affine = kernels::affine_of(p);
     Stencil<Dim, Shape> st;
     const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
@@ -48,7 +49,12 @@ class Usl final : public Scheme<Dim> {
         dv += w * (nv.updated - nv.mapped);
         for (int c = 0; c < Dim; ++c) L.col(c) += nv.updated * st.grad[a][c];
       }
-      p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
+      if (affine) {  // APIC: PIC velocity plus the affine matrix
+        p.v[i] = v_pic;
+        affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].updated); });
+      } else {
+        p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
+      }
       p.x[i] += dt * v_pic;
       L_out[i - begin] = L;
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&

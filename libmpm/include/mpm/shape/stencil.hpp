@@ -27,7 +27,18 @@ struct Stencil {
 
   Index node[count];
   Real w[count];
-  Real grad[count][Dim];  ///< 1/m
+  Real grad[count][Dim];       ///< 1/m
+  Real offset[Dim][per_axis];  ///< x_I - x_p per axis for the per_axis nodes of that axis, m (APIC)
+
+  /// x_I - x_p of node a of the stencil (m).
+  Vec<Dim> node_offset(int a) const {
+    Vec<Dim> r;
+    for (int d = 0; d < Dim; ++d) {
+      r[d] = offset[d][a % per_axis];
+      a /= per_axis;
+    }
+    return r;
+  }
 
   /// `half` (m): the particle's domain half-lengths, read only by domain-based functions (GIMP).
   inline void compute(const VecU<Dim>& x, const GridGeometry<Dim>& g, const Vec<Dim>& half = Vec<Dim>::Zero()) {
@@ -39,7 +50,10 @@ struct Stencil {
         Shape::evaluate(xi, g.nodes[d], half[d] * g.inv_h[d], base[d], wa[d], da[d]);
       else
         Shape::evaluate(xi, g.nodes[d], base[d], wa[d], da[d]);
-      for (int k = 0; k < per_axis; ++k) da[d][k] *= g.inv_h[d];
+      for (int k = 0; k < per_axis; ++k) {
+        da[d][k] *= g.inv_h[d];
+        offset[d][k] = (base[d] + k - xi) * g.h[d];
+      }
     }
     if constexpr (Dim == 1) {
       for (int i = 0; i < per_axis; ++i) {
