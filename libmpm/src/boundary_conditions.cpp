@@ -13,6 +13,25 @@ GridBoundary<Dim>::GridBoundary(const GridGeometry<Dim>& g, const std::array<Fac
     for (Index n = 0; n < g.node_count(); ++n)
       if (g.node_indices(n)[axis] == layer) nodes.push_back(n);
     for (int c = 0; c < Dim; ++c) {
+      if (!faces[face].traction[c]) continue;
+      Traction k;
+      k.component = c;
+      k.value = std::make_shared<Expression>(*faces[face].traction[c], std::vector<std::string>{"t"});
+      k.nodes = nodes;
+      for (Index n : nodes) {
+        // Tributary area: half a cell on each tangential axis, halved again at the face's edges.
+        const auto ijk = g.node_indices(n);
+        Real area = 1;
+        for (int d = 0; d < Dim; ++d) {
+          if (d == axis) continue;
+          const bool edge = ijk[d] == 0 || ijk[d] == g.nodes[d] - 1;
+          area *= edge ? 0.5 * g.h[d] : g.h[d];
+        }
+        k.area.push_back(area);
+      }
+      tractions_.push_back(std::move(k));
+    }
+    for (int c = 0; c < Dim; ++c) {
       const auto& constraint = faces[face].component[c];
       if (!constraint) continue;
       Constraint k;
@@ -38,6 +57,17 @@ void GridBoundary<Dim>::apply(std::vector<NodeVelocity<Dim>>& velocity, VecU<Dim
   for (const auto& k : constraints_) {
     const Real value = k.value ? (*k.value)(0, 0, 0, t) : 0;  // evaluated once per face, not per node
     for (Index n : k.nodes) (velocity[n].*member)[k.component] = value;
+  }
+}
+
+template <int Dim>
+void GridBoundary<Dim>::apply_traction(std::vector<NodeRecord<Dim>>& node, Real t) const {
+  for (const auto& k : tractions_) {
+    const Real value = (*k.value)(0, 0, 0, t);
+    for (std::size_t j = 0; j < k.nodes.size(); ++j) {
+      NodeRecord<Dim>& n = node[k.nodes[j]];
+      if (n.mass > 0) n.force[k.component] += value * k.area[j];
+    }
   }
 }
 

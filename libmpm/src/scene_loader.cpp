@@ -314,11 +314,25 @@ void read_boundary(const Reader& r, const Value& v, int dimension, GridDescripti
     boundary.where = r.location(e.value.mark);
     if (e.value.node.IsMap()) {
       const MapReader condition = r.map(e.value);
-      condition.allow({"velocity"});
-      const auto components = r.list(condition.required("velocity"), dimension, "components");
-      for (int d = 0; d < dimension; ++d) {
-        if (components[d].node.IsScalar() && components[d].node.Scalar() == "free") continue;
-        boundary.component[d] = r.expression(components[d], {"t"});
+      condition.allow({"velocity", "traction"});
+      const auto velocity = condition.find("velocity");
+      const auto traction = condition.find("traction");
+      if (!velocity && !traction) r.fail(e.value, "expected velocity: [...] and/or traction: [...]");
+      if (velocity) {
+        const auto components = r.list(*velocity, dimension, "components");
+        for (int d = 0; d < dimension; ++d) {
+          if (components[d].node.IsScalar() && components[d].node.Scalar() == "free") continue;
+          boundary.component[d] = r.expression(components[d], {"t"});
+        }
+      }
+      if (traction) {
+        const auto components = r.list(*traction, dimension, "components");
+        for (int d = 0; d < dimension; ++d) {
+          if (boundary.component[d])
+            r.fail(components[d],
+                   fmt::format("component {} of face {} has both a velocity and a traction", axis_names[d], e.key));
+          boundary.traction[d] = r.expression(components[d], {"t"});
+        }
       }
     } else if (e.value.node.IsScalar()) {
       const std::string kind = r.choice(e.value, {"fixed", "slip", "free"});

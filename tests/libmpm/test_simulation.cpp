@@ -256,3 +256,39 @@ TEST(Simulation, PrescribedFaceVelocityFollowsExpressionOfTime) {
 
 }  // namespace
 }  // namespace mpm
+
+namespace mpm {
+namespace {
+
+// A prescribed face traction (review §4.2.2) is an external force: with nothing else acting, the
+// body's momentum grows as traction x face area x time, whatever the scheme.
+TEST(Simulation, FaceTractionGivesNewtonsSecondLaw) {
+  for (const std::string scheme : {"tlmpm", "musl", "usl", "usf"}) {
+    const std::string bar =
+        "dimension: 1\n"
+        "grid: {origin: [0], extent: [1], cell_size: 0.05, boundary: {x_max: {traction: [\"-2000\"]}}}\n"
+        "materials: {m: {model: neo_hookean, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}\n"
+        "bodies: [{material: m, shape: {type: box, min: [0], max: [1]}}]\n"
+        "solver: {scheme: " +
+        scheme + ", cfl: 0.5, end_time: 0.01}\n";
+    auto sim = test::simulation_from_yaml<1>(bar);
+    sim->run();
+    EXPECT_NEAR(sim->energy().momentum[0], -2000 * sim->time(), 1e-9 * 2000 * sim->time()) << scheme;
+  }
+  // 2D: a traction in y on the top face of a block filling the grid: force = traction x width (1.5 m).
+  const std::string block =
+      "dimension: 2\n"
+      "grid: {origin: [0, 0], extent: [1.5, 1], cell_size: 0.1, boundary: {y_max: {traction: [0, \"100*t\"]}}}\n"
+      "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}\n"
+      "bodies: [{material: m, shape: {type: box, min: [0, 0], max: [1.5, 1]}}]\n"
+      "solver: {scheme: tlmpm, dt: 1.0e-4, end_time: 0.05}\n";
+  auto sim = test::simulation_from_yaml<2>(block);
+  sim->run();
+  // Explicit in time: the force at the start of each step, sum_n 100 n dt * 1.5 * dt = 150 dt^2 N(N-1)/2.
+  const Real dt = 1e-4, n = std::round(sim->time() / dt);
+  EXPECT_NEAR(sim->energy().momentum[1], 150 * dt * dt * n * (n - 1) / 2, 1e-9);
+  EXPECT_NEAR(sim->energy().momentum[0], 0, 1e-12);
+}
+
+}  // namespace
+}  // namespace mpm

@@ -26,6 +26,11 @@ class GridBoundary {
   GridBoundary& operator=(GridBoundary&&) noexcept;
 
   bool empty() const { return constraints_.empty(); }
+  bool has_traction() const { return !tractions_.empty(); }
+  /// Adds the prescribed face tractions at time t to the nodal forces: f_I += t(t) A_I, with A_I the
+  /// face area of node I (a cell face shared by its corner nodes; per unit out-of-plane size in 1D/2D).
+  /// Nodes without mass get nothing (they are not part of the body).
+  void apply_traction(std::vector<NodeRecord<Dim>>& node, Real t) const;
   /// Sets the constrained components of `member` of every face node to their value at time t.
   void apply(std::vector<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member, Real t) const;
 
@@ -36,6 +41,13 @@ class GridBoundary {
     std::vector<Index> nodes;
   };
   std::vector<Constraint> constraints_;
+  struct Traction {
+    int component = 0;
+    std::shared_ptr<const Expression> value;  ///< Pa, of t
+    std::vector<Index> nodes;
+    std::vector<Real> area;  ///< m^2 per node
+  };
+  std::vector<Traction> tractions_;
 };
 
 }  // namespace mpm

@@ -26,6 +26,9 @@ using ComponentConstraint = std::optional<std::string>;
 /// Boundary condition on one face of the grid box.
 struct FaceBoundary {
   std::array<ComponentConstraint, 3> component;  ///< per velocity component (x, y, z)
+  /// Prescribed traction per component (Pa), a muparser expression of t; empty = none. Applied as nodal
+  /// forces on the face nodes (tributary face area), review §4.2.2.
+  std::array<std::optional<std::string>, 3> traction;
   SourceLocation where;
 };
 

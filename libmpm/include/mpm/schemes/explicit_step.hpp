@@ -22,6 +22,7 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
   }
   reset_grid(ctx.grid);
   for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape>(body, ctx.grid);
+  if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(ctx.grid.node, ctx.time);
   ctx.hooks.after_p2g(ctx);
   update_grid_velocity(ctx.grid, ctx.settings, ctx.dt);
   if (!ctx.boundary.empty()) {

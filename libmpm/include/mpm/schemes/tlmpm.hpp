@@ -58,6 +58,7 @@ class Tlmpm final : public Scheme<Dim> {
       }
     });
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) map_momentum_and_force(ctx.bodies[b], stencils_[b], grid);
+    if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time);  // nominal traction
     ctx.hooks.after_p2g(ctx);
     kernels::update_grid_velocity(grid, ctx.settings, ctx.dt);
     if (!ctx.boundary.empty()) {

@@ -36,6 +36,7 @@ class Usf final : public Scheme<Dim> {
         ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) { return deform(body, ctx, begin, end, L); });
 
     for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, false, true>(body, grid);
+    if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time);
     ctx.hooks.after_p2g(ctx);
     momentum_update(ctx);
     if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);
