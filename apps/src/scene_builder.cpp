@@ -55,6 +55,11 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       auto& x0 = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) x0[i] = p.x[i];
     }
+    if (wants("domain_size") && !find_shape_function(scene.solver.shape_function)->particle_domain)
+      throw SceneError(scene.output.where, "output.fields",
+                       "domain_size is only defined for shape functions with particle domains (gimp, cpgimp), not " +
+                           scene.solver.shape_function);
+    body.stretched_domain = scene.solver.shape_function == "cpgimp";
     if (find_shape_function(scene.solver.shape_function)->particle_domain) {
       // GIMP: the initial particle domain is the sub-cell the particle was placed in (review §3.3).
       VecU<Dim> half;

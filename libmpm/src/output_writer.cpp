@@ -8,8 +8,8 @@
 namespace mpm {
 
 std::vector<std::string> output_field_names() {
-  return {"velocity", "displacement",      "stress",   "deformation_gradient", "mass", "volume", "density",
-          "body",     "velocity_gradient", "pressure", "von_mises_stress"};
+  return {"velocity", "displacement",      "stress",   "deformation_gradient", "mass",       "volume", "density",
+          "body",     "velocity_gradient", "pressure", "von_mises_stress",     "domain_size"};
 }
 
 namespace {
@@ -62,6 +62,16 @@ void append_field(const std::string& name, const Body<Dim>& b, std::vector<doubl
       const Mat3 dev = s - s.trace() / 3 * Mat3::Identity();
       out.push_back(std::sqrt(1.5 * dev.squaredNorm()));
     });
+  } else if (name == "domain_size") {
+    // GIMP particle domain lengths per axis, l_p = 2 x half-length (cpGIMP: stretched by diag F, eq.
+    // 3.14); in ParaView: Glyph filter, glyph type Box, scale array domain_size, scale by components.
+    const auto& half0 = p.template field<VecU<Dim>>("domain_half_length0");
+    const bool stretched = b.stretched_domain;
+    each([&](Index i) {
+      VecU<Dim> l = 2 * half0[i];
+      if (stretched) l = l.cwiseProduct(VecU<Dim>(p.F[i].diagonal()));
+      pad3<Dim>(out, l);
+    });
   } else if (name == "id") {
     each([&](Index i) { out.push_back(p.id[i]); });
   } else {
@@ -70,7 +80,7 @@ void append_field(const std::string& name, const Body<Dim>& b, std::vector<doubl
 }
 
 int components(const std::string& name) {
-  if (name == "velocity" || name == "displacement") return 3;
+  if (name == "velocity" || name == "displacement" || name == "domain_size") return 3;
   if (name == "stress") return 6;
   if (name == "deformation_gradient" || name == "velocity_gradient") return 9;
   return 1;

@@ -292,3 +292,37 @@ TEST(Simulation, FaceTractionGivesNewtonsSecondLaw) {
 
 }  // namespace
 }  // namespace mpm
+
+namespace mpm {
+namespace {
+
+// domain_size output: l_p(0) = h/ppc, stretched by F_11 with cpGIMP (eq. 3.14), fixed with uGIMP.
+TEST(Simulation, DomainSizeOutputFollowsF) {
+  for (const std::string shape : {"cpgimp", "gimp"}) {
+    const std::string bar =
+        "dimension: 1\n"
+        "grid: {origin: [0], extent: [2], cell_size: 0.1}\n"
+        "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e3, poisson_ratio: 0}}\n"
+        "bodies: [{material: m, shape: {type: box, min: [0.5], max: [1.0]}, velocity: [\"0.2*(x-0.75)\"]}]\n"
+        "solver: {shape_function: " +
+        shape +
+        ", cfl: 0.5, end_time: 0.05}\n"
+        "output: {fields: [domain_size, deformation_gradient]}\n";
+    auto sim = test::simulation_from_yaml<1>(bar);
+    sim->run();
+    OutputWriter<1> writer(std::filesystem::temp_directory_path() / "mpm_domain_test", "p",
+                           {"domain_size", "deformation_gradient"}, false, 0);
+    const io::PointCloud cloud = writer.particle_cloud(*sim);
+    std::filesystem::remove_all(writer.directory());
+    const auto& size = cloud.fields.at(0).values;
+    const auto& F = cloud.fields.at(1).values;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      const double expected = 0.05 * (shape == "cpgimp" ? F[9 * i] : 1.0);  // h / 2 particles per cell
+      ASSERT_NEAR(size[3 * i], expected, 1e-15) << shape;
+      ASSERT_EQ(size[3 * i + 1], 0.0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mpm

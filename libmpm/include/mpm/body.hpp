@@ -16,6 +16,7 @@ struct Body {
   int index = 0;  ///< position in the scene's body list (output field `body`)
   ParticleSet<Dim> particles;
   std::shared_ptr<Material<Dim>> material;  ///< stateless: shared by snapshots
+  bool stretched_domain = false;            ///< the particle domain follows diag F (cpGIMP), for output
   SlabBins bins;                            ///< rebuilt every step by the scheme
   /// Scratch: velocity gradients of all particles, used only when a module runs between the
   /// grid-to-particle transfer and the stress update (otherwise a per-block buffer is enough).
