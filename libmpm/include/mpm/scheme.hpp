@@ -33,6 +33,15 @@ class Scheme {
   virtual bool positions_must_stay_in_grid() const { return true; }
 };
 
+/// What every scheme templated on a shape function reports about it.
+template <int Dim, class Shape>
+class ShapedScheme : public Scheme<Dim> {
+ public:
+  std::string_view shape_function() const override { return Shape::name; }
+  int slab_cells() const override { return Shape::slab_cells; }
+  int min_cells() const override { return Shape::min_cells; }
+};
+
 /// "usl" or "musl" with "linear" or "cubic_bspline"; throws std::invalid_argument listing valid names.
 template <int Dim>
 std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape_function);
@@ -47,6 +56,7 @@ struct ShapeFunctionInfo {
   int min_cells = 1;             ///< cells an axis needs at least
   bool even_cells = false;       ///< the number of cells per axis must be even (Bernstein: two cells per element)
   bool particle_domain = false;  ///< weights depend on the particle domain (GIMP): field "domain_half_length0"
+  bool tlmpm_only = false;       ///< negative weights: only with the total-Lagrangian scheme (Lagrange quadratic)
 };
 /// The entry for `name`, or nullptr.
 const ShapeFunctionInfo* find_shape_function(const std::string& name);

@@ -11,12 +11,9 @@
 namespace mpm {
 
 template <int Dim, class Shape>
-class Musl final : public Scheme<Dim> {
+class Musl final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "musl"; }
-  std::string_view shape_function() const override { return Shape::name; }
-  int slab_cells() const override { return Shape::slab_cells; }
-  int min_cells() const override { return Shape::min_cells; }
 
   void advance(StepContext<Dim>& ctx) override {
     kernels::map_and_update_grid<Dim, Shape>(ctx);

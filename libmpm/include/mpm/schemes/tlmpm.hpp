@@ -18,12 +18,9 @@
 namespace mpm {
 
 template <int Dim, class Shape>
-class Tlmpm final : public Scheme<Dim> {
+class Tlmpm final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "tlmpm"; }
-  std::string_view shape_function() const override { return Shape::name; }
-  int slab_cells() const override { return Shape::slab_cells; }
-  int min_cells() const override { return Shape::min_cells; }
   bool reorders_particles() const override { return false; }
   bool positions_must_stay_in_grid() const override { return false; }
 

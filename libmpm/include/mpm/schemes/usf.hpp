@@ -13,12 +13,9 @@
 namespace mpm {
 
 template <int Dim, class Shape>
-class Usf final : public Scheme<Dim> {
+class Usf final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "usf"; }
-  std::string_view shape_function() const override { return Shape::name; }
-  int slab_cells() const override { return Shape::slab_cells; }
-  int min_cells() const override { return Shape::min_cells; }
 
   void advance(StepContext<Dim>& ctx) override {
     auto& grid = ctx.grid;

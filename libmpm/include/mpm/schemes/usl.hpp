@@ -9,12 +9,9 @@
 namespace mpm {
 
 template <int Dim, class Shape>
-class Usl final : public Scheme<Dim> {
+class Usl final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "usl"; }
-  std::string_view shape_function() const override { return Shape::name; }
-  int slab_cells() const override { return Shape::slab_cells; }
-  int min_cells() const override { return Shape::min_cells; }
 
   void advance(StepContext<Dim>& ctx) override {
     kernels::map_and_update_grid<Dim, Shape>(ctx);

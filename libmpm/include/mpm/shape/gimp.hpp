@@ -42,8 +42,7 @@ inline void evaluate(Real xi, int nodes, Real a, int& base, Real* w, Real* dw) {
 
 /// Shape functions whose weights depend on a particle domain provide `uses_domain = true`, an
 /// `evaluate` taking the half-length, and a `Domain<Dim>` that resolves the particle data once per kernel.
-struct UGimp {
-  static constexpr const char* name = "gimp";
+struct GimpFunctions {
   static constexpr int support = 4;
   static constexpr int slab_cells = 5;  // nodes c-1..c+2, and c-2..c+1 next to the upper face
   static constexpr int min_cells = 3;
@@ -51,6 +50,10 @@ struct UGimp {
   static inline void evaluate(Real xi, int nodes, Real a, int& base, Real* w, Real* dw) {
     gimp_detail::evaluate(xi, nodes, a, base, w, dw);
   }
+};
+
+struct UGimp : GimpFunctions {
+  static constexpr const char* name = "gimp";
   /// Half-lengths l_p(0)/2 (m) from the field "domain_half_length0".
   template <int Dim>
   struct Domain {
@@ -60,15 +63,8 @@ struct UGimp {
   };
 };
 
-struct CpGimp {
+struct CpGimp : GimpFunctions {
   static constexpr const char* name = "cpgimp";
-  static constexpr int support = 4;
-  static constexpr int slab_cells = 5;
-  static constexpr int min_cells = 3;
-  static constexpr bool uses_domain = true;
-  static inline void evaluate(Real xi, int nodes, Real a, int& base, Real* w, Real* dw) {
-    gimp_detail::evaluate(xi, nodes, a, base, w, dw);
-  }
   /// Half-lengths l_p(0)/2 F_aa (m), eq. 3.14.
   template <int Dim>
   struct Domain {
