@@ -536,6 +536,10 @@ SolverDescription read_solver(const Reader& r, const Value& v, const SceneDescri
   if (const auto shape_function = m.find("shape_function")) {
     solver.shape_function = r.choice(*shape_function, shape_function_names());
     const ShapeFunctionInfo& info = *find_shape_function(solver.shape_function);
+    if (info.tlmpm_only && solver.scheme != "tlmpm")
+      r.fail(*shape_function, fmt::format("{} has negative weights and is only valid with scheme: tlmpm (particles at "
+                                          "fixed reference positions); the scheme is {}",
+                                          info.name, solver.scheme));
     for (int d = 0; d < dimension; ++d) {
       if (scene.grid.cells[d] < info.min_cells)
         r.fail(*shape_function, fmt::format("{} needs at least {} cells per axis; the grid has {} on axis {}",

@@ -8,6 +8,7 @@
 #include "mpm/shape/bernstein_quadratic.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/gimp.hpp"
+#include "mpm/shape/lagrange_quadratic.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/quadratic_bspline.hpp"
 
@@ -33,13 +34,14 @@ ShapeFunctionInfo info() {
   i.min_cells = Shape::min_cells;
   if constexpr (requires { Shape::cell_multiple; }) i.even_cells = Shape::cell_multiple == 2;
   if constexpr (requires { Shape::uses_domain; }) i.particle_domain = Shape::uses_domain;
+  if constexpr (requires { Shape::tlmpm_only; }) i.tlmpm_only = Shape::tlmpm_only;
   return i;
 }
 // Every shape function, once: the scene loader's list of names and grid checks come from here.
 const std::vector<ShapeFunctionInfo>& shape_functions() {
   static const std::vector<ShapeFunctionInfo> all = {
-      info<LinearHat>(), info<CubicBSpline>(),     info<UGimp>(),
-      info<CpGimp>(),    info<QuadraticBSpline>(), info<BernsteinQuadratic>()};
+      info<LinearHat>(),          info<CubicBSpline>(),     info<UGimp>(), info<CpGimp>(), info<QuadraticBSpline>(),
+      info<BernsteinQuadratic>(), info<LagrangeQuadratic>()};
   return all;
 }
 }  // namespace
@@ -64,6 +66,11 @@ std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::s
   if (shape == QuadraticBSpline::name) return make_with_shape<Dim, QuadraticBSpline>(scheme);
   if (shape == BernsteinQuadratic::name) return make_with_shape<Dim, BernsteinQuadratic>(scheme);
   if (shape == CpGimp::name) return make_with_shape<Dim, CpGimp>(scheme);
+  if (shape == LagrangeQuadratic::name) {  // negative lobes: total-Lagrangian only (tlmpm_only)
+    if (scheme == "tlmpm") return std::make_unique<Tlmpm<Dim, LagrangeQuadratic>>();
+    throw std::invalid_argument("shape function 'lagrange_quadratic' is only valid with scheme 'tlmpm', not '" +
+                                scheme + "'");
+  }
   throw std::invalid_argument("unknown shape function '" + shape + "'");
 }
 
