@@ -6,7 +6,8 @@
 ///   (mv)_I = sum phi_I(X_p) m_p v_p;  f_I = -sum V_p^0 P_p grad_0 phi_I(X_p) + m_I g, P = J sigma F^-T;
 ///   v~_I = (mv + dt f)/m;  v_p = alpha (v_p + sum phi (v~ - v)) + (1 - alpha) sum phi v~;
 ///   (mv)_I^{t+dt} = sum phi m_p v_p -> v_I^{t+dt};  dF/dt = sum v_I^{t+dt} (x) grad_0 phi (eq. 2.67);
-///   F += dt dF/dt;  L = dF/dt F^-1 (eq. 2.69);  stress update;  x_p += dt sum phi v~_I (for output only).
+///   F += dt dF/dt;  L = dF/dt F^-1 (eq. 2.69);  stress update;  x_p += dt sum phi v_I^{t+dt} (for output
+///   only; with the same velocity as F, so that x_p - X_p stays the displacement whose gradient is F - I).
 /// The grid only needs to cover the reference shape: current positions may leave it. Particles are
 /// never reordered (the cache is in particle order). There is no automatic contact between bodies.
 
@@ -153,7 +154,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
       Vec<Dim> v_move = Vec<Dim>::Zero();
       for (int a = 0; a < st.count; ++a) {
         const NodeVelocity<Dim>& nv = vel[st.node[a]];
-        v_move += st.w[a] * nv.updated;
+        v_move += st.w[a] * nv.mapped;  // the re-mapped v^{t+dt}, like F (Alg. 3): positions stay consistent with F
         for (int c = 0; c < Dim; ++c) Fdot.col(c) += nv.mapped * st.grad[a][c];
       }
       p.x[i] += ctx.dt * v_move;
