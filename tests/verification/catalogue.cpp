@@ -1,0 +1,168 @@
+#include "catalogue.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "mms.hpp"
+#include "mpm/app/scene_builder.hpp"
+#include "mpm/scene_loader.hpp"
+#include "mpm/stability_error.hpp"
+#include "tlmpm_paper.hpp"
+#include "vortex.hpp"
+
+namespace mpm::verification {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+template <class Result>
+CaseRun from(const Result& r, double error) {
+  CaseRun c;
+  c.error = r.failure.empty() ? error : inf;
+  c.wall_seconds = r.wall_seconds;
+  c.steps = r.steps;
+  c.failure = r.failure;
+  return c;
+}
+
+/// Bar vibration, mode 1 (review §6.1.1): max |v_cm - v0/(beta L) cos(omega t)| over one period, relative
+/// to the amplitude 0.063662 (eq. 6.4). E = 100, rho = 1, L = 25, nu = 0, 2 particles per cell, dt = 0.1 h/c.
+CaseRun bar_mode1(const std::string& scheme, const std::string& shape, int cells) {
+  const double L = 25, h = L / cells, amplitude = 0.2 / std::numbers::pi, omega = 2 * std::numbers::pi / 10;
+  const int extra = shape == "linear" ? 2 : 4;  // free cells beyond the free end (even, for bernstein)
+  const std::string yaml =
+      "dimension: 1\n"
+      "grid: {origin: [0], extent: [" +
+      std::to_string(h * (cells + extra)) + "], cell_size: " + std::to_string(h) +
+      ", boundary: {x_min: fixed}}\n"
+      "materials: {bar: {model: linear_elastic, density: 1, youngs_modulus: 100, poisson_ratio: 0}}\n"
+      "bodies: [{material: bar, shape: {type: box, min: [0], max: [25]}, particles_per_cell: 2,\n"
+      "          velocity: [\"0.1*sin(_pi*x/50)\"]}]\n"
+      "solver: {scheme: " +
+      scheme + ", shape_function: " + shape + ", dt: " + std::to_string(0.01 * h) + ", end_time: 10}\n";
+  CaseRun run;
+  run.h = h;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    auto sim = app::build_simulation<1>(parse_scene(yaml, "bar_mode1"));
+    run.particles = sim->particle_count();
+    double worst = 0;
+    sim->run([&](const Simulation<1>& s) {
+      const auto e = s.energy();
+      worst = std::max(worst, std::abs(e.momentum[0] / e.mass - amplitude * std::cos(omega * s.time())));
+    });
+    run.steps = sim->step();
+    run.error = worst / amplitude;
+  } catch (const StabilityError& e) {
+    run.error = inf;
+    run.failure = e.what();
+  }
+  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+void add(std::vector<VerificationCase>& list, std::string name, std::string reference, std::string measure,
+         std::string scheme, std::string shape, std::vector<int> resolutions, std::function<CaseRun(int)> run) {
+  list.push_back({std::move(name) + "/" + scheme + "/" + shape, std::move(reference), std::move(measure), scheme, shape,
+                  std::move(resolutions), std::move(run)});
+}
+
+}  // namespace
+
+std::vector<VerificationCase> catalogue(bool quick) {
+  std::vector<VerificationCase> list;
+  const auto ladder = [&](std::vector<int> full, std::size_t keep) {
+    if (quick) full.resize(std::min(keep, full.size()));
+    return full;
+  };
+
+  // Bar vibration (review §6.1.1).
+  for (const char* scheme : {"usl", "musl", "usf", "tlmpm"})
+    for (const char* shape : {"linear", "cubic_bspline"})
+      add(list, "bar_mode1", "exact modal solution, review eq. 6.4", "max |v_cm error| / amplitude (-)", scheme, shape,
+          ladder({8, 16, 32, 64}, 2), [=](int n) { return bar_mode1(scheme, shape, n); });
+
+  // Manufactured solutions (review §6.2.1-6.2.2, App. A).
+  struct Mms {
+    int dimension;
+    double G;
+    const char* scheme;
+    const char* shape;
+    std::vector<int> cells;
+  };
+  std::vector<Mms> mms;
+  for (double G : {1e-4, 0.05}) {
+    for (const char* shape : {"linear", "cubic_bspline", "bernstein"})
+      mms.push_back({1, G, "tlmpm", shape, {16, 32, 64, 128}});
+    for (const char* shape : {"linear", "cubic_bspline", "gimp", "cpgimp"})
+      mms.push_back({1, G, "musl", shape, {16, 32, 64, 128}});
+    mms.push_back({1, G, "usl", "linear", {16, 32, 64, 128}});
+    mms.push_back({1, G, "usf", "linear", {16, 32, 64, 128}});
+  }
+  for (const char* shape : {"linear", "cubic_bspline", "bernstein"})
+    mms.push_back({2, 0.05, "tlmpm", shape, {8, 16, 32}});
+  mms.push_back({2, 0.05, "musl", "linear", {8, 16, 32}});
+  for (const char* shape : {"linear", "cubic_bspline"}) mms.push_back({3, 0.05, "tlmpm", shape, {4, 8, 16}});
+  for (const auto& m : mms) {
+    const std::string name = "mms_" + std::to_string(m.dimension) + "d_" + (m.G < 1e-3 ? "small" : "large");
+    add(list, name, "manufactured solution, review §6.2 and App. A (G = " + std::to_string(m.G) + ")", "e1 (m)",
+        m.scheme, m.shape, ladder(m.cells, 2), [m](int n) {
+          MmsSpec s{m.dimension, m.scheme, m.shape, n, 2, m.G, 1.0};
+          const MmsResult r = run_mms(s);
+          CaseRun c = from(r, r.e1);
+          c.particles = r.particles;
+          c.h = r.h;
+          return c;
+        });
+  }
+
+  // Generalized vortex (review §6.2.3).
+  for (const auto& [scheme, shape] : std::vector<std::pair<const char*, const char*>>{
+           {"tlmpm", "linear"}, {"tlmpm", "bernstein"}, {"musl", "linear"}})
+    add(list, "vortex", "manufactured solution, review §6.2.3", "e1 (m)", scheme, shape, ladder({40, 60, 80}, 1),
+        [=](int n) {
+          VortexSpec s;
+          s.scheme = scheme;
+          s.shape_function = shape;
+          s.cells_across = n;
+          s.particles_per_cell_per_axis = 2;
+          s.flip_fraction = 1;
+          const VortexResult r = run_vortex(s);
+          CaseRun c = from(r, r.e1);
+          c.particles = r.particles;
+          c.h = r.h;
+          return c;
+        });
+
+  // The 000 paper's 1D TLMPM cases.
+  for (const char* shape : {"lagrange_quadratic", "linear"}) {
+    add(list, "tlmpm_column", "exact static Neo-Hookean column (000 paper, case a)",
+        "max nodal |u - u_exact| / |u(L)| (-)", "tlmpm", shape, ladder({10, 20, 40}, 1), [=](int n) {
+          ColumnSpec s;
+          s.shape_function = shape;
+          s.elements = n;
+          s.ramp = "smooth";
+          s.ramp_gravity = true;
+          const ColumnResult r = run_column(s);
+          CaseRun c = from(r, r.max_nodal_error);
+          c.h = 0.1 / (2 * n);
+          return c;
+        });
+    add(list, "tlmpm_step_load", "series solution, 000 paper eq. 70 (load 1.27e4 Pa)",
+        "RMS tip error / (2|tau|L/E) (-)", "tlmpm", shape, ladder({8, 16, 32, 64}, 2), [=](int n) {
+          StepLoadSpec s;
+          s.shape_function = shape;
+          s.elements = n;
+          s.traction = -1.27e4;
+          const StepLoadResult r = run_step_load(s);
+          CaseRun c = from(r, r.rms_relative);
+          c.h = r.element_length / 2;
+          return c;
+        });
+  }
+  return list;
+}
+
+}  // namespace mpm::verification
