@@ -10,56 +10,12 @@
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/quadratic_bspline.hpp"
 #include "mpm/shape/stencil.hpp"
+#include "shape_properties.hpp"
 
 namespace mpm {
 namespace {
 
-template <int Dim, class Shape>
-void check_properties(int cells) {
-  Vec<Dim> origin, h;
-  std::array<int, Dim> n{};
-  for (int d = 0; d < Dim; ++d) {
-    origin[d] = -0.3 * (d + 1);
-    h[d] = 0.1 + 0.05 * d;
-    n[d] = cells + d;
-  }
-  const GridGeometry<Dim> g(origin, h, n);
-  std::mt19937 rng(42);
-  std::uniform_real_distribution<Real> u(0, 1);
-  Stencil<Dim, Shape> st;
-  for (int trial = 0; trial < 2000; ++trial) {
-    VecU<Dim> x;
-    for (int d = 0; d < Dim; ++d) {
-      // A third of the points in the first or last cell, where boundary functions apply.
-      Real xi = u(rng) * n[d];
-      if (trial % 3 == 1) xi = u(rng);
-      if (trial % 3 == 2) xi = n[d] - u(rng);
-      if (trial % 97 == 0) xi = 0;     // exactly on the lower face
-      if (trial % 89 == 0) xi = n[d];  // exactly on the upper face
-      x[d] = origin[d] + xi * h[d];
-    }
-    st.compute(x, g);
-    Real sum_w = 0;
-    Vec<Dim> sum_grad = Vec<Dim>::Zero(), reproduced = Vec<Dim>::Zero();
-    Mat<Dim> grad_x = Mat<Dim>::Zero();
-    for (int a = 0; a < st.count; ++a) {
-      ASSERT_GE(st.w[a], -1e-14) << "weights must be non-negative";
-      ASSERT_GE(st.node[a], 0);
-      ASSERT_LT(st.node[a], g.node_count());
-      const Vec<Dim> xI = g.node_position(g.node_indices(st.node[a]));
-      Vec<Dim> grad;
-      for (int d = 0; d < Dim; ++d) grad[d] = st.grad[a][d];
-      sum_w += st.w[a];
-      sum_grad += grad;
-      reproduced += st.w[a] * xI;
-      grad_x += xI * grad.transpose();
-    }
-    ASSERT_NEAR(sum_w, 1, 1e-13);
-    ASSERT_LT(sum_grad.norm(), 1e-11);
-    ASSERT_LT((reproduced - Vec<Dim>(x)).norm(), 1e-12);
-    ASSERT_LT((grad_x - Mat<Dim>::Identity()).norm(), 1e-11);
-  }
-}
+using test::check_properties;
 
 TEST(ShapeFunctions, LinearHat1D) { check_properties<1, LinearHat>(7); }
 TEST(ShapeFunctions, LinearHat2D) { check_properties<2, LinearHat>(5); }

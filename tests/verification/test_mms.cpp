@@ -13,6 +13,8 @@
 // 1.76, 1.61, 1.44 from N = 8 to 256 (2.00 with pure FLIP).
 #include <gtest/gtest.h>
 
+#include "convergence.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -23,6 +25,9 @@
 
 namespace mpm {
 namespace {
+
+using verification::join;
+using verification::observed_rate;
 
 constexpr double not_asserted = std::numeric_limits<double>::quiet_NaN();
 
@@ -36,27 +41,6 @@ struct Case {
   double min_rate;         ///< lower bound of that rate (NaN: reported, not asserted)
   double max_e1;           ///< every e1 must be finite and below this (m)
 };
-
-/// Least-squares slope of log e against log h over points [0, n).
-double observed_rate(const std::vector<double>& h, const std::vector<double>& e, std::size_t n) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = std::log(h[i]), y = std::log(e[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
-std::string join(const std::vector<double>& v, const char* format) {
-  std::string s;
-  char buf[32];
-  for (double x : v) {
-    std::snprintf(buf, sizeof buf, format, x);
-    if (!s.empty()) s += ' ';
-    s += buf;
-  }
-  return s;
-}
 
 void check(const Case& c) {
   std::vector<double> h, e1, e2, cells;
@@ -72,7 +56,7 @@ void check(const Case& c) {
     wall += r.wall_seconds;
   }
   const std::size_t fit = c.fit_points > 0 ? static_cast<std::size_t>(c.fit_points) : h.size();
-  const double rate_all = observed_rate(h, e1, h.size()), rate_fit = observed_rate(h, e1, fit);
+  const double rate_all = observed_rate(h, e1), rate_fit = observed_rate(h, e1, 0, fit);
   char bound[48] = "none";
   if (!std::isnan(c.min_rate)) std::snprintf(bound, sizeof bound, ">= %.2f", c.min_rate);
   std::printf(

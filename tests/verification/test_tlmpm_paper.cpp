@@ -12,6 +12,8 @@
 // Every bound below was measured (numbers in docs/verification.md) and is asserted with a margin.
 #include <gtest/gtest.h>
 
+#include "convergence.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -24,27 +26,8 @@
 namespace mpm {
 namespace {
 
-/// Least-squares slope of log e against log h.
-double observed_rate(const std::vector<double>& h, const std::vector<double>& e) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(h.size());
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    const double x = std::log(h[i]), y = std::log(e[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
-std::string join(const std::vector<double>& v, const char* format) {
-  std::string s;
-  char buf[32];
-  for (double x : v) {
-    std::snprintf(buf, sizeof buf, format, x);
-    if (!s.empty()) s += ' ';
-    s += buf;
-  }
-  return s;
-}
+using verification::join;
+using verification::observed_rate;
 
 void print(const char* label, const ColumnSpec& s, const ColumnResult& r) {
   std::printf(

@@ -13,6 +13,8 @@
 // The whole file takes 15-23 s on one core (Release), half of it for the cubic B-spline.
 #include <gtest/gtest.h>
 
+#include "convergence.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -26,6 +28,9 @@
 namespace mpm {
 namespace {
 
+using verification::join;
+using verification::observed_rate;
+
 VortexSpec spec(const char* scheme, const char* shape, int cells) {
   VortexSpec s;
   s.scheme = scheme;
@@ -33,28 +38,6 @@ VortexSpec spec(const char* scheme, const char* shape, int cells) {
   s.cells_across = cells;
   s.particles_per_cell_per_axis = 2;
   s.flip_fraction = 1;
-  return s;
-}
-
-/// Least-squares slope of log e against log h over points [first, last).
-double observed_rate(const std::vector<double>& h, const std::vector<double>& e, std::size_t first, std::size_t last) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(last - first);
-  for (std::size_t i = first; i < last; ++i) {
-    const double x = std::log(h[i]), y = std::log(e[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
-std::string join(const std::vector<double>& v, const char* format) {
-  std::string s;
-  char buf[32];
-  for (double x : v) {
-    std::snprintf(buf, sizeof buf, format, x);
-    if (!s.empty()) s += ' ';
-    s += buf;
-  }
   return s;
 }
 
