@@ -5,9 +5,11 @@
 // nodes and half-cells, and exactly on both corners of the box.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "mpm/shape/stencil.hpp"
 
@@ -60,6 +62,29 @@ void check_properties(int cells, int step = 1) {
     ASSERT_LT((reproduced - Vec<Dim>(x)).norm(), 1e-12);
     ASSERT_LT((grad_x - Mat<Dim>::Identity()).norm(), 1e-11);
   }
+}
+
+/// The scatter writes every node of a particle's stencil (zero weights included). Slabs of
+/// `Shape::slab_cells` cells along the axis, binned as bin_by_slab does; two slabs of the same colour
+/// (s and s+2) must not reach a common node.
+template <class Shape>
+void check_slab_thickness(int cells) {
+  const int nodes = cells + 1, slabs = (cells + Shape::slab_cells - 1) / Shape::slab_cells;
+  std::vector<int> lo(slabs, nodes), hi(slabs, -1);
+  auto visit = [&](Real xi) {
+    const int slab = std::clamp(static_cast<int>(xi), 0, cells - 1) / Shape::slab_cells;
+    int base = -1;
+    Real w[Shape::support], dw[Shape::support];
+    Shape::evaluate(xi, nodes, base, w, dw);
+    lo[slab] = std::min(lo[slab], base);
+    hi[slab] = std::max(hi[slab], base + Shape::support - 1);
+  };
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<Real> u(0, cells);
+  for (int i = 0; i < 4000; ++i) visit(u(rng));
+  for (int i = 0; i <= 4 * cells; ++i) visit(i / Real(4));  // cell faces, centres and quarters exactly
+  for (int s = 0; s + 2 < slabs; ++s)
+    EXPECT_LT(hi[s], lo[s + 2]) << Shape::name << ": slabs " << s << " and " << s + 2 << " share a node";
 }
 
 }  // namespace mpm::test

@@ -16,6 +16,7 @@
 #include "mpm/scheme.hpp"
 #include "mpm/shape/lagrange_quadratic.hpp"
 #include "mpm/shape/stencil.hpp"
+#include "shape_properties.hpp"
 
 namespace mpm {
 namespace {
@@ -186,20 +187,7 @@ TEST(LagrangeQuadratic, DerivativesAgainstFiniteDifferences) {
 
 // Two slabs of the same colour (2 slabs of slab_cells cells apart) never reach a common node.
 TEST(LagrangeQuadratic, SlabThickness) {
-  for (const int cells : {6, 8, 12, 30}) {
-    const int nodes = cells + 1, slabs = (cells + Shape::slab_cells - 1) / Shape::slab_cells;
-    std::vector<int> lo(slabs, nodes), hi(slabs, -1);
-    auto visit = [&](Real xi) {
-      const int slab = std::clamp(static_cast<int>(xi), 0, cells - 1) / Shape::slab_cells;
-      int base = -1;
-      Real w[Shape::support], dw[Shape::support];
-      Shape::evaluate(xi, nodes, base, w, dw);
-      lo[slab] = std::min(lo[slab], base);
-      hi[slab] = std::max(hi[slab], base + Shape::support - 1);
-    };
-    for (int i = 0; i <= 8 * cells; ++i) visit(i / Real(8));
-    for (int s = 0; s + 2 < slabs; ++s) EXPECT_LT(hi[s], lo[s + 2]) << "slabs " << s << " and " << s + 2;
-  }
+  for (const int cells : {6, 8, 12, 30}) test::check_slab_thickness<Shape>(cells);
 }
 
 // Row-sum nodal masses sum_p phi_I(X_p) m_p of an element filled at the sub-cell centres: 1 per cell (the
