@@ -4,7 +4,9 @@
 
 #include <algorithm>
 
+#include "mpm/cpdi_corner_tracking.hpp"
 #include "mpm/expression.hpp"
+#include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/primitive_filler.hpp"
 #include "mpm/material_factory.hpp"
 #include "mpm/scene_error.hpp"
@@ -29,6 +31,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   };
   std::vector<Body<Dim>> bodies;
   Real max_particle_mass = 0;
+  bool track_corners = false;
   for (const auto& bd : scene.bodies) {
     const MaterialDescription& md = scene.materials.at(bd.material);
     Body<Dim> body;
@@ -44,23 +47,53 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
                                        Expression(bd.velocity[2], {"x", "y", "z"})};
     auto& p = body.particles;
     const Real rho = body.material->density();
-    for (const auto& x : seeds.positions) {
-      p.add(x, rho * seeds.volume, seeds.volume);
+    const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
+    // CPDI: every sub-cell becomes one or more particle elements (segments, quads, triangles, tets).
+    geometry::CpdiParticles<Dim> elements;
+    if (shape.domain_corners > 0) {
+      Vec<Dim> spacing;
+      for (int d = 0; d < Dim; ++d) spacing[d] = h[d] / bd.particles_per_cell[d];
+      elements = geometry::cpdi_particles<Dim>(seeds, spacing, shape.domain_corners);
+    } else {
+      elements.positions = seeds.positions;
+      elements.volumes.assign(seeds.positions.size(), seeds.volume);
+    }
+    for (std::size_t k = 0; k < elements.positions.size(); ++k) {
+      const Vec<Dim>& x = elements.positions[k];
+      p.add(x, rho * elements.volumes[k], elements.volumes[k]);
       double xyz[3] = {0, 0, 0};
       for (int d = 0; d < Dim; ++d) xyz[d] = x[d];
       for (int d = 0; d < Dim; ++d) p.v.back()[d] = velocity[d].evaluate(xyz, 0);
+    }
+    if (shape.domain_corners > 0) {
+      CornerSet<Dim> none;
+      none.fill(VecU<Dim>::Zero());
+      body.domain_corners = shape.domain_corners;
+      if (scene.solver.cpdi_domain_update == "corners") {  // CPDI2: tracked corners (eq. 3.38)
+        auto& corners = p.template add_field<CornerSet<Dim>>("cpdi_corners", none);
+        for (Index i = 0; i < p.size(); ++i)
+          for (int c = 0; c < 4; ++c) corners[i][c] = p.x[i] + elements.offsets[i][c];
+        track_corners = true;
+      } else {  // original CPDI: corners convect with F (eq. 3.27)
+        p.template add_field<CornerSet<Dim>>("cpdi_corner_offsets0", none) = elements.offsets;
+      }
     }
     // On-demand fields, allocated only when the output asks for them.
     if (wants("displacement")) {
       auto& x0 = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) x0[i] = p.x[i];
     }
-    if (wants("domain_size") && !find_shape_function(scene.solver.shape_function)->particle_domain)
+    if (wants("domains") && !shape.particle_domain && shape.domain_corners == 0)
+      throw SceneError(scene.output.where, "output.fields",
+                       "domains are only defined for shape functions with particle domains (gimp, cpgimp, cpdi_*), "
+                       "not " +
+                           scene.solver.shape_function);
+    if (wants("domain_size") && !shape.particle_domain)
       throw SceneError(scene.output.where, "output.fields",
                        "domain_size is only defined for shape functions with particle domains (gimp, cpgimp), not " +
                            scene.solver.shape_function);
     body.stretched_domain = scene.solver.shape_function == "cpgimp";
-    if (find_shape_function(scene.solver.shape_function)->particle_domain) {
+    if (shape.particle_domain) {
       // GIMP: the initial particle domain is the sub-cell the particle was placed in (review §3.3).
       VecU<Dim> half;
       for (int d = 0; d < Dim; ++d) half[d] = 0.5 * h[d] / bd.particles_per_cell[d];
@@ -69,7 +102,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
     if (scene.solver.velocity_transfer == "apic")
       p.template add_field<MatU<Dim>>("affine_velocity", MatU<Dim>::Zero());  // C_p = 0 at the start
     if (wants("velocity_gradient")) p.template add_field<MatU<Dim>>("velocity_gradient", MatU<Dim>::Zero());
-    max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);
+    max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);  // elements are at most a sub-cell
     bodies.push_back(std::move(body));
   }
 
@@ -85,6 +118,9 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
 
   auto sim = std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme),
                                                GridBoundary<Dim>(geometry, gd.boundary), settings);
+  if (track_corners)
+    sim->add_module(
+        std::make_shared<CpdiCornerTracking<Dim>>(find_shape_function(scene.solver.shape_function)->domain_corners));
   if (settings.fixed_dt) {
     const Real bound = sim->stable_time_step();
     if (*settings.fixed_dt > bound)

@@ -2,14 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "mpm/particle_domain_mesh.hpp"
 
 namespace mpm {
 
 std::vector<std::string> output_field_names() {
-  return {"velocity", "displacement",      "stress",   "deformation_gradient", "mass",       "volume", "density",
-          "body",     "velocity_gradient", "pressure", "von_mises_stress",     "domain_size"};
+  return {"velocity", "displacement",      "stress",   "deformation_gradient", "mass",        "volume", "density",
+          "body",     "velocity_gradient", "pressure", "von_mises_stress",     "domain_size", "domains"};
 }
 
 namespace {
@@ -98,6 +101,11 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
       interval_(interval),
       particles_pvd_(directory_ / (prefix_ + ".pvd")) {
   std::filesystem::create_directories(directory_);
+  // `domains` is not a point field: the particle domains go to a cell file of their own per frame.
+  if (const auto it = std::find(fields_.begin(), fields_.end(), "domains"); it != fields_.end()) {
+    fields_.erase(it);
+    domains_pvd_ = std::make_unique<io::PvdCollection>(directory_ / (prefix_ + "_domains.pvd"));
+  }
   fields_.push_back("id");
   if (grid_) grid_pvd_ = std::make_unique<io::PvdCollection>(directory_ / (prefix_ + "_grid.pvd"));
   energy_ = std::make_unique<io::CsvLog>(
@@ -136,6 +144,12 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
   io::write_vtu(directory_ / name, particle_cloud(sim));
   particles_pvd_.add(sim.time(), directory_ / name);
   particles_pvd_.write();
+  if (domains_pvd_) {
+    const std::string domains_name = fmt::format("{}_domains_{:06d}.vtu", prefix_, frame_);
+    io::write_cells_vtu(directory_ / domains_name, particle_domain_mesh(sim.bodies()));
+    domains_pvd_->add(sim.time(), directory_ / domains_name);
+    domains_pvd_->write();
+  }
   if (grid_) {
     const auto& g = sim.grid();
     io::ImageGrid image;

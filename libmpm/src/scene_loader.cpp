@@ -526,16 +526,40 @@ std::vector<BodyDescription> read_bodies(const Reader& r, const Value& v, const 
   return bodies;
 }
 
+// CPDI domain update (review §3.6): with F by default for cpdi_l2/cpdi_r4 and with the TLMPM (whose weights
+// never change), with the tracked corners (CPDI2) for cpdi_q4, cpdi_t3 and cpdi_tet4.
+void read_cpdi_domain_update(const Reader& r, const MapReader& m, SolverDescription& solver) {
+  const ShapeFunctionInfo& info = *find_shape_function(solver.shape_function);
+  const auto key = m.find("cpdi_domain_update");
+  if (info.domain_corners == 0) {
+    if (key) r.fail(*key, "cpdi_domain_update applies to the CPDI shape functions only, not " + solver.shape_function);
+    return;
+  }
+  solver.cpdi_domain_update = info.domain_follows_F || solver.scheme == "tlmpm" ? "deformation_gradient" : "corners";
+  if (!key) return;
+  solver.cpdi_domain_update = r.choice(*key, {"deformation_gradient", "corners"});
+  if (solver.cpdi_domain_update != "corners") return;
+  if (solver.scheme == "tlmpm")
+    r.fail(*key, "corners: the TLMPM keeps its reference weights, so its domains follow F; use deformation_gradient");
+  if (solver.shape_function == "cpdi_r4")
+    r.fail(*key, "cpdi_r4 is the parallelogram domain convected with F (eq. 3.27); use cpdi_q4 to track the corners");
+}
+
 SolverDescription read_solver(const Reader& r, const Value& v, const SceneDescription& scene) {
   const int dimension = scene.dimension;
   const MapReader m = r.map(v);
   m.allow({"scheme", "shape_function", "velocity_transfer", "flip_fraction", "dt", "cfl", "end_time", "mass_cutoff",
-           "gravity", "snapshot_interval", "sort_interval"});
+           "gravity", "snapshot_interval", "sort_interval", "cpdi_domain_update"});
   SolverDescription solver;
   if (const auto scheme = m.find("scheme")) solver.scheme = r.choice(*scheme, scheme_names());
   if (const auto shape_function = m.find("shape_function")) {
     solver.shape_function = r.choice(*shape_function, shape_function_names());
     const ShapeFunctionInfo& info = *find_shape_function(solver.shape_function);
+    if (info.dimension != 0 && info.dimension != dimension)
+      r.fail(*shape_function,
+             fmt::format("{} is a {}D shape function; this scene is {}D (CPDI elements: cpdi_l2 in 1D, "
+                         "cpdi_r4, cpdi_q4 and cpdi_t3 in 2D, cpdi_tet4 in 3D)",
+                         info.name, info.dimension, dimension));
     if (info.tlmpm_only && solver.scheme != "tlmpm")
       r.fail(*shape_function, fmt::format("{} has negative weights and is only valid with scheme: tlmpm (particles at "
                                           "fixed reference positions); the scheme is {}",
@@ -550,6 +574,7 @@ SolverDescription read_solver(const Reader& r, const Value& v, const SceneDescri
                                             info.name, scene.grid.cells[d], axis_names[d]));
     }
   }
+  read_cpdi_domain_update(r, m, solver);
   if (const auto flip = m.find("flip_fraction")) solver.flip_fraction = r.number(*flip, zero_to_one, "");
   if (const auto transfer = m.find("velocity_transfer")) {
     solver.velocity_transfer = r.choice(*transfer, {"flip", "apic"});

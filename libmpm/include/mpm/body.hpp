@@ -17,7 +17,8 @@ struct Body {
   ParticleSet<Dim> particles;
   std::shared_ptr<Material<Dim>> material;  ///< stateless: shared by snapshots
   bool stretched_domain = false;            ///< the particle domain follows diag F (cpGIMP), for output
-  SlabBins bins;                            ///< rebuilt every step by the scheme
+  int domain_corners = 0;  ///< CPDI: corners per particle domain (2 segment, 3 triangle, 4 quad or tetrahedron)
+  SlabBins bins;           ///< rebuilt every step by the scheme
   /// Scratch: velocity gradients of all particles, used only when a module runs between the
   /// grid-to-particle transfer and the stress update (otherwise a per-block buffer is enough).
   std::vector<MatU<Dim>> velocity_gradient;

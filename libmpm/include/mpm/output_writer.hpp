@@ -1,6 +1,7 @@
 #pragma once
 /// \file output_writer.hpp
-/// Writes a run for ParaView: one .vtu of all particles per frame (and a .vti of the grid when asked),
+/// Writes a run for ParaView: one .vtu of all particles per frame (and a .vti of the grid, and a .vtu of
+/// the particle domains as cells, when asked),
 /// the .pvd collection of the series, and energy.csv (the conservation audit) with one row per frame.
 /// Every file is written atomically and the writers refuse non-finite values.
 
@@ -45,6 +46,7 @@ class OutputWriter {
   int frame_ = 0;
   io::PvdCollection particles_pvd_;
   std::unique_ptr<io::PvdCollection> grid_pvd_;
+  std::unique_ptr<io::PvdCollection> domains_pvd_;  ///< GIMP/CPDI particle domains, when asked (`domains`)
   std::unique_ptr<io::CsvLog> energy_;
 };
 

@@ -76,6 +76,8 @@ struct SolverDescription {
   std::string shape_function = "linear";   ///< "linear" or "cubic_bspline"
   std::string velocity_transfer = "flip";  ///< "flip" (PIC/FLIP blend) or "apic" (affine, review §5.5.1)
   double flip_fraction = 1.0;              ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
+  /// CPDI only: "deformation_gradient" (corners x_p + F (X_c - X_p), eq. 3.27) or "corners" (tracked, eq. 3.38)
+  std::string cpdi_domain_update;
   std::optional<double> dt;                ///< s, fixed time step (exclusive with cfl)
   std::optional<double> cfl;               ///< CFL factor of eq. 2.73, in (0, 1]
   double end_time = 0;                     ///< s

@@ -53,10 +53,13 @@ std::vector<std::string> shape_function_names();
 /// What the scene loader must check about the grid for a shape function.
 struct ShapeFunctionInfo {
   std::string name;
-  int min_cells = 1;             ///< cells an axis needs at least
-  bool even_cells = false;       ///< the number of cells per axis must be even (Bernstein: two cells per element)
-  bool particle_domain = false;  ///< weights depend on the particle domain (GIMP): field "domain_half_length0"
-  bool tlmpm_only = false;       ///< negative weights: only with the total-Lagrangian scheme (Lagrange quadratic)
+  int min_cells = 1;              ///< cells an axis needs at least
+  bool even_cells = false;        ///< the number of cells per axis must be even (Bernstein: two cells per element)
+  bool particle_domain = false;   ///< weights depend on the particle domain (GIMP): field "domain_half_length0"
+  bool tlmpm_only = false;        ///< negative weights: only with the total-Lagrangian scheme (Lagrange quadratic)
+  int dimension = 0;              ///< the only dimension the function exists in (CPDI elements), 0 for any
+  int domain_corners = 0;         ///< CPDI: corners of the particle element (fields "cpdi_corners"/"..._offsets0")
+  bool domain_follows_F = false;  ///< CPDI: domains convect with F unless the scene asks for corner tracking
 };
 /// The entry for `name`, or nullptr.
 const ShapeFunctionInfo* find_shape_function(const std::string& name);

@@ -3,6 +3,7 @@
 #include "mpm/io/atomic_file.hpp"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
@@ -98,27 +99,29 @@ void write_xml(const char* where, const std::filesystem::path& path, Writer* wri
   });
 }
 
-}  // namespace
-
-void write_vtu(const std::filesystem::path& path, const PointCloud& cloud) {
-  constexpr const char* where = "write_vtu";
-  if (cloud.points.size() % 3 != 0)
-    fail(where, std::to_string(cloud.points.size()) + " coordinates is not 3 per point");
-  const auto n = cloud.size();
-  check_finite(where, "points", cloud.points, 3);
-  check_fields(where, cloud.fields, n);
+// Every cell has its own `corners` consecutive points (offsets k * corners, connectivity 0..n-1).
+void write_unstructured(const char* where, const std::filesystem::path& path, const std::vector<double>& xyz,
+                        int cell_type, int corners, const std::vector<FieldArray>& point_fields,
+                        const std::vector<FieldArray>& cell_fields) {
+  if (xyz.size() % 3 != 0) fail(where, std::to_string(xyz.size()) + " coordinates is not 3 per point");
+  const auto n = xyz.size() / 3;
+  if (corners < 1 || n % static_cast<std::size_t>(corners) != 0)
+    fail(where, std::to_string(n) + " points is not " + std::to_string(corners) + " per cell");
+  const auto cell_count = n / static_cast<std::size_t>(corners);
+  check_finite(where, "points", xyz, 3);
+  check_fields(where, point_fields, n);
+  check_fields(where, cell_fields, cell_count);
 
   vtkNew<vtkDoubleArray> coords;
   coords->SetNumberOfComponents(3);
   coords->SetNumberOfTuples(static_cast<vtkIdType>(n));
-  std::copy(cloud.points.begin(), cloud.points.end(), coords->GetPointer(0));
+  std::copy(xyz.begin(), xyz.end(), coords->GetPointer(0));
   vtkNew<vtkPoints> points;
   points->SetData(coords);
 
-  // One vertex per point: offsets 0..n, connectivity 0..n-1.
   vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfTuples(static_cast<vtkIdType>(n + 1));
-  for (vtkIdType i = 0; i <= static_cast<vtkIdType>(n); ++i) offsets->SetValue(i, i);
+  offsets->SetNumberOfTuples(static_cast<vtkIdType>(cell_count + 1));
+  for (vtkIdType i = 0; i <= static_cast<vtkIdType>(cell_count); ++i) offsets->SetValue(i, i * corners);
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfTuples(static_cast<vtkIdType>(n));
   for (vtkIdType i = 0; i < static_cast<vtkIdType>(n); ++i) connectivity->SetValue(i, i);
@@ -127,12 +130,23 @@ void write_vtu(const std::filesystem::path& path, const PointCloud& cloud) {
 
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
-  grid->SetCells(VTK_VERTEX, cells);
-  add_fields(grid->GetPointData(), cloud.fields);
+  grid->SetCells(cell_type, cells);
+  add_fields(grid->GetPointData(), point_fields);
+  for (const auto& f : cell_fields) grid->GetCellData()->AddArray(to_vtk(f));
 
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetInputData(grid);
   write_xml(where, path, writer.Get());
+}
+
+}  // namespace
+
+void write_vtu(const std::filesystem::path& path, const PointCloud& cloud) {
+  write_unstructured("write_vtu", path, cloud.points, VTK_VERTEX, 1, cloud.fields, {});
+}
+
+void write_cells_vtu(const std::filesystem::path& path, const CellMesh& mesh) {
+  write_unstructured("write_cells_vtu", path, mesh.points, mesh.cell_type, mesh.corners, {}, mesh.cell_fields);
 }
 
 void write_vti(const std::filesystem::path& path, const ImageGrid& grid) {

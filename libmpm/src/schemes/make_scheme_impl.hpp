@@ -8,6 +8,7 @@
 #include "mpm/schemes/usf.hpp"
 #include "mpm/schemes/usl.hpp"
 #include "mpm/shape/bernstein_quadratic.hpp"
+#include "mpm/shape/cpdi.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "mpm/shape/lagrange_quadratic.hpp"
@@ -26,6 +27,23 @@ std::unique_ptr<Scheme<Dim>> make_with_shape(const std::string& scheme) {
   throw std::invalid_argument("unknown scheme '" + scheme + "' (valid: musl, tlmpm, usf, usl)");
 }
 
+/// The scheme on the CPDI shape named `shape`, or nullptr if no listed shape has that name; throws
+/// if the shape exists only in another dimension.
+template <int Dim, class... Shapes>
+std::unique_ptr<Scheme<Dim>> make_cpdi(const std::string& scheme, const std::string& shape) {
+  std::unique_ptr<Scheme<Dim>> made;
+  auto try_one = [&]<class Shape>() {
+    if (made || shape != Shape::name) return;
+    if constexpr (Shape::dimension == Dim)
+      made = make_with_shape<Dim, Shape>(scheme);
+    else
+      throw std::invalid_argument("shape function '" + shape + "' is defined in " + std::to_string(Shape::dimension) +
+                                  "D only, not in " + std::to_string(Dim) + "D");
+  };
+  (try_one.template operator()<Shapes>(), ...);
+  return made;
+}
+
 }  // namespace detail
 
 template <int Dim>
@@ -41,6 +59,8 @@ std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::s
     throw std::invalid_argument("shape function 'lagrange_quadratic' is only valid with scheme 'tlmpm', not '" +
                                 scheme + "'");
   }
+  // CPDI elements exist in one dimension each: instantiated only there.
+  if (auto cpdi = detail::make_cpdi<Dim, CpdiL2, CpdiR4, CpdiQ4, CpdiT3, CpdiTet4>(scheme, shape)) return cpdi;
   throw std::invalid_argument("unknown shape function '" + shape + "'");
 }
 

@@ -3,6 +3,7 @@
 
 #include "mpm/scheme.hpp"
 #include "mpm/shape/bernstein_quadratic.hpp"
+#include "mpm/shape/cpdi.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "mpm/shape/lagrange_quadratic.hpp"
@@ -20,13 +21,27 @@ ShapeFunctionInfo info() {
   if constexpr (requires { Shape::cell_multiple; }) i.even_cells = Shape::cell_multiple == 2;
   if constexpr (requires { Shape::uses_domain; }) i.particle_domain = Shape::uses_domain;
   if constexpr (requires { Shape::tlmpm_only; }) i.tlmpm_only = Shape::tlmpm_only;
+  if constexpr (requires { Shape::corner_domain; }) {
+    i.dimension = Shape::dimension;
+    i.domain_corners = Shape::element::corners;
+    i.domain_follows_F = Shape::follows_F_by_default;
+  }
   return i;
 }
 // Every shape function, once: the scene loader's list of names and grid checks come from here.
 const std::vector<ShapeFunctionInfo>& shape_functions() {
-  static const std::vector<ShapeFunctionInfo> all = {
-      info<LinearHat>(),          info<CubicBSpline>(),     info<UGimp>(), info<CpGimp>(), info<QuadraticBSpline>(),
-      info<BernsteinQuadratic>(), info<LagrangeQuadratic>()};
+  static const std::vector<ShapeFunctionInfo> all = {info<LinearHat>(),
+                                                     info<CubicBSpline>(),
+                                                     info<UGimp>(),
+                                                     info<CpGimp>(),
+                                                     info<QuadraticBSpline>(),
+                                                     info<BernsteinQuadratic>(),
+                                                     info<LagrangeQuadratic>(),
+                                                     info<CpdiL2>(),
+                                                     info<CpdiR4>(),
+                                                     info<CpdiQ4>(),
+                                                     info<CpdiT3>(),
+                                                     info<CpdiTet4>()};
   return all;
 }
 }  // namespace

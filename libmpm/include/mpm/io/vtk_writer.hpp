@@ -28,6 +28,16 @@ struct PointCloud {
   std::size_t size() const { return points.size() / 3; }
 };
 
+/// Cells of one VTK cell type (VTK_LINE 3, VTK_TRIANGLE 5, VTK_QUAD 9, VTK_TETRA 10, VTK_HEXAHEDRON 12),
+/// each with its own `corners` consecutive points (3 coordinates each), and data per cell.
+struct CellMesh {
+  std::vector<double> points;
+  int cell_type = 1;
+  int corners = 1;
+  std::vector<FieldArray> cell_fields;
+  std::size_t cells() const { return points.size() / 3 / static_cast<std::size_t>(corners); }
+};
+
 /// Regular grid of nodes: origin, spacing (m), number of NODES per axis (use 1 for unused axes),
 /// point data per node (x fastest, then y, then z).
 struct ImageGrid {
@@ -44,6 +54,10 @@ struct ImageGrid {
 /// 3, if a field's values.size() != components * size(), if a field has an empty or duplicate name
 /// or components < 1; and if VTK fails to write the file.
 void write_vtu(const std::filesystem::path& path, const PointCloud& cloud);
+
+/// Writes cells (particle domains) as a VTK XML UnstructuredGrid, same rules as write_vtu, with the
+/// fields as cell data; also throws if the point count is not a multiple of `corners`.
+void write_cells_vtu(const std::filesystem::path& path, const CellMesh& mesh);
 
 /// Writes the grid as a VTK XML ImageData (.vti), same rules as write_vtu (binary, compressed,
 /// atomic, finite values only). Also throws if a node count is < 1, or if origin or spacing is not
