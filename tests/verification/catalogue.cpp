@@ -8,6 +8,7 @@
 #include "mms.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/scene_loader.hpp"
+#include "mpm/scheme.hpp"
 #include "mpm/stability_error.hpp"
 #include "tlmpm_paper.hpp"
 #include "vortex.hpp"
@@ -63,52 +64,44 @@ CaseRun bar_mode1(const std::string& scheme, const std::string& shape, int cells
   return run;
 }
 
-void add(std::vector<VerificationCase>& list, std::string name, std::string reference, std::string measure,
-         std::string scheme, std::string shape, std::vector<int> resolutions, std::function<CaseRun(int)> run) {
-  list.push_back({std::move(name) + "/" + scheme + "/" + shape, std::move(reference), std::move(measure), scheme, shape,
-                  std::move(resolutions), std::move(run)});
+void add(std::vector<VerificationCase>& list, const std::string& family, int dimension, std::string reference,
+         std::string measure, const std::string& scheme, const std::string& shape, std::vector<int> resolutions,
+         std::function<CaseRun(int)> run) {
+  list.push_back({family + "/" + scheme + "/" + shape, family, dimension, std::move(reference), std::move(measure),
+                  scheme, shape, std::move(resolutions), std::move(run)});
 }
 
-}  // namespace
-
-std::vector<VerificationCase> catalogue(bool quick) {
-  std::vector<VerificationCase> list;
+/// The elastic cases of the core engine (review §6.1-6.2, the 000 paper).
+void add_elastic_cases(std::vector<VerificationCase>& list, bool quick) {
   const auto ladder = [&](std::vector<int> full, std::size_t keep) {
     if (quick) full.resize(std::min(keep, full.size()));
     return full;
   };
 
-  // Bar vibration (review §6.1.1).
-  for (const char* scheme : {"usl", "musl", "usf", "tlmpm"})
-    for (const char* shape : {"linear", "cubic_bspline"})
-      add(list, "bar_mode1", "exact modal solution, review eq. 6.4", "max |v_cm error| / amplitude (-)", scheme, shape,
-          ladder({8, 16, 32, 64}, 2), [=](int n) { return bar_mode1(scheme, shape, n); });
+  // Bar vibration (review §6.1.1): every method of 1D.
+  for (const auto& [scheme, shape] : methods(1))
+    add(list, "bar_mode1", 1, "exact modal solution, review eq. 6.4", "max |v_cm error| / amplitude (-)", scheme, shape,
+        ladder({8, 16, 32, 64}, 3), [scheme, shape](int n) { return bar_mode1(scheme, shape, n); });
 
-  // Manufactured solutions (review §6.2.1-6.2.2, App. A).
+  // Manufactured solutions (review §6.2.1-6.2.2, App. A): every method in 1D and 2D, linear and cubic
+  // B-spline functions with every scheme in 3D.
   struct Mms {
     int dimension;
     double G;
-    const char* scheme;
-    const char* shape;
+    std::string scheme, shape;
     std::vector<int> cells;
+    std::size_t quick_keep;
   };
   std::vector<Mms> mms;
-  for (double G : {1e-4, 0.05}) {
-    for (const char* shape : {"linear", "cubic_bspline", "bernstein"})
-      mms.push_back({1, G, "tlmpm", shape, {16, 32, 64, 128}});
-    for (const char* shape : {"linear", "cubic_bspline", "gimp", "cpgimp"})
-      mms.push_back({1, G, "musl", shape, {16, 32, 64, 128}});
-    mms.push_back({1, G, "usl", "linear", {16, 32, 64, 128}});
-    mms.push_back({1, G, "usf", "linear", {16, 32, 64, 128}});
-  }
-  for (const char* shape : {"linear", "cubic_bspline", "bernstein"})
-    mms.push_back({2, 0.05, "tlmpm", shape, {8, 16, 32}});
-  mms.push_back({2, 0.05, "musl", "linear", {8, 16, 32}});
-  for (const char* shape : {"linear", "cubic_bspline"}) mms.push_back({3, 0.05, "tlmpm", shape, {4, 8, 16}});
+  for (double G : {1e-4, 0.05})
+    for (const auto& [scheme, shape] : methods(1)) mms.push_back({1, G, scheme, shape, {16, 32, 64, 128}, 3});
+  for (const auto& [scheme, shape] : methods(2)) mms.push_back({2, 0.05, scheme, shape, {8, 16, 32}, 2});
+  for (const auto& [scheme, shape] : methods(3))
+    if (shape == "linear" || shape == "cubic_bspline") mms.push_back({3, 0.05, scheme, shape, {4, 8, 16}, 2});
   for (const auto& m : mms) {
     const std::string name = "mms_" + std::to_string(m.dimension) + "d_" + (m.G < 1e-3 ? "small" : "large");
-    add(list, name, "manufactured solution, review §6.2 and App. A (G = " + std::to_string(m.G) + ")", "e1 (m)",
-        m.scheme, m.shape, ladder(m.cells, 2), [m](int n) {
+    add(list, name, m.dimension, "manufactured solution, review §6.2 and App. A (G = " + std::to_string(m.G) + ")",
+        "e1 (m)", m.scheme, m.shape, ladder(m.cells, m.quick_keep), [m](int n) {
           MmsSpec s{m.dimension, m.scheme, m.shape, n, 2, m.G, 1.0};
           const MmsResult r = run_mms(s);
           CaseRun c = from(r, r.e1);
@@ -121,7 +114,7 @@ std::vector<VerificationCase> catalogue(bool quick) {
   // Generalized vortex (review §6.2.3).
   for (const auto& [scheme, shape] : std::vector<std::pair<const char*, const char*>>{
            {"tlmpm", "linear"}, {"tlmpm", "bernstein"}, {"musl", "linear"}})
-    add(list, "vortex", "manufactured solution, review §6.2.3", "e1 (m)", scheme, shape, ladder({40, 60, 80}, 1),
+    add(list, "vortex", 2, "manufactured solution, review §6.2.3", "e1 (m)", scheme, shape, ladder({40, 60, 80}, 2),
         [=](int n) {
           VortexSpec s;
           s.scheme = scheme;
@@ -138,8 +131,8 @@ std::vector<VerificationCase> catalogue(bool quick) {
 
   // The 000 paper's 1D TLMPM cases.
   for (const char* shape : {"lagrange_quadratic", "linear"}) {
-    add(list, "tlmpm_column", "exact static Neo-Hookean column (000 paper, case a)",
-        "max nodal |u - u_exact| / |u(L)| (-)", "tlmpm", shape, ladder({10, 20, 40}, 1), [=](int n) {
+    add(list, "tlmpm_column", 1, "exact static Neo-Hookean column (000 paper, case a)",
+        "max nodal |u - u_exact| / |u(L)| (-)", "tlmpm", shape, ladder({10, 20, 40}, 2), [=](int n) {
           ColumnSpec s;
           s.shape_function = shape;
           s.elements = n;
@@ -147,21 +140,43 @@ std::vector<VerificationCase> catalogue(bool quick) {
           s.ramp_gravity = true;
           const ColumnResult r = run_column(s);
           CaseRun c = from(r, r.max_nodal_error);
+          c.particles = r.particles;
           c.h = 0.1 / (2 * n);
           return c;
         });
-    add(list, "tlmpm_step_load", "series solution, 000 paper eq. 70 (load 1.27e4 Pa)",
-        "RMS tip error / (2|tau|L/E) (-)", "tlmpm", shape, ladder({8, 16, 32, 64}, 2), [=](int n) {
+    add(list, "tlmpm_step_load", 1, "series solution, 000 paper eq. 70 (load 1.27e4 Pa)",
+        "RMS tip error / (2|tau|L/E) (-)", "tlmpm", shape, ladder({8, 16, 32, 64}, 3), [=](int n) {
           StepLoadSpec s;
           s.shape_function = shape;
           s.elements = n;
           s.traction = -1.27e4;
           const StepLoadResult r = run_step_load(s);
           CaseRun c = from(r, r.rms_relative);
+          c.particles = static_cast<long long>(n) * s.particles_per_element;
           c.h = r.element_length / 2;
           return c;
         });
   }
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> methods(int dimension) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& scheme : {std::string("usl"), std::string("musl"), std::string("usf"), std::string("tlmpm")})
+    for (const std::string& shape : shape_function_names()) {
+      const ShapeFunctionInfo* info = find_shape_function(shape);
+      if (info->dimension != 0 && info->dimension != dimension) continue;
+      if (info->tlmpm_only && scheme != "tlmpm") continue;
+      out.emplace_back(scheme, shape);
+    }
+  return out;
+}
+
+std::vector<VerificationCase> catalogue(bool quick) {
+  std::vector<VerificationCase> list;
+  add_elastic_cases(list, quick);
+  // Optional modules register their cases here, one explicit call each (see catalogue.hpp).
   return list;
 }
 
