@@ -3,10 +3,16 @@
 /// The verification catalogue: every case with a reference (analytic, manufactured, series solution)
 /// registered once, for every applicable scheme and shape function, with its error measure and a ladder
 /// of resolutions. The tests use it, and the error-against-run-time report (bench/) runs the ladders.
-/// A case = one runner (mms.hpp, vortex.hpp, tlmpm_paper.hpp, the bar below) at one configuration.
+/// A case = one runner (mms.hpp, vortex.hpp, tlmpm_paper.hpp, the bar in catalogue.cpp) at one configuration.
+///
+/// Adding cases (a physics module, a new benchmark): write a runner that builds the scene for a resolution
+/// and returns a CaseRun, then register it in catalogue() (catalogue.cpp) with one explicit call per
+/// module, e.g. `add_plasticity_cases(list, quick);` under the module's MPM_WITH_* definition. No static
+/// registration: linkers drop unreferenced objects from static libraries (STYLE.md).
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mpm::verification {
@@ -22,7 +28,9 @@ struct CaseRun {
 };
 
 struct VerificationCase {
-  std::string name;           ///< e.g. "mms_1d_large/tlmpm/cubic_bspline"
+  std::string name;    ///< e.g. "mms_1d_large/tlmpm/cubic_bspline" (= family/scheme/shape_function)
+  std::string family;  ///< the problem without the method, e.g. "mms_1d_large": the report's plot groups
+  int dimension = 1;
   std::string reference;      ///< where the exact solution comes from
   std::string error_measure;  ///< what CaseRun::error is, with its unit
   std::string scheme, shape_function;
@@ -30,7 +38,12 @@ struct VerificationCase {
   std::function<CaseRun(int resolution)> run;
 };
 
-/// Every registered case. `quick`: shorter ladders (for smoke runs).
+/// Every registered case. `quick`: shorter ladders (for smoke runs and `bench/run_report.sh --quick`).
 std::vector<VerificationCase> catalogue(bool quick = false);
+
+/// Every (scheme, shape function) pair the engine accepts in `dimension`: each scheme with each shape
+/// function of that dimension (CPDI elements exist in one dimension; Lagrange quadratic only with TLMPM).
+/// Taken from the engine's own tables, so a new scheme or shape function joins the cases that use this.
+std::vector<std::pair<std::string, std::string>> methods(int dimension);
 
 }  // namespace mpm::verification

@@ -1,5 +1,6 @@
 #include "mms.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/output_writer.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
 
@@ -101,7 +103,15 @@ MmsResult run(const MmsSpec& spec) {
   r.h = 1.0 / spec.cells_per_side;
   r.particles = sim->particle_count();
   double sum_error2 = 0, sum_exact2 = 0;  // sum over steps of sum_p V_p |.|^2
+  std::unique_ptr<OutputWriter<Dim>> writer;
+  if (!spec.output_directory.empty()) {
+    writer = std::make_unique<OutputWriter<Dim>>(spec.output_directory, "particles",
+                                                 std::vector<std::string>{"velocity", "stress", "deformation_gradient"},
+                                                 false, 2 / m.c / spec.output_frames);
+    writer->write_if_due(*sim);
+  }
   const auto measure = [&](const Simulation<Dim>& s) {
+    if (writer) writer->write_if_due(s);
     const double t = s.time();
     double error2 = 0, exact2 = 0, volume = 0;
     for (std::size_t b = 0; b < s.bodies().size(); ++b) {
@@ -116,6 +126,7 @@ MmsResult run(const MmsSpec& spec) {
           e += diff * diff;
           u += exact * exact;
         }
+        r.min_J = std::min(r.min_J, static_cast<double>(p.F[i].determinant()));
         error2 += V * e;
         exact2 += V * u;
         volume += V;
@@ -133,6 +144,7 @@ MmsResult run(const MmsSpec& spec) {
   } catch (const StabilityError& e) {
     r.failure = e.what();
   }
+  if (writer) writer->write(*sim);  // the last (good) state
   if (!r.failure.empty()) r.e1 = r.e2 = std::numeric_limits<double>::infinity();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
@@ -177,8 +189,9 @@ std::string mms_scene_yaml(const MmsSpec& spec) {
        "\n    velocity: " + velocity + "\n";
   const double dt = 0.2 * h / m.c, end_time = spec.end_time_periods * 2 / m.c;
   y += "solver:\n  scheme: " + spec.scheme + "\n  shape_function: " + spec.shape_function +
-       "\n  flip_fraction: " + number(spec.flip_fraction) + "\n  dt: " + number(dt) +
-       "\n  end_time: " + number(end_time) + "\noutput:\n  fields: []\n";
+       "\n  flip_fraction: " + number(spec.flip_fraction) +
+       (spec.cfl > 0 ? "\n  cfl: " + number(spec.cfl) : "\n  dt: " + number(dt)) + "\n  end_time: " + number(end_time) +
+       "\noutput:\n  fields: []\n";
   return y;
 }
 
