@@ -33,6 +33,7 @@ class Simulation {
              GridBoundary<Dim> boundary, const SimulationSettings<Dim>& settings);
 
   void add_module(std::shared_ptr<Module<Dim>> module) { hooks_.add(std::move(module)); }
+  const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
 
   /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), and of the modules.
   Real stable_time_step() const;
