@@ -33,7 +33,9 @@ TEST(Catalogue, EveryCaseRunsAtItsCoarsestResolution) {
   }
   for (const auto& [scheme, shape] : methods(2)) EXPECT_TRUE(names.count("mms_2d_large/" + scheme + "/" + shape));
   for (const auto& [scheme, shape] : methods(1))  // negative weights: the loader accepts them with TLMPM only
-    if (find_shape_function(shape)->tlmpm_only) EXPECT_EQ(scheme, "tlmpm");
+    if (find_shape_function(shape)->tlmpm_only) {
+      EXPECT_EQ(scheme, "tlmpm");
+    }
   std::printf("[ measured ] %zu cases\n", cases.size());
 }
 
