@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_loader.hpp"
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   try {
+    register_modules();  // the optional modules' material models, before the scene is read
     const mpm::SceneDescription scene = mpm::load_scene(scene_file);
     if (check_cmd->parsed()) {
       check_scene(scene, std::cout);

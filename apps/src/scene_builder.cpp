@@ -102,6 +102,12 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
     if (scene.solver.velocity_transfer == "apic")
       p.template add_field<MatU<Dim>>("affine_velocity", MatU<Dim>::Zero());  // C_p = 0 at the start
     if (wants("velocity_gradient")) p.template add_field<MatU<Dim>>("velocity_gradient", MatU<Dim>::Zero());
+    body.material->prepare_particles(p);  // the model's history fields (plasticity), if it has any
+    if (wants("temperature") && !p.has_field("temperature"))
+      throw SceneError(scene.output.where, "output.fields",
+                       "temperature: body '" + bd.name + "' (material '" + bd.material + "', model " + md.model +
+                           ") does not track temperature; give its material specific_heat (johnson_cook, "
+                           "j2_plasticity) or remove temperature from the fields");
     max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);  // elements are at most a sub-cell
     bodies.push_back(std::move(body));
   }

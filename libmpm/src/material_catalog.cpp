@@ -32,6 +32,15 @@ const MaterialModelSpec* find_material_model(std::string_view model) {
   return nullptr;
 }
 
+void register_material_model(MaterialModelSpec spec) {
+  for (auto& m : catalog())
+    if (m.model == spec.model) {
+      m = std::move(spec);
+      return;
+    }
+  catalog().push_back(std::move(spec));
+}
+
 std::vector<std::string> material_model_names() {
   std::vector<std::string> names;
   for (const auto& m : catalog()) names.push_back(m.model);

@@ -11,8 +11,10 @@
 namespace mpm {
 
 std::vector<std::string> output_field_names() {
-  return {"velocity", "displacement",      "stress",   "deformation_gradient", "mass",        "volume", "density",
-          "body",     "velocity_gradient", "pressure", "von_mises_stress",     "domain_size", "domains"};
+  return {"velocity",         "displacement", "stress",  "deformation_gradient", "mass",
+          "volume",           "density",      "body",    "velocity_gradient",    "pressure",
+          "von_mises_stress", "domain_size",  "domains", "plastic_strain",       "plastic_strain_rate",
+          "damage",           "temperature"};
 }
 
 namespace {
@@ -75,6 +77,13 @@ void append_field(const std::string& name, const Body<Dim>& b, std::vector<doubl
       if (stretched) l = l.cwiseProduct(VecU<Dim>(p.F[i].diagonal()));
       pad3<Dim>(out, l);
     });
+  } else if (b.material->append_output(name, p, out)) {
+    // a field of the body's material model (plasticity: plastic_strain, plastic_strain_rate, damage)
+  } else if (name == "plastic_strain" || name == "plastic_strain_rate" || name == "damage") {
+    each([&](Index) { out.push_back(0.0); });  // a body without plasticity: no plastic flow, no damage
+  } else if (name == "temperature") {
+    const auto& T = p.template field<Real>("temperature");  // K; the builder checked that every body has it
+    each([&](Index i) { out.push_back(T[i]); });
   } else if (name == "id") {
     each([&](Index i) { out.push_back(p.id[i]); });
   } else {
@@ -111,7 +120,7 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
   energy_ = std::make_unique<io::CsvLog>(
       directory_ / "energy.csv",
       std::vector<std::string>{"time", "step", "kinetic_energy", "strain_energy", "gravity_potential_energy",
-                               "total_energy", "momentum_x", "momentum_y", "momentum_z", "mass"});
+                               "total_energy", "momentum_x", "momentum_y", "momentum_z", "mass", "plastic_work"});
 }
 
 template <int Dim>
@@ -172,7 +181,7 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
   }
   const EnergyBalance e = sim.energy();
   energy_->append({sim.time(), static_cast<double>(sim.step()), e.kinetic, e.strain, e.gravity, e.total(),
-                   e.momentum[0], e.momentum[1], e.momentum[2], e.mass});
+                   e.momentum[0], e.momentum[1], e.momentum[2], e.mass, e.plastic_work});
   last_written_ = sim.time();
   ++frame_;
   if (interval_ > 0)

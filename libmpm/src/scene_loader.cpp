@@ -390,12 +390,17 @@ MaterialDescription read_material(const Reader& r, const MapReader::Entry& entry
       material.parameters[p.name] = r.number(*value, range, p.unit);
     } else if (p.default_value) {
       material.parameters[p.name] = *p.default_value;
-    } else {
+    } else if (!p.optional) {
       m.required(p.name, "parameter",
                  fmt::format(" of model {} ({}{})", material.model, p.description,
                              p.unit.empty() || p.unit == "-" ? "" : ", " + p.unit));
     }
   }
+  if (spec->check)
+    if (const auto error = spec->check(material.parameters)) {
+      if (const auto value = m.find(error->key)) r.fail(*value, error->message);
+      r.fail(entry.key_mark, m.path_of(error->key), error->message);
+    }
   return material;
 }
 

@@ -178,6 +178,7 @@ EnergyBalance Simulation<Dim>::energy() const {
       e.mass += m;
     }
     e.strain += b.material->strain_energy(p);
+    e.plastic_work += b.material->dissipated_energy(p);
   }
   return e;
 }

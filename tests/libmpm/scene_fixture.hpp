@@ -3,6 +3,7 @@
 #include <memory>
 #include <string>
 
+#include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/scene_loader.hpp"
 
@@ -10,6 +11,7 @@ namespace mpm::test {
 
 template <int Dim>
 std::unique_ptr<Simulation<Dim>> simulation_from_yaml(const std::string& yaml, const std::string& name = "test.yaml") {
+  app::register_modules();  // optional modules' materials (plasticity), before the scene is parsed
   return app::build_simulation<Dim>(parse_scene(yaml, name));
 }
 

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -194,7 +195,8 @@ void check_stencil(int cells, Real size) {
     for (int k = 0; k < Element::corners; ++k)
       for (int d = 0; d < Dim; ++d) {
         const Real xi_c = (c[k][d] - g.origin[d]) * g.inv_h[d], cell = std::floor((x[d] - g.origin[d]) * g.inv_h[d]);
-        reachable = reachable && xi_c >= 0 && xi_c <= g.cells(d) && xi_c >= cell - 1 && xi_c <= cell + 2;
+        reachable = reachable && xi_c >= 0 && xi_c <= g.cells(d) && xi_c >= cell - Shape::reach &&
+                    xi_c <= cell + 1 + Shape::reach;
       }
     if (!reachable) continue;
     ++accepted;
@@ -235,18 +237,19 @@ void check_stencil(int cells, Real size) {
   EXPECT_GE(accepted, 100) << "too few domains within the stencil's reach";
 }
 
-// Domains of half a cell (2 PPC) and of 1.4 cells (grown by the deformation); corners stay in the block.
+// Domains of half a cell (2 PPC) and of 1.4 cells (grown by the deformation); samples whose corners
+// leave the block are skipped here.
 TEST(Cpdi, L2StencilMatchesDefinition) {
   check_stencil<1, CpdiL2>(7, 0.5);
   check_stencil<1, CpdiL2>(7, 1.4);
 }
 TEST(Cpdi, Q4StencilMatchesDefinition) {
   check_stencil<2, CpdiQ4>(6, 0.5);
-  check_stencil<2, CpdiQ4>(6, 1.4);
+  check_stencil<2, CpdiQ4>(8, 2.5);  // reach 2: domains up to about four cells
 }
 TEST(Cpdi, T3StencilMatchesDefinition) {
   check_stencil<2, CpdiT3>(6, 0.5);
-  check_stencil<2, CpdiT3>(6, 1.4);
+  check_stencil<2, CpdiT3>(8, 2.5);
 }
 TEST(Cpdi, Tet4StencilMatchesDefinition) {
   check_stencil<3, CpdiTet4>(5, 0.5);
@@ -264,12 +267,18 @@ TEST(Cpdi, R4EqualsGimpForABoxInsideOneCell) {
       {Vec2(x - half), Vec2(x[0] + half[0], x[1] - half[1]), Vec2(x + half), Vec2(x[0] - half[0], x[1] + half[1])});
   Stencil<2, UGimp> gimp;
   gimp.compute(VecU<2>(x), g, half);
-  for (int a = 0; a < 16; ++a) {
-    ASSERT_EQ(cpdi.node[a], gimp.node[a]);
-    EXPECT_NEAR(cpdi.w[a], gimp.w[a], 1e-14);
-    EXPECT_NEAR(cpdi.grad[a][0], gimp.grad[a][0], 1e-11);
-    EXPECT_NEAR(cpdi.grad[a][1], gimp.grad[a][1], 1e-11);
+  // The CPDI block is wider (reach 2): compare node by node.
+  std::map<Index, std::array<Real, 3>> by_node;
+  for (int a = 0; a < cpdi.count; ++a) by_node[cpdi.node[a]] = {cpdi.w[a], cpdi.grad[a][0], cpdi.grad[a][1]};
+  for (int a = 0; a < gimp.count; ++a) {
+    ASSERT_TRUE(by_node.count(gimp.node[a])) << "node " << gimp.node[a];
+    const auto& c = by_node[gimp.node[a]];
+    EXPECT_NEAR(c[0], gimp.w[a], 1e-14);
+    EXPECT_NEAR(c[1], gimp.grad[a][0], 1e-11);
+    EXPECT_NEAR(c[2], gimp.grad[a][1], 1e-11);
+    by_node.erase(gimp.node[a]);
   }
+  for (const auto& [node, c] : by_node) EXPECT_EQ(c[0], 0) << "node " << node << " outside GIMP's support";
 }
 
 // Kuhn's split: six right-handed tetrahedra of a sixth of the sub-cell each, centroids averaging to the
@@ -328,6 +337,44 @@ TEST(Cpdi, ClampedCornersKeepPartitionOfUnity) {
     }
     EXPECT_NEAR(sum, 1, 1e-14) << "domain " << l << " cells";
     EXPECT_LT(sum_grad.norm(), 1e-10) << "domain " << l << " cells";
+  }
+}
+
+}  // namespace
+}  // namespace mpm
+
+namespace mpm {
+namespace {
+
+// The race-free scatter (slab_binning.hpp): two slabs of the same colour (s and s + 2), each
+// Shape::slab_cells thick along x, must never reach a common node, with the stencil block clamped at
+// both faces. Particles with a tiny domain at many positions; slab of a particle = its cell / thickness.
+template <class Shape>
+void check_cpdi_slabs(int cells) {
+  const GridGeometry<2> g(Vec2::Zero(), Vec2(1, 1), {cells, Shape::min_cells + 2});
+  const int slabs = (cells + Shape::slab_cells - 1) / Shape::slab_cells;
+  std::vector<int> lo(slabs, cells + 1), hi(slabs, -1);
+  Stencil<2, Shape> st;
+  for (int k = 0; k <= 8 * cells; ++k) {
+    const Vec2 x(k / 8.0, 1.5);
+    const Vec2 e(1e-3, 1e-3);
+    st.compute(VecU<2>(x), g,
+               {Vec2(x - e), Vec2(x[0] + e[0], x[1] - e[1]), Vec2(x + e), Vec2(x[0] - e[0], x[1] + e[1])});
+    const int slab = std::min(static_cast<int>(x[0]), cells - 1) / Shape::slab_cells;
+    for (int a = 0; a < st.count; ++a) {
+      const int i = g.node_indices(st.node[a])[0];
+      lo[slab] = std::min(lo[slab], i);
+      hi[slab] = std::max(hi[slab], i);
+    }
+  }
+  for (int s = 0; s + 2 < slabs; ++s)
+    EXPECT_LT(hi[s], lo[s + 2]) << Shape::name << ": slabs " << s << " and " << s + 2 << " share a node";
+}
+
+TEST(Cpdi, SlabThickness) {
+  for (int cells : {9, 10, 23, 40}) {
+    check_cpdi_slabs<CpdiQ4>(cells);  // reach 2
+    check_cpdi_slabs<CpdiT3>(cells);
   }
 }
 

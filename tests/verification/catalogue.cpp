@@ -113,7 +113,7 @@ void add_elastic_cases(std::vector<VerificationCase>& list, bool quick) {
 
   // Generalized vortex (review §6.2.3).
   for (const auto& [scheme, shape] : std::vector<std::pair<const char*, const char*>>{
-           {"tlmpm", "linear"}, {"tlmpm", "bernstein"}, {"musl", "linear"}})
+           {"tlmpm", "linear"}, {"tlmpm", "bernstein"}, {"musl", "linear"}, {"musl", "cpdi_r4"}})
     add(list, "vortex", 2, "manufactured solution, review §6.2.3", "e1 (m)", scheme, shape, ladder({40, 60, 80}, 2),
         [=](int n) {
           VortexSpec s;

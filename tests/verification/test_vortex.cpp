@@ -166,6 +166,19 @@ TEST(Vortex, MuslLinear) {
   EXPECT_GT(musl.e1, 5 * tl.e1);
 }
 
+// CPDI follows the vortex where hat functions do not (review §6.2.3 shows CPDI-Q4 with distorted
+// domains): MUSL with CPDI-R4 (domains convected with F, 2 PPC) gives e1 = 1.63e-1, 5.98e-2, 5.31e-2 at
+// N = 40, 60, 80, against 0.82 m with hat functions at N = 60. CPDI-Q4 (tracked corners) reaches e1 =
+// 4.5e-2 at N = 60 but its corners invert a domain at N = 40 (t = 0.68 s) and N = 80 (t = 0.73 s): the
+// shear strain reaches 7 and the quadrilaterals fold. Asserted: R4 at N = 60 completes with e1 < 0.08 m,
+// ten times below MUSL with hat functions on the same grid.
+TEST(Vortex, MuslCpdiR4) {
+  const VortexResult r = run_vortex(spec("musl", "cpdi_r4", 60));
+  std::printf("[ measured ] vortex musl/cpdi_r4 N = 60: e1 = %.3e, e2 = %.3e; %.2f s\n", r.e1, r.e2, r.wall_seconds);
+  EXPECT_TRUE(r.failure.empty()) << r.failure;
+  EXPECT_LT(r.e1, 0.08);
+}
+
 // The equations as printed do not produce the vortex (digest §C.8 errata): with "+R (g'h)^2" in b_Theta of
 // eq. 6.18, or with the printed zero initial velocity (g'(0) = pi, so the exact ring starts at up to
 // 3.17 m/s), the TLMPM inverts a particle before t = 0.5 s (N = 40 and 80, hat functions). Asserted: guard

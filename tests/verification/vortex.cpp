@@ -9,7 +9,9 @@
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
+
 #include <vector>
+#include "mpm/shape/cpdi_elements.hpp"
 
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/output_writer.hpp"
@@ -172,15 +174,24 @@ std::vector<Body<2>> ring_bodies(const Simulation<2>& built, bool keep_reference
     std::sort(order.begin(), order.end(), [&](Index i, Index j) { return p.id[i] < p.id[j]; });
     const bool gimp = p.has_field("domain_half_length0");
     const std::vector<VecU<2>>* half0 = gimp ? &p.field<VecU<2>>("domain_half_length0") : nullptr;
+    // CPDI: the corners (tracked) or the reference corner offsets (convected with F).
+    const char* cpdi_field = p.has_field("cpdi_corners")           ? "cpdi_corners"
+                             : p.has_field("cpdi_corner_offsets0") ? "cpdi_corner_offsets0"
+                                                                   : nullptr;
+    const std::vector<CornerSet<2>>* corners0 = cpdi_field ? &p.field<CornerSet<2>>(cpdi_field) : nullptr;
+    ring.domain_corners = b.domain_corners;
     auto& q = ring.particles;
     std::vector<VecU<2>> half;
+    std::vector<CornerSet<2>> corners;
     for (Index i : order) {
       if (!Vortex::in_ring(V2(p.x[i]).norm())) continue;
       q.add(p.x[i], p.mass[i], p.volume0[i]);
       q.v.back() = p.v[i];
       if (gimp) half.push_back((*half0)[i]);
+      if (corners0) corners.push_back((*corners0)[i]);
     }
     if (gimp) q.add_field<VecU<2>>("domain_half_length0", VecU<2>::Zero()) = half;
+    if (corners0) q.add_field<CornerSet<2>>(cpdi_field, corners.front()) = corners;
     if (keep_reference_position) q.add_field<VecU<2>>("reference_position", VecU<2>::Zero()) = q.x;
     bodies.push_back(std::move(ring));
   }
@@ -229,6 +240,7 @@ VortexResult run_vortex(const VortexSpec& spec) {
   const SceneDescription scene = parse_scene(vortex_scene_yaml(spec), "vortex.yaml");
   const bool writes = !spec.output_directory.empty();
   std::unique_ptr<Simulation<2>> sim;
+  std::vector<std::shared_ptr<Module<2>>> built_modules;
   {
     // Build the disk, keep the ring, and build the simulation again from the ring's particles (the
     // scheme's initial caches and the guard's first snapshot must not see the removed particles).
@@ -237,6 +249,7 @@ VortexResult run_vortex(const VortexSpec& spec) {
     sim = std::make_unique<Simulation<2>>(geometry, ring_bodies(*disk, writes),
                                           make_scheme<2>(scene.solver.scheme, scene.solver.shape_function),
                                           GridBoundary<2>(geometry, scene.grid.boundary), disk->settings());
+    built_modules = disk->modules();
   }
   const bool total_lagrangian = spec.scheme == "tlmpm";
 
@@ -247,6 +260,7 @@ VortexResult run_vortex(const VortexSpec& spec) {
     for (Index i = 0; i < p.size(); ++i) X.back()[p.id[i]] = p.x[i];
   }
   sim->add_module(std::make_shared<VortexBodyForce>(vortex, X, spec.printed_body_force));
+  for (const auto& m : built_modules) sim->add_module(m);  // CPDI corner tracking
   if (spec.fix_nodes_outside_ring) sim->add_module(std::make_shared<FixedOutsideRing>(sim->grid().geometry));
 
   std::unique_ptr<OutputWriter<2>> writer;

@@ -10,9 +10,10 @@ struct EnergyBalance {
   Real kinetic = 0;              ///< J: 1/2 sum m v.v
   Real strain = 0;               ///< J: stored elastic energy (review eq. 6.5)
   Real gravity = 0;              ///< J: potential of the body force, -sum m g.x
+  Real plastic_work = 0;         ///< J: energy dissipated by plastic flow (plasticity module)
   Vec3 momentum = Vec3::Zero();  ///< kg m/s
   Real mass = 0;                 ///< kg
-  Real total() const { return kinetic + strain + gravity; }
+  Real total() const { return kinetic + strain + gravity + plastic_work; }
 };
 
 }  // namespace mpm

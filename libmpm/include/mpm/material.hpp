@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "mpm/particle_set.hpp"
 
@@ -51,6 +52,16 @@ class Material {
   virtual WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const = 0;
   /// Stored (strain) energy of the particles, J (per unit out-of-plane size in 1D/2D).
   virtual Real strain_energy(const ParticleSet<Dim>& p) const = 0;
+  /// Energy dissipated so far by the particles (plastic work), J; zero for elastic models.
+  virtual Real dissipated_energy(const ParticleSet<Dim>&) const { return 0; }
+  /// Adds and initialises the on-demand particle fields the model keeps (history variables such as the
+  /// plastic strain). Called once by the simulation builder after the body's particles are created.
+  virtual void prepare_particles(ParticleSet<Dim>&) const {}
+  /// Appends one value per particle of a model-specific output field (e.g. "plastic_strain") and returns
+  /// true, or returns false if the model has no such field.
+  virtual bool append_output(std::string_view /*field*/, const ParticleSet<Dim>&, std::vector<double>&) const {
+    return false;
+  }
 };
 
 }  // namespace mpm

@@ -4,7 +4,9 @@
 /// units and admissible ranges. The catalog is filled by the core (linear_elastic, neo_hookean) and by
 /// each optional module through register_material_model() when it is compiled in.
 
+#include <functional>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,6 +24,16 @@ struct ParameterSpec {
   bool lower_inclusive = true;
   double upper = std::numeric_limits<double>::infinity();
   bool upper_inclusive = true;
+  /// With no default: true = may be omitted, and is then absent from MaterialDescription::parameters
+  /// (the model switches a feature off, e.g. no damage without damage_d1); false = required.
+  bool optional = false;
+};
+
+/// A problem with a combination of parameters, found by MaterialModelSpec::check: the key to report it
+/// at (a parameter name; reported at the material when that parameter was not given) and the message.
+struct ParameterError {
+  std::string key;
+  std::string message;
 };
 
 /// A material model as seen by the scene: YAML key, description, parameters.
@@ -29,11 +41,16 @@ struct MaterialModelSpec {
   std::string model;  ///< e.g. "linear_elastic"
   std::string description;
   std::vector<ParameterSpec> parameters;
+  /// Optional check of the parameters together (each already in its range; defaults filled in).
+  std::function<std::optional<ParameterError>(const std::map<std::string, double>&)> check = {};
 };
 
 /// The model with this key, or nullptr.
 const MaterialModelSpec* find_material_model(std::string_view model);
 /// Keys of all registered models, sorted (for "valid models are: ..." messages).
 std::vector<std::string> material_model_names();
+/// Adds a model of an optional module (or replaces the one with the same key). Call before loading
+/// scenes; modules are registered by the generated call mpm::app::register_modules().
+void register_material_model(MaterialModelSpec spec);
 
 }  // namespace mpm

@@ -46,32 +46,33 @@ struct CpdiDomain {
 };
 
 /// A CPDI shape function on `Element`; `FollowsF`: the scene's default domain update.
-template <class Element, bool FollowsF>
+template <class Element, bool FollowsF, int Reach>
 struct Cpdi {
   using element = Element;
   static constexpr int dimension = Element::dimension;
-  static constexpr int support = 4;
-  static constexpr int slab_cells = 5;  // the GIMP block: nodes c-1..c+2 (c-2..c+1 at the upper face)
-  static constexpr int min_cells = 3;
+  static constexpr int reach = Reach;
+  static constexpr int support = 2 * Reach + 2;
+  static constexpr int slab_cells = 2 * support - 3;  // 5 for reach 1 (the GIMP block), checked in test_cpdi
+  static constexpr int min_cells = support - 1;
   static constexpr bool corner_domain = true;
   static constexpr bool follows_F_by_default = FollowsF;
   template <int Dim>
   using Domain = CpdiDomain<Dim>;
 };
 
-struct CpdiL2 : Cpdi<CpdiSegment, true> {
+struct CpdiL2 : Cpdi<CpdiSegment, true, 1> {
   static constexpr const char* name = "cpdi_l2";
 };
-struct CpdiR4 : Cpdi<CpdiQuad, true> {
+struct CpdiR4 : Cpdi<CpdiQuad, true, 2> {
   static constexpr const char* name = "cpdi_r4";
 };
-struct CpdiQ4 : Cpdi<CpdiQuad, false> {
+struct CpdiQ4 : Cpdi<CpdiQuad, false, 2> {
   static constexpr const char* name = "cpdi_q4";
 };
-struct CpdiT3 : Cpdi<CpdiTriangle, false> {
+struct CpdiT3 : Cpdi<CpdiTriangle, false, 2> {
   static constexpr const char* name = "cpdi_t3";
 };
-struct CpdiTet4 : Cpdi<CpdiTetrahedron, false> {
+struct CpdiTet4 : Cpdi<CpdiTetrahedron, false, 1> {
   static constexpr const char* name = "cpdi_tet4";
 };
 
@@ -84,8 +85,9 @@ requires Shape::corner_domain struct ParticleDomain<Dim, Shape> : CpdiDomain<Dim
 /// scheme, the slab colouring and APIC use it unchanged; the weights are accumulated corner by corner.
 template <int Dim, class Shape>
 requires Shape::corner_domain struct Stencil<Dim, Shape> {
-  static constexpr int per_axis = 4;
-  static constexpr int count = Dim == 1 ? 4 : (Dim == 2 ? 16 : 64);
+  static constexpr int reach = Shape::reach;  ///< cells a corner may lie beyond the particle's cell
+  static constexpr int per_axis = 2 * reach + 2;
+  static constexpr int count = Dim == 1 ? per_axis : (Dim == 2 ? per_axis * per_axis : per_axis * per_axis * per_axis);
   using Element = typename Shape::element;
   static_assert(Element::dimension == Dim, "a CPDI element is defined for one dimension only");
 
@@ -107,7 +109,7 @@ requires Shape::corner_domain struct Stencil<Dim, Shape> {
     int base[Dim], stride[Dim];
     for (int d = 0; d < Dim; ++d) {
       const Real xi = (x[d] - g.origin[d]) * g.inv_h[d];
-      base[d] = std::clamp(static_cast<int>(std::floor(xi)) - 1, 0, g.nodes[d] - 4);
+      base[d] = std::clamp(static_cast<int>(std::floor(xi)) - reach, 0, g.nodes[d] - per_axis);
       for (int k = 0; k < per_axis; ++k) offset[d][k] = (base[d] + k - xi) * g.h[d];
       stride[d] = d == 0 ? 1 : stride[d - 1] * per_axis;
     }
@@ -125,8 +127,8 @@ requires Shape::corner_domain struct Stencil<Dim, Shape> {
       int lo[Dim];
       Real hat[Dim][2];
       for (int d = 0; d < Dim; ++d) {
-        const Real xi = std::clamp<Real>((corners[c][d] - g.origin[d]) * g.inv_h[d], base[d], base[d] + 3);
-        const int cell = std::min(static_cast<int>(std::floor(xi)), base[d] + 2);
+        const Real xi = std::clamp<Real>((corners[c][d] - g.origin[d]) * g.inv_h[d], base[d], base[d] + per_axis - 1);
+        const int cell = std::min(static_cast<int>(std::floor(xi)), base[d] + per_axis - 2);
         const Real f = xi - cell;
         lo[d] = cell - base[d];
         hat[d][0] = 1 - f;

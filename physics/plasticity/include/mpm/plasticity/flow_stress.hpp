@@ -1,0 +1,51 @@
+#pragma once
+/// \file flow_stress.hpp
+/// Flow stress laws sigma_f(eps_p, rate*, T*) of the J2 models (review App. B.3.2, Table 9):
+///   HardeningFlow:   sigma_y + H eps_p + Q (1 - exp(-b eps_p))   (perfectly plastic: H = Q = 0; linear: Q = 0;
+///                    Voce: H = 0). No rate or temperature dependence.
+///   JohnsonCookFlow: [A + B eps_p^n] [1 + C ln rate*] [1 - T*^m]   (eq. B.11), rate* = max(rate/rate0, 1)
+///                    (so that the logarithm is never negative), T* = (T - T_r)/(T_m - T_r) in [0, 1].
+/// Damage scales the result by (1 - D) in the stress update, not here. Each law also gives its slope
+/// d sigma_f / d eps_p (at fixed rate and temperature), used by tests (Considere strain).
+
+#include <cmath>
+
+#include "mpm/types.hpp"
+
+namespace mpm::plasticity {
+
+struct HardeningFlow {
+  Real yield_stress = 0;       ///< sigma_y, Pa
+  Real hardening_modulus = 0;  ///< H, Pa
+  Real saturation_stress = 0;  ///< Voce Q, Pa
+  Real saturation_rate = 0;    ///< Voce b, -
+
+  Real stress(Real eps_p, Real /*rate_star*/, Real /*T_star*/) const {
+    Real s = yield_stress + hardening_modulus * eps_p;
+    if (saturation_stress != 0) s += saturation_stress * (1 - std::exp(-saturation_rate * eps_p));
+    return s;
+  }
+  Real slope(Real eps_p) const {
+    return hardening_modulus + saturation_stress * saturation_rate * std::exp(-saturation_rate * eps_p);
+  }
+};
+
+struct JohnsonCookFlow {
+  Real A = 0;  ///< yield stress, Pa
+  Real B = 0;  ///< hardening coefficient, Pa
+  Real n = 1;  ///< hardening exponent, -
+  Real C = 0;  ///< strain-rate coefficient, -
+  Real m = 1;  ///< thermal softening exponent, -
+
+  Real stress(Real eps_p, Real rate_star, Real T_star) const {
+    Real s = A;
+    if (eps_p > 0) s += B * std::pow(eps_p, n);
+    if (C != 0) s *= 1 + C * std::log(rate_star);
+    if (T_star > 0) s *= T_star < 1 ? 1 - std::pow(T_star, m) : 0;
+    return s;
+  }
+  /// d sigma_f / d eps_p at rate* = 1 and T* = 0.
+  Real slope(Real eps_p) const { return B * n * std::pow(eps_p, n - 1); }
+};
+
+}  // namespace mpm::plasticity
