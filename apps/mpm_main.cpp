@@ -20,10 +20,14 @@ int main(int argc, char** argv) {
   std::string scene_file;
   std::string output_dir;
   int threads = 0;
+  bool profile = false;
   auto* run_cmd = cli.add_subcommand("run", "run a scene and write .vtu/.pvd/energy.csv output");
   run_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
   run_cmd->add_option("-o,--output", output_dir, "output directory (overrides output.directory)");
   run_cmd->add_option("--threads", threads, "number of threads (default: all cores)")->check(CLI::PositiveNumber);
+  run_cmd->add_flag("--profile", profile,
+                    "time the phases of every step (P2G, grid update, G2P, stress update, output, other) and print "
+                    "the breakdown at the end");
   auto* check_cmd = cli.add_subcommand("check", "validate a scene without running it");
   check_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
   try {
@@ -46,6 +50,7 @@ int main(int argc, char** argv) {
     RunOptions options;
     if (!output_dir.empty()) options.output_directory = output_dir;
     options.progress = isatty(STDERR_FILENO);
+    options.profile = profile;
     run_scene(scene, options, std::cerr);
     return exit_ok;
   } catch (const mpm::SceneError& e) {

@@ -1,7 +1,8 @@
 /// \file bench_throughput.cpp
-/// Throughput of the explicit engine: particle-updates per second (particles x steps / wall seconds) and
-/// state bytes per particle, for an elastic block of about 1e6 particles, in 2D and 3D, with linear (hat)
-/// and cubic B-spline functions, USL and MUSL, on 1 and 2 threads.
+/// Throughput of the explicit engine: particle-updates per second (particles x steps / wall seconds),
+/// memory per particle (state bytes, and the heap the whole simulation holds) and, with --profile, the
+/// time per phase (P2G, grid update, G2P, stress update, other), for an elastic block of about 1e6
+/// particles, in 2D and 3D, with linear (hat) and cubic B-spline functions, USL and MUSL, on 1 and 2 threads.
 ///
 /// The scene is written as YAML text and goes through parse_scene() and build_simulation<Dim>(), exactly
 /// as a user scene does. Only Simulation::advance() is timed: no output is written. This is a program,
@@ -9,6 +10,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <malloc.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -26,10 +28,12 @@
 #include <string>
 #include <vector>
 
+#include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/grid.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/simulation.hpp"
+#include "mpm/step_profile.hpp"
 
 namespace {
 
@@ -49,6 +53,8 @@ struct Options {
   std::vector<int> threads{1, 2};
   std::string csv;
   double target_seconds = 3.0;  ///< wall time aimed at per timed run when steps are calibrated
+  int repeat = 1;               ///< timed runs per thread count; the row reports the median rate
+  bool profile = false;         ///< one more run of the same steps with the phase timers on
 };
 
 struct Row {
@@ -62,7 +68,18 @@ struct Row {
   std::optional<double> speedup;  ///< against the 1-thread run of the same case, if there is one
   std::size_t bytes_state = 0;    ///< particle state bytes per particle
   double bytes_grid = 0;          ///< grid node records per particle
+  double bytes_heap = 0;          ///< heap held by the built and warmed-up simulation, per particle
+  std::vector<double> rates;      ///< every repeat's rate (the row's rate is their median)
+  std::optional<mpm::StepProfile> profile;
 };
+
+/// Bytes the process has allocated with malloc and not freed (heap and mmapped blocks): measures what a
+/// simulation holds (particles, the guard's snapshot, grid, bins, caches) independently of how the
+/// allocator returns memory to the system, which makes RSS differences unreliable within one process.
+double heap_in_use() {
+  const struct mallinfo2 m = mallinfo2();
+  return static_cast<double>(m.uordblks + m.hblkhd);
+}
 
 std::vector<Case> all_cases() {
   std::vector<Case> out;
@@ -132,6 +149,7 @@ void advance_steps(mpm::Simulation<Dim>& sim, long steps) {
 template <int Dim>
 std::vector<Row> run_case(const Case& c, const Options& opt) {
   const int n = block_cells(Dim, opt.quick);
+  const double heap_before = heap_in_use();
   const auto t_build = Clock::now();
   const mpm::SceneDescription scene = mpm::parse_scene(scene_yaml(c, n), c.name + ".yaml");
   auto sim = mpm::app::build_simulation<Dim>(scene);
@@ -152,6 +170,7 @@ std::vector<Row> run_case(const Case& c, const Options& opt) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
     // Warm-up (first touch, thread pool start, caches), untimed.
     advance_steps(*sim, warmup);
+    const double heap = (heap_in_use() - heap_before) / static_cast<double>(particles);
     // Unless --steps is given, a short probe sets the number of timed steps to last about target_seconds.
     long steps = 0;
     if (opt.steps) {
@@ -163,9 +182,16 @@ std::vector<Row> run_case(const Case& c, const Options& opt) {
       steps = std::clamp(static_cast<long>(std::lround(opt.target_seconds / std::max(per_step, 1e-9))), 5L, 5000L);
     }
 
-    const auto t0 = Clock::now();
-    advance_steps(*sim, steps);
-    const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+    std::vector<double> rates, walls;
+    for (int k = 0; k < opt.repeat; ++k) {
+      const auto t0 = Clock::now();
+      advance_steps(*sim, steps);
+      walls.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+      rates.push_back(static_cast<double>(particles) * steps / std::max(walls.back(), 1e-300));
+    }
+    std::vector<double> sorted = walls;
+    std::sort(sorted.begin(), sorted.end());
+    const double wall = sorted[sorted.size() / 2];  // the median run
 
     Row r;
     r.name = c.name;
@@ -180,8 +206,23 @@ std::vector<Row> run_case(const Case& c, const Options& opt) {
     r.rate = static_cast<double>(particles) * steps / std::max(wall, 1e-300);
     r.bytes_state = state_bytes;
     r.bytes_grid = grid_bytes;
-    fmt::print(std::cerr, "  {} thread(s): {} steps in {:.3f} s, {:.4g} particle-updates/s\n", threads, steps, wall,
-               r.rate);
+    r.bytes_heap = heap;
+    r.rates = rates;
+    fmt::print(std::cerr, "  {} thread(s): {} steps in {:.3f} s, {:.4g} particle-updates/s{}\n", threads, steps, wall,
+               r.rate, opt.repeat > 1 ? fmt::format(" (median of {})", opt.repeat) : std::string());
+    if (opt.profile) {  // the same steps again, with the phase timers on
+      sim->enable_profiling(true);
+      const mpm::StepProfile before = sim->profile();
+      advance_steps(*sim, steps);
+      mpm::StepProfile p = sim->profile();
+      for (int i = 0; i < mpm::step_phase_count; ++i) p.seconds[i] -= before.seconds[i];
+      p.steps -= before.steps;
+      p.particle_updates -= before.particle_updates;
+      sim->enable_profiling(false);
+      r.profile = p;
+      fmt::print(std::cerr, "  profiled: {:.4g} particle-updates/s\n{}\n",
+                 static_cast<double>(p.particle_updates) / p.stepping_seconds(), mpm::format_profile(p));
+    }
     rows.push_back(r);
   }
   // Speed-up against the 1-thread run of the same case, when there is one.
@@ -202,13 +243,15 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 void usage(std::ostream& os) {
   os << "usage: bench_throughput [--quick] [--steps N] [--case NAME[,NAME...]] [--threads 1,2] [--seconds S] "
-        "[--csv FILE]\n"
+        "[--repeat N] [--profile] [--csv FILE]\n"
         "  --quick      blocks of about 2.5e5 particles and ~0.5 s per timed run (smoke run)\n"
         "  --steps N    time exactly N steps per run (default: set by a 2-step probe after the warm-up to last "
         "~--seconds)\n"
         "  --seconds S  wall time aimed at per timed run when calibrating (default 3, quick 0.5)\n"
         "  --case NAME  run only these cases; NAME is e.g. 2d_linear_usl, 3d_cubic_bspline_musl\n"
         "  --threads L  comma-separated thread counts (tbb::global_control max_allowed_parallelism)\n"
+        "  --repeat N   N timed runs per thread count; report the median (default 1)\n"
+        "  --profile    then run the same steps again with the phase timers on and print the time per phase\n"
         "  --csv FILE   also write the table as CSV\n"
         "cases:";
   for (const auto& c : all_cases()) os << ' ' << c.name;
@@ -244,6 +287,11 @@ Options parse_args(int argc, char** argv) {
       if (o.threads.empty()) throw std::invalid_argument("--threads needs at least one count");
     } else if (a == "--csv") {
       o.csv = value();
+    } else if (a == "--repeat") {
+      o.repeat = std::stoi(value());
+      if (o.repeat < 1) throw std::invalid_argument("--repeat must be >= 1");
+    } else if (a == "--profile") {
+      o.profile = true;
     } else if (a == "-h" || a == "--help") {
       usage(std::cout);
       std::exit(0);
@@ -261,23 +309,58 @@ Options parse_args(int argc, char** argv) {
 
 void print_table(const std::vector<Row>& rows, std::ostream& os) {
   os << "| case | dim | shape | scheme | threads | particles | steps | wall s | particle-updates/s | "
-        "speed-up vs 1 thread | bytes/particle (state) | grid bytes/particle |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const auto& r : rows)
-    fmt::print(os, "| {} | {} | {} | {} | {} | {} | {} | {:.3f} | {:.3e} | {} | {} | {:.1f} |\n", r.name, r.dim,
-               r.shape, r.scheme, r.threads, r.particles, r.steps, r.wall, r.rate,
-               r.speedup ? fmt::format("{:.2f}", *r.speedup) : std::string("-"), r.bytes_state, r.bytes_grid);
+        "speed-up vs 1 thread | bytes/particle (state) | grid bytes/particle | heap bytes/particle |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    fmt::print(os, "| {} | {} | {} | {} | {} | {} | {} | {:.3f} | {:.3e} | ", r.name, r.dim, r.shape, r.scheme,
+               r.threads, r.particles, r.steps, r.wall, r.rate);
+    fmt::print(os, "{} | {} | {:.1f} | {:.0f} |\n", r.speedup ? fmt::format("{:.2f}", *r.speedup) : std::string("-"),
+               r.bytes_state, r.bytes_grid, r.bytes_heap);
+  }
+  if (std::none_of(rows.begin(), rows.end(), [](const Row& r) { return r.profile.has_value(); })) return;
+  // Per-phase breakdown: share of the stepping time and nanoseconds per particle-update.
+  os << "\n| case | threads | particle-updates/s (profiled) |";
+  for (int i = 0; i < mpm::step_phase_count; ++i)
+    if (i != static_cast<int>(mpm::StepPhase::output)) os << ' ' << mpm::step_phase_names[i] << " |";
+  os << "\n|---|---|---|";
+  for (int i = 1; i < mpm::step_phase_count; ++i) os << "---|";
+  os << '\n';
+  for (const auto& r : rows) {
+    if (!r.profile) continue;
+    const auto& p = *r.profile;
+    const double total = p.stepping_seconds();
+    fmt::print(os, "| {} | {} | {:.3e} |", r.name, r.threads, static_cast<double>(p.particle_updates) / total);
+    for (int i = 0; i < mpm::step_phase_count; ++i)
+      if (i != static_cast<int>(mpm::StepPhase::output))
+        fmt::print(os, " {:.1f}% ({:.1f} ns) |", 100 * p.seconds[i] / total,
+                   1e9 * p.seconds[i] / static_cast<double>(p.particle_updates));
+    os << '\n';
+  }
 }
 
 void write_csv(const std::vector<Row>& rows, const std::string& file) {
   std::ofstream f(file);
   if (!f) throw std::runtime_error("cannot write " + file);
   f << "case,dim,shape,scheme,threads,particles,grid_nodes,steps,wall_seconds,particle_updates_per_second,"
-       "speedup_vs_1_thread,state_bytes_per_particle,grid_bytes_per_particle\n";
-  for (const auto& r : rows)
-    fmt::print(f, "{},{},{},{},{},{},{},{},{:.6f},{:.6e},{},{},{:.3f}\n", r.name, r.dim, r.shape, r.scheme, r.threads,
-               r.particles, r.nodes, r.steps, r.wall, r.rate,
-               r.speedup ? fmt::format("{:.4f}", *r.speedup) : std::string(), r.bytes_state, r.bytes_grid);
+       "speedup_vs_1_thread,state_bytes_per_particle,grid_bytes_per_particle,heap_bytes_per_particle,repeat_rates";
+  for (int i = 0; i < mpm::step_phase_count; ++i)
+    if (i != static_cast<int>(mpm::StepPhase::output)) f << ",seconds_" << mpm::step_phase_names[i];
+  f << '\n';
+  for (const auto& r : rows) {
+    fmt::print(f, "{},{},{},{},{},{},{},{},{:.6f},{:.6e},", r.name, r.dim, r.shape, r.scheme, r.threads, r.particles,
+               r.nodes, r.steps, r.wall, r.rate);
+    std::string rates;
+    for (double x : r.rates) {
+      if (!rates.empty()) rates += ' ';
+      rates += fmt::format("{:.6e}", x);
+    }
+    fmt::print(f, "{},{},{:.3f},{:.1f},{}", r.speedup ? fmt::format("{:.4f}", *r.speedup) : std::string(),
+               r.bytes_state, r.bytes_grid, r.bytes_heap, rates);
+    for (int i = 0; i < mpm::step_phase_count; ++i)
+      if (i != static_cast<int>(mpm::StepPhase::output))
+        f << ',' << (r.profile ? fmt::format("{:.6f}", r.profile->seconds[i]) : std::string());
+    f << '\n';
+  }
   if (!f) throw std::runtime_error("error writing " + file);
 }
 
@@ -293,6 +376,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    // As the `mpm` program does: a build with optional modules registers them (their cost, if any, is part
+    // of what this benchmark measures; bench/run_module_overhead.sh compares builds with and without).
+    mpm::app::register_modules();
+    std::string modules;
+    for (const auto& m : mpm::app::compiled_modules()) {
+      if (!modules.empty()) modules += ", ";
+      modules += m;
+    }
+    fmt::print(std::cerr, "optional modules compiled in: {}\n", modules.empty() ? "none" : modules);
     std::vector<Row> rows;
     for (const auto& c : all_cases()) {
       if (!opt.cases.empty() && std::find(opt.cases.begin(), opt.cases.end(), c.name) == opt.cases.end()) continue;
@@ -304,7 +396,9 @@ int main(int argc, char** argv) {
     std::cout << "\nparticle-updates/s = particles x steps / wall seconds of Simulation::advance() only (no output).\n"
                  "bytes/particle (state) = ParticleSet::bytes_per_particle(); the stability guard keeps one more copy "
                  "(snapshot).\n"
-                 "grid bytes/particle = grid nodes x (sizeof NodeRecord + sizeof NodeVelocity) / particles.\n";
+                 "grid bytes/particle = grid nodes x (sizeof NodeRecord + sizeof NodeVelocity) / particles.\n"
+                 "heap bytes/particle = heap held by the built simulation after the warm-up steps (particles, the "
+                 "guard's snapshot, grid, bins) / particles.\n";
     if (!opt.csv.empty()) {
       write_csv(rows, opt.csv);
       std::cout << "CSV written to " << opt.csv << '\n';

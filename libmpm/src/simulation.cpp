@@ -64,6 +64,7 @@ void Simulation<Dim>::take_step(Real dt) {
   ctx.time = time_;
   ctx.dt = dt;
   ctx.step = step_ + 1;
+  ctx.profile = profiling_ ? &profile_ : nullptr;
   hooks_.before_step(ctx);
   scheme_->advance(ctx);
   hooks_.end_of_step(ctx);
@@ -89,9 +90,18 @@ void Simulation<Dim>::advance(Real dt) {
     r.detail = fmt::format("time step {} is not a positive finite number", dt);
     throw StabilityError(r);
   }
+  // With profiling, whatever the phases of the step did not account for (reordering, hooks, the guard's
+  // snapshot) is "other".
+  const auto start = profiling_ ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
+  const double accounted = profiling_ ? profile_.total_seconds() : 0;
   take_step(dt);
   snapshot_.dts_since.push_back(dt);
   if (settings_.snapshot_interval > 0 && step_ % settings_.snapshot_interval == 0) take_snapshot();
+  if (profiling_) {
+    profile_.add(StepPhase::other, StepProfile::since(start) - (profile_.total_seconds() - accounted));
+    ++profile_.steps;
+    profile_.particle_updates += particle_count();
+  }
 }
 
 template <int Dim>

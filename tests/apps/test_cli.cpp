@@ -184,6 +184,22 @@ TEST(Cli, RunWritesParaViewSeriesAndEnergyLog) {
   fs::remove_all(dir);
 }
 
+// `mpm run --profile` prints the time per phase after the summary, for any scene.
+TEST(Cli, ProfilePrintsTheTimePerPhase) {
+  const auto dir = scratch("profile");
+  std::ofstream(dir / "scene.yaml") << block_scene("cfl: 0.5, end_time: 0.1", "[0.1, \"0.2*x\"]");
+  const auto r = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string() + " --profile", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto table = r.err.find("profile (wall time per phase");
+  ASSERT_NE(table, std::string::npos) << r.err;
+  for (const char* row :
+       {"\nP2G ", "\ngrid update ", "\nG2P ", "\nstress update ", "\noutput ", "\nother ", "\ntotal "})
+    EXPECT_NE(r.err.find(row, table), std::string::npos) << row << " in " << r.err;
+  const auto plain = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out2").string(), dir);
+  EXPECT_EQ(plain.err.find("profile (wall time per phase"), std::string::npos) << plain.err;
+  fs::remove_all(dir);
+}
+
 TEST(Cli, StabilityGuardStopsTheRunAndWritesTheLastGoodState) {
   const auto dir = scratch("guard");
   // The block is thrown at 20 m/s through the +x face: it leaves the grid within 0.02 s.

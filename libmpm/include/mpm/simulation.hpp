@@ -13,6 +13,7 @@
 #include "mpm/module.hpp"
 #include "mpm/scheme.hpp"
 #include "mpm/stability_error.hpp"
+#include "mpm/step_profile.hpp"
 
 namespace mpm {
 
@@ -56,6 +57,16 @@ class Simulation {
   Index particle_count() const;
   EnergyBalance energy() const;
 
+  /// Times the phases of every following step (step_profile.hpp). Off by default: the kernels then read
+  /// no clock.
+  void enable_profiling(bool on = true) { profiling_ = on; }
+  /// The phases timed since profiling was enabled (all zero when it never was).
+  const StepProfile& profile() const { return profile_; }
+  /// Adds time spent outside the steps (output) to the profile, when profiling.
+  void add_to_profile(StepPhase phase, double seconds) {
+    if (profiling_) profile_.add(phase, seconds);
+  }
+
  private:
   struct Snapshot {
     std::vector<ParticleSet<Dim>> particles;
@@ -79,6 +90,8 @@ class Simulation {
   Real time_ = 0;
   Index step_ = 0;
   Snapshot snapshot_;
+  bool profiling_ = false;
+  StepProfile profile_;
 };
 
 }  // namespace mpm

@@ -7,6 +7,7 @@
 
 #include "mpm/body.hpp"
 #include "mpm/boundary_conditions.hpp"
+#include "mpm/step_profile.hpp"
 
 namespace mpm {
 
@@ -39,6 +40,9 @@ struct StepContext {
   /// simulation then finds and names the culprit (the kernels only raise the flag, which costs nothing).
   std::atomic<bool> guard_tripped{false};
   WaveSpeedBound<Dim> wave_speed;  ///< gathered by the stress update, for the next CFL time step
+  /// Phase timings (step_profile.hpp) when the run is profiled; null otherwise, and then the kernels'
+  /// PhaseTimers read no clock.
+  StepProfile* profile = nullptr;
 };
 
 }  // namespace mpm

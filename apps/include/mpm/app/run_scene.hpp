@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "mpm/scene.hpp"
+#include "mpm/step_profile.hpp"
 
 namespace mpm::app {
 
@@ -21,6 +22,7 @@ enum ExitStatus : int {
 struct RunOptions {
   std::optional<std::filesystem::path> output_directory;  ///< overrides the scene's output.directory
   bool progress = false;                                  ///< progress line (on a terminal)
+  bool profile = false;  ///< time the phases of every step and print the breakdown at the end (`--profile`)
 };
 
 struct RunSummary {
@@ -30,6 +32,7 @@ struct RunSummary {
   double relative_energy_change = 0;  ///< (E_end - E_0)/|E_0|
   std::size_t particles = 0;
   std::size_t bytes_per_particle = 0;
+  StepProfile profile;  ///< per-phase wall time, with RunOptions::profile (all zero otherwise)
 };
 
 /// Builds the scene's simulation without running it (throws SceneError like load_scene).

@@ -15,13 +15,17 @@ namespace mpm::kernels {
 /// velocity, and applies boundary conditions and module hooks at both stages.
 template <int Dim, class Shape>
 void map_and_update_grid(StepContext<Dim>& ctx) {
-  const auto& g = ctx.grid.geometry;
-  for (auto& body : ctx.bodies) {
-    bin_by_slab(body.particles, g, Shape::slab_cells, body.bins);
-    if (body.bins.outside >= 0) ctx.guard_tripped = true;
+  {
+    PhaseTimer timer(ctx.profile, StepPhase::p2g);
+    const auto& g = ctx.grid.geometry;
+    for (auto& body : ctx.bodies) {
+      bin_by_slab(body.particles, g, Shape::slab_cells, body.bins);
+      if (body.bins.outside >= 0) ctx.guard_tripped = true;
+    }
+    reset_grid(ctx.grid);
+    for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape>(body, ctx.grid);
   }
-  reset_grid(ctx.grid);
-  for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape>(body, ctx.grid);
+  PhaseTimer timer(ctx.profile, StepPhase::grid_update);
   if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(ctx.grid.node, ctx.time);
   ctx.hooks.after_p2g(ctx);
   update_grid_velocity(ctx.grid, ctx.settings, ctx.dt);
@@ -40,10 +44,15 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
 /// copied to the on-demand particle field "velocity_gradient" only when that field exists (output).
 /// When a module must run between the transfer and the stress update (phase_after_g2p), the gradients of
 /// all particles are kept in the body's scratch array and the stress update runs after the hooks.
+/// With profiling, each block times its two halves (FusedSplit); without, the only cost is one test of a
+/// local flag per block of 1024 particles.
 template <int Dim, class Transfer>
 void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
   constexpr Index block = 1024;
   const bool fused = !ctx.hooks.has_after_g2p();
+  const bool profiled = ctx.profile != nullptr;
+  FusedSplit split;
+  const auto start = profiled ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
   ctx.wave_speed = {};
   auto merge = [](WaveSpeedBound<Dim> a, const WaveSpeedBound<Dim>& b) {
     a.merge(b);
@@ -63,17 +72,33 @@ void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
           for (Index begin = r.begin(); begin < r.end(); begin += block) {
             const Index end = std::min(begin + block, r.end());
             MatU<Dim>* L = fused ? buffer.data() : body.velocity_gradient.data() + begin;
+            const auto t0 = profiled ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
             if (!transfer(body, begin, end, L)) ctx.guard_tripped = true;
             if (stored) std::copy(L, L + (end - begin), stored + begin);
-            if (fused) b.merge(material.update_stress(p, begin, end, L, ctx.dt));
+            if (!fused) continue;
+            if (!profiled) {
+              b.merge(material.update_stress(p, begin, end, L, ctx.dt));
+              continue;
+            }
+            const auto t1 = StepProfile::Clock::now();
+            b.merge(material.update_stress(p, begin, end, L, ctx.dt));
+            split.transfer += std::chrono::duration<double>(t1 - t0).count();
+            split.stress += StepProfile::since(t1);
           }
           return b;
         },
         merge);
     ctx.wave_speed.merge(bound);
   }
+  if (profiled) {
+    if (fused)
+      split.distribute(*ctx.profile, StepProfile::since(start));
+    else
+      ctx.profile->add(StepPhase::g2p, StepProfile::since(start));
+  }
   if (!fused) {
     ctx.hooks.after_g2p(ctx);
+    PhaseTimer timer(ctx.profile, StepPhase::stress_update);
     for (auto& body : ctx.bodies) {
       auto& p = body.particles;
       const auto bound = tbb::parallel_reduce(

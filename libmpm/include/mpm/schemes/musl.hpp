@@ -17,9 +17,15 @@ class Musl final : public ShapedScheme<Dim, Shape> {
 
   void advance(StepContext<Dim>& ctx) override {
     kernels::map_and_update_grid<Dim, Shape>(ctx);
-    clear_momentum(ctx.grid);
-    for (auto& body : ctx.bodies) update_velocity_and_remap(body, ctx);
-    remapped_velocity(ctx);
+    {
+      PhaseTimer timer(ctx.profile, StepPhase::p2g);  // the second mapping (with the particle velocity update)
+      clear_momentum(ctx.grid);
+      for (auto& body : ctx.bodies) update_velocity_and_remap(body, ctx);
+    }
+    {
+      PhaseTimer timer(ctx.profile, StepPhase::grid_update);
+      remapped_velocity(ctx);
+    }
     kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) {
       return update_position_and_deformation(body, ctx, begin, end, L);
     });

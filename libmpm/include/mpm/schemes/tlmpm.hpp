@@ -49,6 +49,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
 
   void advance(StepContext<Dim>& ctx) override {
     auto& grid = ctx.grid;
+    PhaseTimer p2g(ctx.profile, StepPhase::p2g);
     tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
       for (Index i = r.begin(); i != r.end(); ++i) {
         grid.node[i].mass = nodal_mass_[i];
@@ -57,6 +58,8 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
       }
     });
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) map_momentum_and_force(ctx.bodies[b], stencils_[b], grid);
+    p2g.stop();
+    PhaseTimer grid_update(ctx.profile, StepPhase::grid_update);
     if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time);  // nominal traction
     ctx.hooks.after_p2g(ctx);
     kernels::update_grid_velocity(grid, ctx.settings, ctx.dt);
@@ -66,11 +69,15 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     }
     ctx.hooks.grid_velocity(ctx, GridStage::mapped);
     ctx.hooks.grid_velocity(ctx, GridStage::updated);
+    grid_update.stop();
 
+    PhaseTimer remap(ctx.profile, StepPhase::p2g);
     tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 14), [&](const auto& r) {
       for (Index i = r.begin(); i != r.end(); ++i) grid.node[i].momentum.setZero();
     });
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_velocity_and_remap(ctx.bodies[b], stencils_[b], ctx);
+    remap.stop();
+    PhaseTimer remapped_velocity(ctx.profile, StepPhase::grid_update);
     tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
       for (Index i = r.begin(); i != r.end(); ++i) {
         const NodeRecord<Dim>& n = grid.node[i];
@@ -82,6 +89,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     });
     if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time + ctx.dt);
     ctx.hooks.grid_velocity(ctx, GridStage::remapped);
+    remapped_velocity.stop();
 
     // The grid is the reference configuration: a wave moving at c in the current configuration moves at
     // most at c |row_a(F^-1)| along reference axis a, so the CFL speeds are scaled by the largest of those

@@ -19,25 +19,38 @@ class Usf final : public ShapedScheme<Dim, Shape> {
 
   void advance(StepContext<Dim>& ctx) override {
     auto& grid = ctx.grid;
-    for (auto& body : ctx.bodies) {
-      bin_by_slab(body.particles, grid.geometry, Shape::slab_cells, body.bins);
-      if (body.bins.outside >= 0) ctx.guard_tripped = true;
+    {
+      PhaseTimer timer(ctx.profile, StepPhase::p2g);
+      for (auto& body : ctx.bodies) {
+        bin_by_slab(body.particles, grid.geometry, Shape::slab_cells, body.bins);
+        if (body.bins.outside >= 0) ctx.guard_tripped = true;
+      }
+      kernels::reset_grid(grid);
+      for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, true, false>(body, grid);
     }
-    kernels::reset_grid(grid);
-    for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, true, false>(body, grid);
-    kernels::update_grid_velocity(grid, ctx.settings, ctx.dt);  // mapped = v^t (the force is still zero)
-    if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
-    ctx.hooks.grid_velocity(ctx, GridStage::mapped);
+    {
+      PhaseTimer timer(ctx.profile, StepPhase::grid_update);
+      kernels::update_grid_velocity(grid, ctx.settings, ctx.dt);  // mapped = v^t (the force is still zero)
+      if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
+      ctx.hooks.grid_velocity(ctx, GridStage::mapped);
+    }
 
     kernels::transfer_and_update_stress(
         ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) { return deform(body, ctx, begin, end, L); });
 
-    for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, false, true>(body, grid);
-    if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time);
-    ctx.hooks.after_p2g(ctx);
-    momentum_update(ctx);
-    if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);
-    ctx.hooks.grid_velocity(ctx, GridStage::updated);
+    {
+      PhaseTimer timer(ctx.profile, StepPhase::p2g);
+      for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, false, true>(body, grid);
+    }
+    {
+      PhaseTimer timer(ctx.profile, StepPhase::grid_update);
+      if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time);
+      ctx.hooks.after_p2g(ctx);
+      momentum_update(ctx);
+      if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);
+      ctx.hooks.grid_velocity(ctx, GridStage::updated);
+    }
+    PhaseTimer timer(ctx.profile, StepPhase::g2p);
     for (auto& body : ctx.bodies) move(body, ctx);
   }
 
