@@ -43,12 +43,13 @@ struct Options {
 void usage(std::ostream& os) {
   os << "usage: verification_report [--quick] [--out DIR] [--only TEXT]... [--no-cases] [--no-cfl] [--no-stability]\n"
         "                           [--max-run-seconds S] [--threads N]\n"
-        "  --quick              shorter resolution ladders and a coarser CFL search (about 6 minutes here)\n"
+        "  --quick              the catalogue's standard ladders and a coarser CFL search (about 4 minutes\n"
+        "                       here); without it every ladder gets one finer resolution (about 30 minutes)\n"
         "  --out DIR            where runs.csv, cfl.csv and stability.csv go (default ./verification_report)\n"
         "  --only TEXT          only cases whose name contains TEXT (repeatable), e.g. --only mms_2d\n"
         "  --no-cases, --no-cfl, --no-stability   leave that part out\n"
         "  --max-run-seconds S  skip a resolution whose predicted wall time (from the previous one, times the\n"
-        "                       growth of particles x steps) exceeds S (default 20 quick, 120 full)\n"
+        "                       growth of particles x steps) exceeds S (default 30 quick, 120 full)\n"
         "  --threads N          TBB threads for every run (default 1, so that wall times compare)\n";
 }
 
@@ -85,7 +86,7 @@ Options parse(int argc, char** argv) {
       throw std::invalid_argument("unknown option '" + a + "'");
     }
   }
-  if (o.max_run_seconds == 0) o.max_run_seconds = o.quick ? 20 : 120;
+  if (o.max_run_seconds == 0) o.max_run_seconds = o.quick ? 30 : 120;
   return o;
 }
 
@@ -106,8 +107,9 @@ bool selected(const Options& o, const std::string& name) {
 void run_cases(const Options& o) {
   std::ofstream csv(o.out / "runs.csv");
   csv << "family,case,dimension,scheme,shape_function,resolution,h,particles,steps,error,wall_seconds,"
-         "particle_updates_per_second,status,failure,error_measure,reference\n";
-  const auto cases = v::catalogue(o.quick);
+         "particle_updates_per_second,status,timed_runs,failure,error_measure,reference\n";
+  // --quick: the catalogue's standard ladders (those of the convergence tests); full: one refinement more.
+  const auto cases = v::catalogue(false, o.quick ? 0 : 1);
   std::size_t done = 0;
   for (const auto& c : cases) {
     ++done;
@@ -119,10 +121,19 @@ void run_cases(const Options& o) {
       const double predicted = last_work > 0 ? last_wall * work / last_work : 0;
       std::string status = "ok";
       v::CaseRun r;
+      int repeats = 1;
       if (predicted > o.max_run_seconds) {
         status = fmt::format("skipped: predicted {:.0f} s", predicted);
       } else {
         r = c.run(n);
+        // A run of a few milliseconds is timed again until 0.2 s have been spent on it (at most 20 runs), and
+        // the fastest counts: single short runs are dominated by noise (page faults, the first use of the
+        // thread pool, other processes). The error is the same every time (the runs are deterministic).
+        for (double spent = r.wall_seconds; r.failure.empty() && spent < 0.2 && repeats < 20; ++repeats) {
+          const double again = c.run(n).wall_seconds;
+          spent += again;
+          r.wall_seconds = std::min(r.wall_seconds, again);
+        }
         if (!r.failure.empty()) status = "unstable";
         last_wall = r.wall_seconds;
         last_work = work;
@@ -132,7 +143,7 @@ void run_cases(const Options& o) {
                  r.wall_seconds, status);
       fmt::print(csv, "{},{},{},{},{},{},", c.family, c.name, c.dimension, c.scheme, c.shape_function, n);
       fmt::print(csv, "{:.9g},{},{},{:.9g},{:.6f},{:.6g},", r.h, r.particles, r.steps, r.error, r.wall_seconds, rate);
-      fmt::print(csv, "{},{},{},{}\n", status, csv_field(r.failure), csv_field(c.error_measure),
+      fmt::print(csv, "{},{},{},{},{}\n", status, repeats, csv_field(r.failure), csv_field(c.error_measure),
                  csv_field(c.reference));
       csv.flush();
       if (status == "unstable") break;  // finer resolutions of an unstable method are not informative here
@@ -143,11 +154,13 @@ void run_cases(const Options& o) {
 void run_cfl(const Options& o) {
   std::ofstream csv(o.out / "cfl.csv");
   csv << "problem,scheme,shape_function,largest_stable_cfl,smallest_unstable_cfl,probes,failure\n";
-  const std::vector<std::string> shapes = {"linear", "cpgimp", "quadratic_bspline", "cubic_bspline"};
+  const std::vector<std::string> shapes = {"linear",        "gimp",     "cpgimp", "quadratic_bspline",
+                                           "cubic_bspline", "bernstein"};
   for (const auto& problem : v::cfl_problems())
     for (const char* scheme : {"usl", "musl", "usf", "tlmpm"})
       for (const auto& shape : shapes) {
         if (!selected(o, problem + "/" + scheme + "/" + shape)) continue;
+        if (problem == "two_disks" && std::string(scheme) == "tlmpm") continue;  // no contact: see cfl_limit.hpp
         const auto t0 = Clock::now();
         const v::CflLimit l = o.quick ? v::largest_stable_cfl(problem, scheme, shape, 0.2, 2.0, 3)
                                       : v::largest_stable_cfl(problem, scheme, shape);

@@ -1,5 +1,6 @@
 #include "catalogue.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -72,9 +73,13 @@ void add(std::vector<VerificationCase>& list, const std::string& family, int dim
 }
 
 /// The elastic cases of the core engine (review §6.1-6.2, the 000 paper).
-void add_elastic_cases(std::vector<VerificationCase>& list, bool quick) {
+void add_elastic_cases(std::vector<VerificationCase>& list, bool quick, int refinements) {
   const auto ladder = [&](std::vector<int> full, std::size_t keep) {
     if (quick) full.resize(std::min(keep, full.size()));
+    for (int r = 0; !quick && r < refinements && full.size() >= 2; ++r) {  // continue the geometric ladder
+      const double next = full.back() * (static_cast<double>(full.back()) / full[full.size() - 2]);
+      full.push_back(2 * static_cast<int>(std::lround(next / 2)));  // even: Bernstein and Lagrange elements
+    }
     return full;
   };
 
@@ -173,9 +178,9 @@ std::vector<std::pair<std::string, std::string>> methods(int dimension) {
   return out;
 }
 
-std::vector<VerificationCase> catalogue(bool quick) {
+std::vector<VerificationCase> catalogue(bool quick, int refinements) {
   std::vector<VerificationCase> list;
-  add_elastic_cases(list, quick);
+  add_elastic_cases(list, quick, refinements);
   // Optional modules register their cases here, one explicit call each (see catalogue.hpp).
   return list;
 }

@@ -38,8 +38,9 @@ struct VerificationCase {
   std::function<CaseRun(int resolution)> run;
 };
 
-/// Every registered case. `quick`: shorter ladders (for smoke runs and `bench/run_report.sh --quick`).
-std::vector<VerificationCase> catalogue(bool quick = false);
+/// Every registered case. `quick`: shorter ladders (smoke runs: the tests run the first resolution of each).
+/// `refinements` (ignored when quick): continue every ladder by that many geometric steps (the full report).
+std::vector<VerificationCase> catalogue(bool quick = false, int refinements = 0);
 
 /// Every (scheme, shape function) pair the engine accepts in `dimension`: each scheme with each shape
 /// function of that dimension (CPDI elements exist in one dimension; Lagrange quadratic only with TLMPM).

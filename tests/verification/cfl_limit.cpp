@@ -13,7 +13,8 @@
 namespace mpm::verification {
 namespace {
 
-/// Bar of review §6.1.1 (E = 100 Pa, rho = 1, L = 25 m, c = 10 m/s), 32 cells of 0.78125 m, fixed at x = 0.
+/// Bar of review §6.1.1 (E = 100 Pa, rho = 1, L = 25 m, c = 10 m/s), 32 cells of 0.78125 m, fixed at x = 0,
+/// 50 periods: 6400 steps at factor 1, so that a slowly growing instability shows.
 std::string bar_yaml(const std::string& scheme, const std::string& shape) {
   const int cells = 32, extra = shape == "linear" ? 2 : 4;
   const double h = 25.0 / cells;
@@ -23,8 +24,8 @@ std::string bar_yaml(const std::string& scheme, const std::string& shape) {
       "materials: {{bar: {{model: linear_elastic, density: 1, youngs_modulus: 100, poisson_ratio: 0}}}}\n"
       "bodies: [{{material: bar, shape: {{type: box, min: [0], max: [25]}}, particles_per_cell: 2,\n"
       "          velocity: [\"0.1*sin(_pi*x/50)\"]}}]\n"
-      "solver: {{scheme: {}, shape_function: {}, cfl: 0.5, end_time: 50}}\n",
-      h * (cells + extra), h, scheme, shape);
+      "solver: {{scheme: {}, shape_function: {}, cfl: 0.5, end_time: {}}}\n",
+      h * (cells + extra), h, scheme, shape, 500.0);
 }
 
 /// examples/02_two_disks/scene.yaml with the adaptive time step.
@@ -42,6 +43,11 @@ std::string two_disks_yaml(const std::string& scheme, const std::string& shape) 
       scheme, shape);
 }
 
+/// Energy growth that counts as unstable. The time integration alone makes the energy of the resolved
+/// modes oscillate by a few per cent at factors near 1 (1% on the bar already at 0.36): a smaller limit
+/// would measure accuracy, not stability.
+constexpr double growth_limit = 0.1;
+
 template <int Dim>
 CflProbe run(const std::string& yaml, const std::string& name, double cfl) {
   CflProbe p;
@@ -52,7 +58,7 @@ CflProbe run(const std::string& yaml, const std::string& name, double cfl) {
     while (sim->time() < end - 1e-9 * end) {
       sim->advance(std::min(cfl * sim->stable_time_step(), end - sim->time()));
       p.max_energy_growth = std::max(p.max_energy_growth, (sim->energy().total() - e0) / std::abs(e0));
-      if (p.max_energy_growth > 0.01) {
+      if (p.max_energy_growth > growth_limit) {
         p.failure = fmt::format("total energy grew by {:.3g} of E0 at t = {:.4g} s", p.max_energy_growth, sim->time());
         break;
       }
@@ -71,7 +77,13 @@ std::vector<std::string> cfl_problems() { return {"bar", "two_disks"}; }
 
 CflProbe probe_cfl(const std::string& problem, const std::string& scheme, const std::string& shape, double cfl) {
   if (problem == "bar") return run<1>(bar_yaml(scheme, shape), "cfl_bar.yaml", cfl);
-  if (problem == "two_disks") return run<2>(two_disks_yaml(scheme, shape), "cfl_two_disks.yaml", cfl);
+  if (problem == "two_disks") {
+    if (scheme == "tlmpm")
+      throw std::invalid_argument(
+          "two_disks: not a test of TLMPM (no contact between bodies: the disks pass through "
+          "each other undeformed)");
+    return run<2>(two_disks_yaml(scheme, shape), "cfl_two_disks.yaml", cfl);
+  }
   throw std::invalid_argument("unknown CFL problem '" + problem + "' (bar, two_disks)");
 }
 

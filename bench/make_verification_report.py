@@ -1,0 +1,425 @@
+#!/usr/bin/python3
+"""Draws the error-against-run-time plots and writes docs/VERIFICATION.md from the CSV files of
+bench/verification_report (runs.csv, cfl.csv, stability.csv, meta.csv).
+
+    /usr/bin/python3 bench/make_verification_report.py CSV_DIR [--docs DOCS_DIR] [--command TEXT]
+
+Run by bench/run_report.sh; needs numpy and matplotlib (Debian: python3-numpy, python3-matplotlib).
+Plots go to DOCS_DIR/figures/verification/ (PNG), the report to DOCS_DIR/VERIFICATION.md.
+"""
+
+import argparse
+import csv
+import datetime
+import math
+import os
+import platform
+import subprocess
+import sys
+from collections import OrderedDict, defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+SCHEMES = ["usl", "musl", "usf", "tlmpm"]
+SCHEME_NAMES = {"usl": "USL", "musl": "MUSL", "usf": "USF", "tlmpm": "TLMPM"}
+
+
+# ---- reading -------------------------------------------------------------------------------------------
+
+
+def read_csv(path):
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def number(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return float("nan")
+
+
+def finite(x):
+    return x is not None and math.isfinite(x)
+
+
+class Method:
+    """One line of a plot: a (scheme, shape function) pair on one case, with its ladder."""
+
+    def __init__(self, scheme, shape):
+        self.scheme, self.shape = scheme, shape
+        self.runs = []  # dicts with n, h, particles, steps, error, wall, rate, status, failure
+
+    @property
+    def label(self):
+        return f"{SCHEME_NAMES.get(self.scheme, self.scheme)} {self.shape}"
+
+    def ok(self):
+        return [r for r in self.runs if r["status"] == "ok" and finite(r["error"]) and r["error"] > 0]
+
+    def rate(self):
+        """Least-squares slope of log error against log h over the finished runs, and the last local one."""
+        ok = self.ok()
+        if len(ok) < 2:
+            return float("nan"), float("nan")
+        h = np.log([r["h"] for r in ok])
+        e = np.log([r["error"] for r in ok])
+        slope = np.polyfit(h, e, 1)[0]
+        local = (e[-1] - e[-2]) / (h[-1] - h[-2])
+        return slope, local
+
+    def error_within(self, budget):
+        """Smallest error reached within `budget` wall seconds, interpolated in log-log between the runs
+        around the budget (the work-precision curve read at a given cost); nan if none finished."""
+        ok = sorted(self.ok(), key=lambda r: r["wall"])
+        if not ok:
+            return float("nan")
+        best = float("nan")
+        for i, r in enumerate(ok):
+            if r["wall"] <= budget:
+                best = r["error"] if not finite(best) else min(best, r["error"])
+            elif i > 0 and ok[i - 1]["wall"] < budget:
+                a, b = ok[i - 1], r
+                t = (math.log(budget) - math.log(a["wall"])) / (math.log(b["wall"]) - math.log(a["wall"]))
+                interpolated = math.exp(math.log(a["error"]) + t * (math.log(b["error"]) - math.log(a["error"])))
+                best = interpolated if not finite(best) else min(best, interpolated)
+        return best
+
+
+def load_runs(path):
+    families = OrderedDict()  # family -> {"info": ..., "methods": OrderedDict[(scheme, shape)] -> Method}
+    for row in read_csv(path):
+        fam = families.setdefault(
+            row["family"],
+            {
+                "dimension": int(row["dimension"]),
+                "reference": row["reference"],
+                "measure": row["error_measure"],
+                "methods": OrderedDict(),
+            },
+        )
+        key = (row["scheme"], row["shape_function"])
+        m = fam["methods"].setdefault(key, Method(*key))
+        status = row["status"]
+        m.runs.append(
+            {
+                "n": int(row["resolution"]),
+                "h": number(row["h"]),
+                "particles": int(row["particles"] or 0),
+                "steps": int(row["steps"] or 0),
+                "error": number(row["error"]),
+                "wall": number(row["wall_seconds"]),
+                "rate": number(row["particle_updates_per_second"]),
+                "status": "ok" if status == "ok" else ("unstable" if status == "unstable" else "skipped"),
+                "status_text": status,
+                "failure": row["failure"],
+            }
+        )
+    return families
+
+
+# ---- plots ---------------------------------------------------------------------------------------------
+
+
+def shape_styles(families):
+    shapes = []
+    for fam in families.values():
+        for scheme, shape in fam["methods"]:
+            if shape not in shapes:
+                shapes.append(shape)
+    cmap = plt.get_cmap("tab20")
+    markers = "os^vD<>phX*P"
+    return {s: (cmap(i % 20), markers[i % len(markers)]) for i, s in enumerate(shapes)}
+
+
+def plot_family(name, fam, styles, outdir):
+    """Two figures: error against cell size, error against wall time; one panel per scheme present."""
+    schemes = [s for s in SCHEMES if any(k[0] == s for k in fam["methods"])]
+    files = []
+    for kind, xlabel in (("h", "cell size h (m)"), ("wall", "wall time of the run (s)")):
+        ncols = min(2, len(schemes))
+        nrows = math.ceil(len(schemes) / ncols)
+        fig, axes = plt.subplots(nrows, ncols, figsize=(5.2 * ncols, 3.8 * nrows), squeeze=False, sharex=True, sharey=True)
+        for ax, scheme in zip(axes.flat, schemes):
+            for (s, shape), m in fam["methods"].items():
+                if s != scheme:
+                    continue
+                ok = m.ok()
+                if not ok:
+                    continue
+                color, marker = styles[shape]
+                xs = [r[kind] for r in ok]
+                ax.loglog(xs, [r["error"] for r in ok], marker=marker, color=color, label=shape, lw=1.2, ms=4)
+            if kind == "h":  # slopes 1 and 2 for reading the rates
+                all_ok = [r for m in fam["methods"].values() for r in m.ok()]
+                if all_ok:
+                    h = np.array(sorted({r["h"] for r in all_ok}))
+                    e0 = np.median([r["error"] for r in all_ok if r["h"] == h[-1]])
+                    for p, ls in ((1, ":"), (2, "--")):
+                        ax.loglog(h, e0 * (h / h[-1]) ** p, ls, color="0.5", lw=0.8, label=f"order {p}")
+            ax.set_title(SCHEME_NAMES[scheme])
+            ax.grid(True, which="both", lw=0.3, alpha=0.5)
+            ax.legend(fontsize=7, ncol=2)
+        for ax in axes.flat[len(schemes):]:
+            ax.set_visible(False)
+        for ax in axes[-1]:
+            ax.set_xlabel(xlabel)
+        for ax in axes[:, 0]:
+            ax.set_ylabel(fam["measure"])
+        fig.suptitle(f"{name}: error against {'cell size' if kind == 'h' else 'wall time (work-precision)'}")
+        fig.tight_layout()
+        fname = f"{name}_{'error_vs_h' if kind == 'h' else 'work_precision'}.png"
+        fig.savefig(os.path.join(outdir, fname), dpi=90)
+        plt.close(fig)
+        files.append(fname)
+    return files
+
+
+# ---- ranking -------------------------------------------------------------------------------------------
+
+
+def rank_family(fam):
+    """Methods ordered by the error each reaches within the largest wall time every method reached (the
+    common budget): read off each work-precision line at the same cost."""
+    methods = list(fam["methods"].values())
+    reached = [max(r["wall"] for r in m.ok()) for m in methods if m.ok()]
+    if not reached:
+        return float("nan"), []
+    budget = min(reached)
+    scored = [(m.error_within(budget), m) for m in methods]
+    scored.sort(key=lambda t: (not finite(t[0]), t[0] if finite(t[0]) else 0))
+    return budget, scored
+
+
+# ---- text ----------------------------------------------------------------------------------------------
+
+
+def fmt(x, spec=".3g"):
+    return format(x, spec) if finite(x) else "–"
+
+
+def machine():
+    model, cores = "unknown", 0
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name") and model == "unknown":
+                    model = line.split(":", 1)[1].strip()
+                if line.startswith("processor"):
+                    cores += 1
+    except OSError:
+        pass
+    mem = ""
+    try:
+        with open("/proc/meminfo") as f:
+            kb = int(f.readline().split()[1])
+            mem = f", {kb / 1024 / 1024:.0f} GiB memory"
+    except (OSError, ValueError, IndexError):
+        pass
+    return f"{model}, {cores} logical cores{mem}, {platform.system()} {platform.release()}"
+
+
+def git(root, *args):
+    try:
+        return subprocess.run(["git", "-C", root, *args], capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("csv_dir")
+    ap.add_argument("--docs", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs"))
+    ap.add_argument("--command", default="bash bench/run_report.sh")
+    args = ap.parse_args()
+    root = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    docs = os.path.abspath(args.docs)
+    figdir = os.path.join(docs, "figures", "verification")
+    os.makedirs(figdir, exist_ok=True)
+
+    families = load_runs(os.path.join(args.csv_dir, "runs.csv"))
+    if not families:
+        sys.exit(f"make_verification_report: no runs in {args.csv_dir}/runs.csv")
+    cfl = read_csv(os.path.join(args.csv_dir, "cfl.csv"))
+    stability = read_csv(os.path.join(args.csv_dir, "stability.csv"))
+    meta = (read_csv(os.path.join(args.csv_dir, "meta.csv")) or [{}])[0]
+    styles = shape_styles(families)
+
+    commit = git(root, "rev-parse", "--short=12", "HEAD")
+    dirty = git(root, "status", "--porcelain", "--untracked-files=no")
+    now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+    total = number(meta.get("total_wall_seconds"))
+    nruns = sum(len(m.runs) for f in families.values() for m in f["methods"].values())
+    nmethods = sum(len(f["methods"]) for f in families.values())
+
+    out = []
+    w = out.append
+    w("# Error against run time (generated)\n")
+    w(f"Generated by `{args.command}` on {now}: {nruns} runs of {nmethods} (case, method) pairs in "
+      f"{fmt(total, '.0f')} s of wall time, {meta.get('threads', '1')} thread(s).  ")
+    w(f"Machine: {machine()}.  ")
+    w(f"Commit: `{commit}`{' (with uncommitted changes)' if dirty else ''}, Release build.\n")
+    w("Do not edit: rerun the command. The hand-written notes on every verification test (its reference, "
+      "tolerance and what was learnt) are in [verification.md](verification.md); the stability cases are "
+      "asserted by `ctest -L stability` (`tests/stability/`). Wall times include building the scene and "
+      "measuring the error after every step, and depend on the machine's load; compare them within one "
+      "report.\n")
+    w("Each case of the verification catalogue (`tests/verification/catalogue.hpp`, the cases the tests use) "
+      "is run on its ladder of resolutions (cells per side, 2 particles per cell per axis) with every method "
+      "registered for it. Error measures and references are given per case; the observed rate is the "
+      "least-squares slope of log error against log h over the finished runs; \"local\" is the slope between "
+      "the last two. A method whose run is stopped by the stability guard is marked *unstable* and its finer "
+      "resolutions are not run.\n")
+
+    # Ranking
+    w("## Work–precision ranking\n")
+    w("For each case, the methods are ranked by the error they reach at the same cost: each method's "
+      "work–precision line (error against wall time) is read at the largest wall time that every method of "
+      "the case reached (interpolated in log–log between its runs). Lower is better; methods stopped by the "
+      "guard rank last. The overall order is by the mean normalised rank (0 = best in every case where the "
+      "method runs, 1 = worst), over the cases with at least three methods.\n")
+    w("| case | budget (s) | best | second | third | worst |")
+    w("|---|---|---|---|---|---|")
+    scores = defaultdict(list)
+    wins = defaultdict(int)
+    for name, fam in families.items():
+        budget, scored = rank_family(fam)
+        if not scored:
+            continue
+        cells = [f"{m.label} ({fmt(e)})" for e, m in scored]
+        worst = cells[-1] if len(cells) > 3 else "–"
+        w(f"| {name} | {fmt(budget)} | {' | '.join((cells + ['–'] * 3)[:3])} | {worst} |")
+        if len(scored) >= 3:
+            for i, (e, m) in enumerate(scored):
+                scores[m.label].append(i / (len(scored) - 1))
+            wins[scored[0][1].label] += 1
+    w("")
+    if scores:
+        overall = sorted(scores.items(), key=lambda kv: np.mean(kv[1]))
+        w("Overall (mean normalised rank over the cases where the method runs):\n")
+        w("| method | cases | mean rank | best in |")
+        w("|---|---|---|---|")
+        for label, s in overall:
+            w(f"| {label} | {len(s)} | {np.mean(s):.2f} | {wins.get(label, 0)} |")
+        w("")
+
+    # Rates summary
+    w("## Observed convergence rates\n")
+    w("Least-squares rate of each method on each case (– : fewer than two finished runs).\n")
+    all_methods = []
+    for fam in families.values():
+        for key in fam["methods"]:
+            if key not in all_methods:
+                all_methods.append(key)
+    all_methods.sort(key=lambda k: (SCHEMES.index(k[0]) if k[0] in SCHEMES else 9, k[1]))
+    names = list(families)
+    w("| method | " + " | ".join(names) + " |")
+    w("|---|" + "---|" * len(names))
+    for key in all_methods:
+        row = []
+        for name in names:
+            m = families[name]["methods"].get(key)
+            if m is None:
+                row.append("")
+            elif any(r["status"] == "unstable" for r in m.runs):
+                row.append("unstable")
+            else:
+                row.append(fmt(m.rate()[0], ".2f"))
+        w(f"| {SCHEME_NAMES.get(key[0], key[0])} {key[1]} | " + " | ".join(row) + " |")
+    w("")
+
+    # CFL
+    if cfl:
+        w("## Largest stable CFL factor\n")
+        w("The factor α of dt = α min_d h_d / (c + |v_d|) (review eq. 2.73, recomputed every step), searched "
+          "by `tests/verification/cfl_limit.cpp`: scanned upwards, then bisected between the last stable and the "
+          "first unstable factor. Stable = the stability guard never trips and the total energy never grows by "
+          "more than 10% over the run: the bar (1D, mode 1, 32 cells, 50 periods: 6400 steps at α = 1) and the "
+          "two disks of `examples/02_two_disks` (to 3.5 s: about 90 steps at α = 1, so a slow instability may "
+          "not show). TLMPM is not run on the disks: without contact they pass through each other undeformed. "
+          "\"≥ 2\": stable at every factor tried.\n")
+        problems = list(OrderedDict.fromkeys(r["problem"] for r in cfl))
+        shapes = list(OrderedDict.fromkeys(r["shape_function"] for r in cfl))
+        for problem in problems:
+            w(f"**{problem}**\n")
+            w("| scheme | " + " | ".join(shapes) + " |")
+            w("|---|" + "---|" * len(shapes))
+            for scheme in SCHEMES:
+                rows = {r["shape_function"]: r for r in cfl if r["problem"] == problem and r["scheme"] == scheme}
+                if not rows:
+                    continue
+                cells = []
+                for s in shapes:
+                    r = rows.get(s)
+                    if r is None:
+                        cells.append("")
+                    elif number(r["smallest_unstable_cfl"]) == 0:
+                        cells.append(f"≥ {number(r['largest_stable_cfl']):.3g}")
+                    else:
+                        cells.append(f"{number(r['largest_stable_cfl']):.3f}")
+                w(f"| {SCHEME_NAMES[scheme]} | " + " | ".join(cells) + " |")
+            w("")
+        w("What stops the first unstable factor (first shape function of each scheme):\n")
+        for problem in problems:
+            for scheme in SCHEMES:
+                r = next((r for r in cfl if r["problem"] == problem and r["scheme"] == scheme and r["failure"]), None)
+                if r:
+                    w(f"- {problem}, {SCHEME_NAMES[scheme]} {r['shape_function']} at "
+                      f"{number(r['smallest_unstable_cfl']):.3f}: {r['failure']}")
+        w("")
+
+    # Stability
+    if stability:
+        w("## Stiff and extreme cases\n")
+        w("Asserted by `ctest -L stability` (`tests/stability/`, setups in `stability_cases.cpp`); every output "
+          "file of every case is read back and checked for non-finite values.\n")
+        w("| case | what | outcome | measured | output finite | s |")
+        w("|---|---|---|---|---|---|")
+        for r in stability:
+            w(f"| {r['case']} | {r['description']} | {r['outcome']} | {r['summary']} | {r['all_output_finite']} "
+              f"| {fmt(number(r['wall_seconds']), '.2f')} |")
+        w("")
+
+    # Per case
+    w("## Cases\n")
+    for name, fam in families.items():
+        files = plot_family(name, fam, styles, figdir)
+        w(f"### {name} ({fam['dimension']}D)\n")
+        w(f"Reference: {fam['reference']}. Error: {fam['measure']}.\n")
+        for f in files:
+            w(f"![{name}: {f}](figures/verification/{f})")
+        w("")
+        w("| method | cells per side | error | wall s | particle-updates/s | rate (local) |")
+        w("|---|---|---|---|---|---|")
+        for m in fam["methods"].values():
+            rate, local = m.rate()
+            shown = [r for r in m.runs if r["status"] != "skipped"]
+            errors = ", ".join(fmt(r["error"]) if r["status"] == "ok" else "unstable" for r in shown)
+            skipped = [r for r in m.runs if r["status"] == "skipped"]
+            ns = ", ".join(str(r["n"]) for r in shown)
+            if skipped:
+                ns += " (" + ", ".join(f"{r['n']} {r['status_text']}" for r in skipped) + ")"
+            walls = ", ".join(fmt(r["wall"], ".3f") for r in shown)
+            rates = ", ".join(fmt(r["rate"], ".2e") for r in shown)
+            w(f"| {m.label} | {ns} | {errors} | {walls} | {rates} | {fmt(rate, '.2f')} ({fmt(local, '.2f')}) |")
+        failures = [(m, r) for m in fam["methods"].values() for r in m.runs if r["status"] == "unstable"]
+        if failures:
+            w("")
+            for m, r in failures:
+                w(f"- {m.label}, {r['n']} cells: {r['failure']}")
+        w("")
+
+    with open(os.path.join(docs, "VERIFICATION.md"), "w") as f:
+        f.write("\n".join(out) + "\n")
+    print(f"make_verification_report: wrote {os.path.join(docs, 'VERIFICATION.md')} and "
+          f"{sum(1 for _ in os.listdir(figdir))} figures in {figdir}")
+
+
+if __name__ == "__main__":
+    main()
