@@ -266,7 +266,7 @@ def main():
     w(f"Machine: {machine()}.  ")
     w(f"Commit: `{commit}`{' (with uncommitted changes)' if dirty else ''}, Release build.\n")
     w("Do not edit: rerun the command. The hand-written notes on every verification test (its reference, "
-      "tolerance and what was learnt) are in [verification.md](verification.md); the stability cases are "
+      "tolerance and what was learnt) are in [verification-notes.md](verification-notes.md); the stability cases are "
       "asserted by `ctest -L stability` (`tests/stability/`). Wall times include building the scene and "
       "measuring the error after every step, and depend on the machine's load; compare them within one "
       "report.\n")

@@ -9,7 +9,7 @@
 // internal force of a uniform stress exactly and the quadratic element's stiffness to O(h^2), like 2-point
 // Gauss it is rank-sufficient; its row-sum nodal masses are 1/8 (vertex) and 3/4 (mid) of the element mass
 // instead of the exact 1/6 and 2/3, which only matters for the dynamics (case B).
-// Every bound below was measured (numbers in docs/verification.md) and is asserted with a margin.
+// Every bound below was measured (numbers in docs/verification-notes.md) and is asserted with a margin.
 #include <gtest/gtest.h>
 
 #include "convergence.hpp"
@@ -58,7 +58,7 @@ TEST(TlmpmPaperColumn, ExactStaticSolution) {
 
 // The paper's own setting (eq. 69): linear hats, 10 elements, 2 particles per element, linear ramp to
 // t = 1, held to 1.2, gravity from t = 0. The grid displacement and the stress match the exact static
-// solution; the particle positions do not (see the note in docs/verification.md: the TLMPM moves particles
+// solution; the particle positions do not (see the note in docs/verification-notes.md: the TLMPM moves particles
 // with the first-mapped velocity while F integrates the re-mapped one; with flip_fraction < 1 the two
 // differ near the loaded end by O(h)).
 TEST(TlmpmPaperColumn, PaperSettingLinearHats) {
