@@ -3,11 +3,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iostream>
 
 #include "mpm/cpdi_corner_tracking.hpp"
 #include "mpm/expression.hpp"
+#include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
-#include "mpm/geometry/primitive_filler.hpp"
+#include "mpm/geometry/geometry_error.hpp"
+#include "mpm/geometry/shape_filler.hpp"
 #include "mpm/material_factory.hpp"
 #include "mpm/scene_error.hpp"
 
@@ -38,7 +41,14 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
     body.name = bd.name;
     body.index = static_cast<int>(bodies.size());
     body.material = make_material<Dim>(md);
-    const auto seeds = geometry::fill_primitive<Dim>(bd.shape, geometry, bd.particles_per_cell);
+    const std::string shape_key = "bodies[" + std::to_string(body.index) + "].shape";
+    std::vector<std::string> warnings;  // repairs of mesh files (printed, the run goes on)
+    geometry::ParticleSeeds<Dim> seeds;
+    try {
+      seeds = geometry::fill_shape<Dim>(bd.shape, geometry, bd.particles_per_cell, &warnings);
+    } catch (const geometry::GeometryError& e) {
+      throw SceneError(bd.shape.where, shape_key, "body '" + bd.name + "': " + e.what());
+    }
     if (seeds.positions.empty())
       throw SceneError(bd.where, "bodies[" + std::to_string(body.index) + "].shape",
                        "body '" + bd.name + "' contains no particle: the shape is smaller than a particle spacing");
@@ -50,7 +60,21 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
     const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
     // CPDI: every sub-cell becomes one or more particle elements (segments, quads, triangles, tets).
     geometry::CpdiParticles<Dim> elements;
-    if (shape.domain_corners > 0) {
+    const bool conforming = bd.domains == "conforming";
+    if (conforming && !((Dim == 2 && scene.solver.shape_function == "cpdi_t3") ||
+                        (Dim == 3 && scene.solver.shape_function == "cpdi_tet4")))
+      throw SceneError(bd.where, "bodies[" + std::to_string(body.index) + "].domains",
+                       "domains: conforming needs shape_function cpdi_t3 (2D) or cpdi_tet4 (3D); the solver uses " +
+                           scene.solver.shape_function);
+    if (conforming) {  // CGAL triangle / tetrahedron mesh of the shape (geometry/conforming_domains.hpp)
+      Real spacing = h[0] / bd.particles_per_cell[0];
+      for (int d = 1; d < Dim; ++d) spacing = std::min<Real>(spacing, h[d] / bd.particles_per_cell[d]);
+      try {
+        elements = geometry::conforming_cpdi_particles<Dim>(bd.shape, spacing, &warnings);
+      } catch (const geometry::GeometryError& e) {
+        throw SceneError(bd.shape.where, shape_key, "body '" + bd.name + "': " + e.what());
+      }
+    } else if (shape.domain_corners > 0) {
       Vec<Dim> spacing;
       for (int d = 0; d < Dim; ++d) spacing[d] = h[d] / bd.particles_per_cell[d];
       elements = geometry::cpdi_particles<Dim>(seeds, spacing, shape.domain_corners);
@@ -108,7 +132,8 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
                        "temperature: body '" + bd.name + "' (material '" + bd.material + "', model " + md.model +
                            ") does not track temperature; give its material specific_heat (johnson_cook, "
                            "j2_plasticity) or remove temperature from the fields");
-    max_particle_mass = std::max(max_particle_mass, rho * seeds.volume);  // elements are at most a sub-cell
+    for (const Real v : elements.volumes) max_particle_mass = std::max(max_particle_mass, rho * v);
+    for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
     bodies.push_back(std::move(body));
   }
 

@@ -2,68 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace mpm::geometry {
 
 template <int Dim>
-bool contains(const ShapeDescription& s, const Vec<Dim>& x) {
-  if (s.type == "box") {
-    for (int d = 0; d < Dim; ++d)
-      if (x[d] < s.min[d] || x[d] > s.max[d]) return false;
-    return true;
-  }
-  if (s.type == "disk" || s.type == "sphere") {
-    Real r2 = 0;
-    for (int d = 0; d < Dim; ++d) r2 += (x[d] - s.center[d]) * (x[d] - s.center[d]);
-    return r2 <= s.radius * s.radius;
-  }
-  if (s.type == "cylinder") {
-    Real r2 = 0;
-    for (int d = 0; d < Dim; ++d) {
-      const Real dx = x[d] - s.center[d];
-      if (d == s.axis) {
-        if (dx < 0 || dx > s.length) return false;
-      } else {
-        r2 += dx * dx;
-      }
-    }
-    return r2 <= s.radius * s.radius;
-  }
-  throw std::invalid_argument("unknown shape type '" + s.type + "'");
-}
-
-namespace {
-/// Axis-aligned bounding box of the shape, per axis.
-template <int Dim>
-void bounds(const ShapeDescription& s, Vec<Dim>& lo, Vec<Dim>& hi) {
-  for (int d = 0; d < Dim; ++d) {
-    if (s.type == "box") {
-      lo[d] = s.min[d];
-      hi[d] = s.max[d];
-    } else if (s.type == "cylinder" && d == s.axis) {
-      lo[d] = s.center[d];
-      hi[d] = s.center[d] + s.length;
-    } else {
-      lo[d] = s.center[d] - s.radius;
-      hi[d] = s.center[d] + s.radius;
-    }
-  }
-}
-}  // namespace
-
-template <int Dim>
-ParticleSeeds<Dim> fill_primitive(const ShapeDescription& shape, const GridGeometry<Dim>& g,
-                                  const std::array<int, 3>& ppc) {
+ParticleSeeds<Dim> fill_region(const Region<Dim>& region, const GridGeometry<Dim>& g, const std::array<int, 3>& ppc) {
   ParticleSeeds<Dim> seeds;
-  Vec<Dim> lo, hi;
-  bounds<Dim>(shape, lo, hi);
+  const Box<Dim> box = region.bounds();
   std::array<int, 3> first{0, 0, 0}, last{0, 0, 0};  // cell range touching the bounding box
-  seeds.volume = g.cell_volume();
+  seeds.sub_cell_volume = g.cell_volume();
   for (int d = 0; d < Dim; ++d) {
-    first[d] = std::clamp(static_cast<int>(std::floor((lo[d] - g.origin[d]) * g.inv_h[d])), 0, g.cells(d) - 1);
-    last[d] = std::clamp(static_cast<int>(std::floor((hi[d] - g.origin[d]) * g.inv_h[d])), 0, g.cells(d) - 1);
-    seeds.volume /= ppc[d];
+    first[d] = std::clamp(static_cast<int>(std::floor((box.lo[d] - g.origin[d]) * g.inv_h[d])), 0, g.cells(d) - 1);
+    last[d] = std::clamp(static_cast<int>(std::floor((box.hi[d] - g.origin[d]) * g.inv_h[d])), 0, g.cells(d) - 1);
+    seeds.sub_cell_volume /= ppc[d];
   }
   std::array<int, 3> cell{}, sub{};
   for (cell[2] = first[2]; cell[2] <= last[2]; ++cell[2])
@@ -74,11 +25,28 @@ ParticleSeeds<Dim> fill_primitive(const ShapeDescription& shape, const GridGeome
             for (sub[0] = 0; sub[0] < ppc[0]; ++sub[0]) {
               Vec<Dim> x;
               for (int d = 0; d < Dim; ++d) x[d] = g.origin[d] + g.h[d] * (cell[d] + (sub[d] + 0.5) / ppc[d]);
-              if (contains<Dim>(shape, x)) seeds.positions.push_back(x);
+              if (region.contains(x)) seeds.positions.push_back(x);
             }
+  seeds.volume = seeds.sub_cell_volume;
+  if (const auto exact = region.exact_volume(); exact && !seeds.positions.empty())
+    seeds.volume = *exact / static_cast<Real>(seeds.positions.size());
   return seeds;
 }
 
+template <int Dim>
+bool contains(const ShapeDescription& shape, const Vec<Dim>& x) {
+  return make_region<Dim>(shape)->contains(x);
+}
+
+template <int Dim>
+ParticleSeeds<Dim> fill_primitive(const ShapeDescription& shape, const GridGeometry<Dim>& g,
+                                  const std::array<int, 3>& ppc) {
+  return fill_region<Dim>(*make_region<Dim>(shape), g, ppc);
+}
+
+template ParticleSeeds<1> fill_region<1>(const Region<1>&, const GridGeometry<1>&, const std::array<int, 3>&);
+template ParticleSeeds<2> fill_region<2>(const Region<2>&, const GridGeometry<2>&, const std::array<int, 3>&);
+template ParticleSeeds<3> fill_region<3>(const Region<3>&, const GridGeometry<3>&, const std::array<int, 3>&);
 template bool contains<1>(const ShapeDescription&, const Vec<1>&);
 template bool contains<2>(const ShapeDescription&, const Vec<2>&);
 template bool contains<3>(const ShapeDescription&, const Vec<3>&);

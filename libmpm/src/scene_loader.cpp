@@ -4,8 +4,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -14,6 +16,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
+#include <tuple>
 #include <utility>
 
 #include "mpm/expression.hpp"
@@ -412,19 +415,178 @@ std::map<std::string, MaterialDescription> read_materials(const Reader& r, const
   return materials;
 }
 
-/// Shape types per dimension (index 1..3).
-const std::vector<std::string> shape_types[4] = {{}, {"box"}, {"box", "disk"}, {"box", "sphere", "cylinder"}};
+/// Shape types per dimension (index 1..3), given with `type:`.
+const std::vector<std::string> shape_types[4] = {
+    {}, {"box"}, {"box", "disk", "polygon"}, {"box", "sphere", "cylinder"}};
+/// Shapes given by their own key instead of `type:` (a file or a list of shapes).
+const std::vector<std::string> shape_kinds = {"mesh", "image", "union", "intersection", "difference"};
 
-ShapeDescription read_shape(const Reader& r, const Value& v, int dimension) {
+std::string lower_case(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+/// A mesh or image file name: relative names are taken from the scene file's folder; the format (by
+/// extension) must be one of `extensions` and the file must exist.
+std::string read_file_name(const Reader& r, const Value& v, const std::string& scene_file,
+                           const std::vector<std::string>& extensions, std::string_view what) {
+  const std::string name = r.name(v);
+  std::filesystem::path path(name);
+  if (path.is_relative()) path = std::filesystem::path(scene_file).parent_path() / path;
+  const std::string ext = lower_case(path.extension().string());
+  if (!contains(extensions, ext))
+    r.fail(v, fmt::format("unsupported {} format '{}' of '{}'; supported: {}", what, ext, name, join(extensions)));
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
+    r.fail(v, fmt::format("{} file '{}' not found (looked for {})", what, name, path.string()));
+  return path.lexically_normal().string();
+}
+
+/// Twice the signed area of triangle abc.
+double orient(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/// True when the closed segments ab and cd share a point.
+bool segments_meet(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c,
+                   const std::array<double, 2>& d) {
+  const double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) return true;
+  const auto on = [](const auto& p, const auto& q, const auto& x) {  // x on segment pq, given collinear
+    return std::min(p[0], q[0]) <= x[0] && x[0] <= std::max(p[0], q[0]) && std::min(p[1], q[1]) <= x[1] &&
+           x[1] <= std::max(p[1], q[1]);
+  };
+  return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) || (o4 == 0 && on(c, d, b));
+}
+
+void read_polygon(const Reader& r, const MapReader& m, ShapeDescription& shape) {
+  m.allow({"type", "vertices"});
+  const Value list = m.required("vertices");
+  for (const auto& item : r.list(list, std::nullopt, "[x, y] corners")) {
+    const auto xy = r.vector(item, 2, any_number, "m");
+    shape.vertices.push_back({xy[0], xy[1]});
+  }
+  auto& p = shape.vertices;
+  if (p.size() > 3 && p.front() == p.back()) p.pop_back();  // a closing corner repeated
+  if (p.size() < 3) r.fail(list, fmt::format("a polygon needs at least 3 corners, got {}", p.size()));
+  double area = 0;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) area += p[j][0] * p[i][1] - p[i][0] * p[j][1];
+  if (area == 0) r.fail(list, "the polygon has zero area");
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
+      if (adjacent) continue;
+      if (segments_meet(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n]))
+        r.fail(list, fmt::format("the polygon crosses itself: edge {} (corners {} and {}) meets edge {} (corners {} "
+                                 "and {})",
+                                 i, i, (i + 1) % n, j, j, (j + 1) % n));
+    }
+}
+
+void read_mesh(const Reader& r, const MapReader& m, int dimension, const std::string& scene_file,
+               ShapeDescription& shape) {
+  const Value file = *m.find("mesh");
+  if (dimension == 1) r.fail(file, "mesh bodies are available in 2D (a section of the mesh) and 3D");
+  std::vector<std::string> keys{"mesh", "scale", "rotation", "translation"};
+  if (dimension == 2) keys.push_back("section");
+  m.allow(keys);
+  shape.type = "mesh";
+  shape.file = read_file_name(r, file, scene_file, {".stl", ".obj", ".off", ".ply"}, "mesh");
+  if (const auto scale = m.find("scale")) shape.scale = r.number(*scale, positive, "");
+  if (const auto rotation = m.find("rotation")) shape.rotation = r.vector(*rotation, 3, any_number, "degrees");
+  if (const auto translation = m.find("translation")) shape.translation = r.vector(*translation, 3, any_number, "m");
+  if (dimension == 2)
+    shape.section =
+        r.number(m.required("section", "key", " (a 2D body is the section of the mesh by the plane z = section, m)"));
+}
+
+void read_image(const Reader& r, const MapReader& m, int dimension, const std::string& scene_file, bool whole_shape,
+                ShapeDescription& shape, std::vector<double>* labels) {
+  const Value file = *m.find("image");
+  if (dimension == 1) r.fail(file, "image bodies are available in 2D (.png, .pgm) and 3D (.vti)");
+  m.allow({"image", "pixel_size", "origin", "threshold", "label", "labels", "resolution"});
+  shape.type = "image";
+  const std::vector<std::string> formats =
+      dimension == 2 ? std::vector<std::string>{".png", ".pgm"} : std::vector<std::string>{".vti"};
+  shape.file = read_file_name(r, file, scene_file, formats, fmt::format("{}D image", dimension));
+  if (const auto size = m.find("pixel_size")) {
+    const auto sizes = r.per_axis(*size, dimension, "numbers");
+    for (int d = 0; d < dimension; ++d) shape.pixel_size[d] = r.number(sizes[d], positive, "m");
+  } else if (dimension == 2) {
+    m.required("pixel_size", "key", " (the size of a pixel, m)");
+  }
+  if (const auto origin = m.find("origin")) shape.image_origin = r.vector(*origin, dimension, any_number, "m");
+  std::vector<Value> selections;
+  for (const char* key : {"threshold", "label", "labels"})
+    if (const auto value = m.find(key)) selections.push_back(*value);
+  if (selections.empty())
+    r.fail(m.self(),
+           "an image body needs threshold (pixels with a value >= threshold), label (pixels with that value) "
+           "or labels (one body per value)");
+  if (selections.size() > 1) r.fail(selections[1], "give one of threshold, label and labels");
+  if (const auto threshold = m.find("threshold")) shape.threshold = r.number(*threshold);
+  if (const auto label = m.find("label")) shape.label = r.number(*label);
+  if (const auto list = m.find("labels")) {
+    if (!labels || !whole_shape)
+      r.fail(*list, "labels (one body per label) needs the image to be the whole shape of the body; use label here");
+    const auto items = r.list(*list, std::nullopt, "label values");
+    if (items.empty()) r.fail(*list, "expected at least one label value");
+    for (const auto& item : items) {
+      const double value = r.number(item);
+      if (std::find(labels->begin(), labels->end(), value) != labels->end())
+        r.fail(item, fmt::format("label {} is listed twice", value));
+      labels->push_back(value);
+    }
+  }
+  if (const auto resolution = m.find("resolution")) {
+    shape.pixel_particles = r.choice(*resolution, {"grid", "pixel"}) == "pixel";
+    if (shape.pixel_particles && !whole_shape)
+      r.fail(*resolution, "resolution: pixel needs the image to be the whole shape of the body");
+  }
+}
+
+/// `labels` (may be null) receives the values of an image's `labels:` list (one body per label).
+ShapeDescription read_shape(const Reader& r, const Value& v, int dimension, const std::string& scene_file,
+                            bool whole_shape, std::vector<double>* labels) {
   const MapReader m = r.map(v);
-  const Value type = m.required("type");
   ShapeDescription shape;
+  shape.where = r.location(v.mark);
+  std::vector<std::string> given;
+  for (const auto& key : std::vector<std::string>{"type", "mesh", "image", "union", "intersection", "difference"})
+    if (m.find(key)) given.push_back(key);
+  if (given.empty()) m.required("type", "key", " (or one of mesh, image, union, intersection, difference)");
+  if (given.size() > 1)
+    r.fail(*m.find(given[1]), fmt::format("a shape is either a type, a mesh, an image, a union, an intersection or a "
+                                          "difference; this one has both {} and {}",
+                                          given[0], given[1]));
+  const std::string& kind = given[0];
+  if (kind == "mesh") {
+    read_mesh(r, m, dimension, scene_file, shape);
+    return shape;
+  }
+  if (kind == "image") {
+    read_image(r, m, dimension, scene_file, whole_shape, shape, labels);
+    return shape;
+  }
+  if (kind != "type") {  // union, intersection, difference
+    m.allow({kind});
+    shape.type = kind;
+    const Value list = *m.find(kind);
+    const auto items = r.list(list, std::nullopt, "shapes");
+    if (items.size() < 2) r.fail(list, fmt::format("a {} needs a list of at least 2 shapes", kind));
+    for (const auto& item : items) shape.parts.push_back(read_shape(r, item, dimension, scene_file, false, nullptr));
+    return shape;
+  }
+  const Value type = *m.find("type");
   shape.type = r.string(type);
   const auto& valid = shape_types[dimension];
   if (!contains(valid, shape.type)) {
-    const bool elsewhere = shape.type == "disk" || shape.type == "sphere" || shape.type == "cylinder";
+    const bool elsewhere =
+        shape.type == "disk" || shape.type == "sphere" || shape.type == "cylinder" || shape.type == "polygon";
     r.fail(type,
-           fmt::format("{} '{}'{}; valid types in {}D: {}", elsewhere ? "shape type" : "unknown shape type", shape.type,
+           fmt::format("{} '{}'{}; valid types in {}D: {} (or mesh, image, union, intersection, difference)",
+                       elsewhere ? "shape type" : "unknown shape type", shape.type,
                        elsewhere ? fmt::format(" is not available in {}D", dimension) : "", dimension, join(valid)));
   }
   if (shape.type == "box") {
@@ -436,13 +598,31 @@ ShapeDescription read_shape(const Reader& r, const Value& v, int dimension) {
       if (!(shape.min[d] < shape.max[d]))
         r.fail(max, fmt::format("max must exceed min on every axis; on axis {}: min {} m, max {} m", axis_names[d],
                                 shape.min[d], shape.max[d]));
+  } else if (shape.type == "polygon") {
+    read_polygon(r, m, shape);
   } else if (shape.type == "cylinder") {
     m.allow({"type", "center", "radius", "axis", "length"});
     shape.center = r.vector(m.required("center"), dimension, any_number, "m");
     shape.radius = r.number(m.required("radius"), positive, "m");
     if (const auto axis = m.find("axis")) {
-      const std::string name = r.choice(*axis, {"x", "y", "z"});
-      shape.axis = name[0] - 'x';
+      if (axis->node.IsSequence()) {  // any direction
+        shape.direction = r.vector(*axis, 3, any_number, "");
+        const double norm = std::hypot(shape.direction[0], shape.direction[1], shape.direction[2]);
+        if (norm == 0) r.fail(*axis, "the axis direction must not be the zero vector");
+        for (auto& c : shape.direction) c /= norm;
+        shape.axis = -1;
+        for (int d = 0; d < 3; ++d)
+          if (std::abs(shape.direction[d]) == 1 && shape.direction[d] > 0) shape.axis = d;
+      } else {
+        if (!axis->node.IsScalar() || !contains({"x", "y", "z"}, axis->node.Scalar()))
+          r.fail(*axis, fmt::format("invalid value {}; valid values: x, y, z or a direction [ax, ay, az]",
+                                    describe(axis->node)));
+        shape.axis = axis->node.Scalar()[0] - 'x';
+      }
+    }
+    if (shape.axis >= 0) {
+      shape.direction = {0, 0, 0};
+      shape.direction[shape.axis] = 1;
     }
     shape.length = r.number(m.required("length"), positive, "m");
   } else {  // disk, sphere
@@ -453,25 +633,55 @@ ShapeDescription read_shape(const Reader& r, const Value& v, int dimension) {
   return shape;
 }
 
-/// Axis-aligned bounding box of a shape (first `dimension` axes meaningful).
-std::pair<std::array<double, 3>, std::array<double, 3>> bounding_box(const ShapeDescription& s, int dimension) {
-  if (s.type == "box") return {s.min, s.max};
+using Bounds = std::pair<std::array<double, 3>, std::array<double, 3>>;
+
+/// Axis-aligned bounding box of a shape (first `dimension` axes meaningful), or nothing when only the
+/// mesh or image file knows it (the scene builder checks those).
+std::optional<Bounds> bounding_box(const ShapeDescription& s, int dimension) {
+  if (s.type == "box") return Bounds{s.min, s.max};
+  if (s.type == "mesh" || s.type == "image") return std::nullopt;
   std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
+  if (s.type == "union" || s.type == "intersection" || s.type == "difference") {
+    for (std::size_t k = 0; k < s.parts.size(); ++k) {
+      const auto part = bounding_box(s.parts[k], dimension);
+      if (!part) return std::nullopt;
+      if (k == 0) {
+        std::tie(lo, hi) = *part;
+        if (s.type == "difference") break;
+        continue;
+      }
+      for (int d = 0; d < dimension; ++d) {
+        lo[d] = s.type == "union" ? std::min(lo[d], part->first[d]) : std::max(lo[d], part->first[d]);
+        hi[d] = s.type == "union" ? std::max(hi[d], part->second[d]) : std::min(hi[d], part->second[d]);
+      }
+    }
+    return Bounds{lo, hi};
+  }
+  if (s.type == "polygon") {
+    lo = {s.vertices[0][0], s.vertices[0][1], 0};
+    hi = lo;
+    for (const auto& v : s.vertices)
+      for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], v[d]), hi[d] = std::max(hi[d], v[d]);
+    return Bounds{lo, hi};
+  }
   for (int d = 0; d < dimension; ++d) {
     lo[d] = s.center[d] - s.radius;
     hi[d] = s.center[d] + s.radius;
-    if (s.type == "cylinder" && d == s.axis) {  // center is the base centre
-      lo[d] = s.center[d];
-      hi[d] = s.center[d] + s.length;
+    if (s.type == "cylinder") {  // center is the base centre; the end disks reach r sqrt(1 - a_d^2)
+      const double a = s.direction[d], reach = s.radius * std::sqrt(std::max(0.0, 1 - a * a));
+      lo[d] = std::min(s.center[d], s.center[d] + s.length * a) - reach;
+      hi[d] = std::max(s.center[d], s.center[d] + s.length * a) + reach;
     }
   }
-  return {lo, hi};
+  return Bounds{lo, hi};
 }
 
-BodyDescription read_body(const Reader& r, const Value& v, std::size_t index, const SceneDescription& scene) {
+/// `labels` receives the values of an image shape's `labels:` list (the body is then one body per label).
+BodyDescription read_body(const Reader& r, const Value& v, std::size_t index, const SceneDescription& scene,
+                          std::vector<double>& labels) {
   const int dimension = scene.dimension;
   const MapReader m = r.map(v);
-  m.allow({"name", "material", "shape", "particles_per_cell", "velocity"});
+  m.allow({"name", "material", "shape", "particles_per_cell", "velocity", "domains"});
   BodyDescription body;
   body.where = r.location(v.mark);
   body.name = fmt::format("body{}", index);
@@ -486,10 +696,11 @@ BodyDescription read_body(const Reader& r, const Value& v, std::size_t index, co
   }
 
   const Value shape = m.required("shape");
-  body.shape = read_shape(r, shape, dimension);
-  const auto [lo, hi] = bounding_box(body.shape, dimension);
+  body.shape = read_shape(r, shape, dimension, scene.file, true, &labels);
+  const auto box = bounding_box(body.shape, dimension);
   const GridDescription& grid = scene.grid;
-  for (int d = 0; d < dimension; ++d) {
+  for (int d = 0; box && d < dimension; ++d) {
+    const auto& [lo, hi] = *box;
     const double grid_lo = grid.origin[d], grid_hi = grid.origin[d] + grid.extent[d];
     const double tolerance = geometric_tolerance * grid.extent[d];
     if (lo[d] < grid_lo - tolerance || hi[d] > grid_hi + tolerance)
@@ -510,6 +721,7 @@ BodyDescription read_body(const Reader& r, const Value& v, std::size_t index, co
     const auto components = r.list(*velocity, dimension, "components");
     for (int d = 0; d < dimension; ++d) body.velocity[d] = r.expression(components[d], {"x", "y", "z"});
   }
+  if (const auto domains = m.find("domains")) body.domains = r.choice(*domains, {"lattice", "conforming"});
   return body;
 }
 
@@ -519,14 +731,27 @@ std::vector<BodyDescription> read_bodies(const Reader& r, const Value& v, const 
   std::vector<BodyDescription> bodies;
   std::map<std::string, int> first_line;  // body name -> line of its definition
   for (std::size_t i = 0; i < items.size(); ++i) {
-    BodyDescription body = read_body(r, items[i], i, scene);
-    if (const auto it = first_line.find(body.name); it != first_line.end()) {
-      const auto name = r.map(items[i]).find("name");
-      r.fail(name ? *name : items[i],
-             fmt::format("duplicate body name '{}' (first used at line {})", body.name, it->second));
+    std::vector<double> labels;
+    const BodyDescription read = read_body(r, items[i], i, scene, labels);
+    std::vector<BodyDescription> expanded{read};
+    if (!labels.empty()) {  // an image with `labels:`: one body per label, named <name>_<label>
+      expanded.clear();
+      for (const double label : labels) {
+        BodyDescription body = read;
+        body.name = fmt::format("{}_{}", read.name, label);
+        body.shape.label = label;
+        expanded.push_back(std::move(body));
+      }
     }
-    first_line[body.name] = body.where.line;
-    bodies.push_back(std::move(body));
+    for (auto& body : expanded) {
+      if (const auto it = first_line.find(body.name); it != first_line.end()) {
+        const auto name = r.map(items[i]).find("name");
+        r.fail(name ? *name : items[i],
+               fmt::format("duplicate body name '{}' (first used at line {})", body.name, it->second));
+      }
+      first_line[body.name] = body.where.line;
+      bodies.push_back(std::move(body));
+    }
   }
   return bodies;
 }

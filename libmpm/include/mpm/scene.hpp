@@ -50,14 +50,32 @@ struct MaterialDescription {
   SourceLocation where;
 };
 
-/// Primitive shapes a body can be filled from.
+/// The shape a body is filled from (docs/scene-reference.md, bodies[].shape): a primitive, a polygon, a CAD
+/// mesh, an image, or the union / intersection / difference of shapes (filled by geometry/).
 struct ShapeDescription {
-  std::string type;                                  ///< "box", "disk" (2D), "sphere" (3D), "cylinder" (3D)
+  /// "box", "disk" (2D), "sphere" (3D), "cylinder" (3D), "polygon" (2D), "mesh", "image", "union",
+  /// "intersection", "difference"
+  std::string type;
   std::array<double, 3> min{0, 0, 0}, max{0, 0, 0};  ///< box corners, m
   std::array<double, 3> center{0, 0, 0};             ///< disk/sphere centre, cylinder base centre, m
   double radius = 0;                                 ///< m
-  int axis = 2;                                      ///< cylinder axis (0 = x, 1 = y, 2 = z)
+  int axis = 2;                                      ///< cylinder axis (0 = x, 1 = y, 2 = z; -1 = oblique)
   double length = 0;                                 ///< cylinder length along its axis, m
+  std::array<double, 3> direction{0, 0, 1};          ///< cylinder axis as a unit vector (any direction)
+  std::vector<std::array<double, 2>> vertices;       ///< polygon corners, m (either orientation)
+  std::vector<ShapeDescription> parts;  ///< union/intersection/difference operands (difference: first minus the rest)
+  // CAD meshes and images
+  std::string file;                            ///< mesh or image file (made relative to the working directory)
+  double scale = 1;                            ///< mesh: factor on the file's coordinates (1e-3 for mm), applied first
+  std::array<double, 3> rotation{0, 0, 0};     ///< mesh: rotation angles about x, then y, then z, degrees
+  std::array<double, 3> translation{0, 0, 0};  ///< mesh: added last, m
+  std::optional<double> section;               ///< 2D scene: the mesh is cut by the plane z = section, m
+  std::array<double, 3> pixel_size{0, 0, 0};   ///< image: pixel/voxel size per axis, m (0: the .vti's spacing)
+  std::optional<std::array<double, 3>> image_origin;  ///< image: lower corner of the image, m
+  std::optional<double> threshold;                    ///< image: pixels with value >= threshold form the body
+  std::optional<double> label;                        ///< image: pixels with exactly this value form the body
+  bool pixel_particles = false;  ///< image: one particle per selected pixel instead of the grid lattice
+  SourceLocation where;          ///< of the shape, for errors found while filling it
 };
 
 /// A body: a set of particles with one material.
@@ -68,6 +86,9 @@ struct BodyDescription {
   std::array<int, 3> particles_per_cell{2, 2, 2};  ///< per axis
   /// Initial velocity per component: muparser expressions of x, y, z (constants are expressions too).
   std::array<std::string, 3> velocity{"0", "0", "0"};
+  /// CPDI particle elements: "lattice" (every particle sub-cell split into elements) or "conforming" (a CGAL
+  /// triangle or tetrahedron mesh of the shape, cpdi_t3 / cpdi_tet4 only).
+  std::string domains = "lattice";
   SourceLocation where;
 };
 
