@@ -97,6 +97,14 @@ std::string csv_field(const std::string& s) {
   return q + '"';
 }
 
+/// The 1-minute load average (/proc/loadavg): other processes slow the runs down; the report says how much.
+double load_average() {
+  std::ifstream in("/proc/loadavg");
+  double load = -1;
+  in >> load;
+  return load;
+}
+
 bool selected(const Options& o, const std::string& name) {
   if (o.only.empty()) return true;
   for (const auto& s : o.only)
@@ -212,12 +220,14 @@ int main(int argc, char** argv) {
     fs::create_directories(o.out);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.threads));
     const auto t0 = Clock::now();
+    const double load_start = load_average();
     if (o.cases) run_cases(o);
     if (o.cfl) run_cfl(o);
     if (o.stability) run_stability(o);
     const double total = std::chrono::duration<double>(Clock::now() - t0).count();
-    std::ofstream(o.out / "meta.csv") << "quick,threads,total_wall_seconds\n"
-                                      << (o.quick ? 1 : 0) << ',' << o.threads << ',' << total << '\n';
+    std::ofstream(o.out / "meta.csv") << "quick,threads,total_wall_seconds,load_average_start,load_average_end\n"
+                                      << (o.quick ? 1 : 0) << ',' << o.threads << ',' << total << ',' << load_start
+                                      << ',' << load_average() << '\n';
     fmt::print(std::cerr, "verification_report: done in {:.1f} s; CSV in {}\n", total, o.out.string());
   } catch (const std::exception& e) {
     std::cerr << "verification_report: " << e.what() << '\n';
