@@ -1,11 +1,15 @@
-// Conforming CPDI-Tet4 domains: CGAL Mesh_3 of the closed surface, with its sharp edges (dihedral
-// angle further than `feature_angle` from flat) protected so that creases and flat faces are kept.
+// Conforming CPDI-Tet4 domains: CGAL Mesh_3 of the closed surface (a polyhedral domain with features),
+// every crease of the input protected so that the tetrahedra fill exactly the polyhedron.
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/make_mesh_3.h>
 #include <fmt/format.h>
+
+#include <cmath>
+#include <numeric>
 
 #include "mpm/geometry/conforming_domains.hpp"
 #include "surface_mesh_io.hpp"
@@ -19,26 +23,9 @@ using Domain = CGAL::Polyhedral_mesh_domain_with_features_3<Kernel, SurfaceMesh>
 using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
 using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index>;
 using Criteria = CGAL::Mesh_criteria_3<Tr>;
-}  // namespace
 
-CpdiParticles<3> conforming_tetrahedra(const ShapeDescription& shape, Real spacing,
-                                       std::vector<std::string>* warnings) {
-  SurfaceMesh surface;
-  if (shape.type == "mesh")
-    surface = detail::load_surface_mesh(shape, warnings);
-  else if (shape.type == "box")
-    surface = detail::box_mesh(shape.min, shape.max);
-  else
-    throw GeometryError(shape.file, fmt::format("conforming CPDI domains in 3D need a closed surface (a mesh or a "
-                                                "box), not a {}",
-                                                shape.type));
-  Domain domain(surface);
-  domain.detect_features(30);  // creases sharper than 30 degrees are protected
-  namespace p = CGAL::parameters;
-  const Criteria criteria(p::edge_size = spacing, p::facet_angle = 25, p::facet_size = spacing,
-                          p::facet_distance = spacing / 10, p::cell_radius_edge_ratio = 3, p::cell_size = spacing);
-  const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, p::no_perturb(), p::no_exude());
-
+/// One particle per tetrahedron of the complex: centroid, volume, right-handed corners as offsets.
+CpdiParticles<3> elements(const C3t3& c3t3) {
   CpdiParticles<3> out;
   const auto& tr = c3t3.triangulation();
   const auto point = tr.geom_traits().construct_point_3_object();
@@ -59,6 +46,49 @@ CpdiParticles<3> conforming_tetrahedra(const ShapeDescription& shape, Real spaci
     out.offsets.push_back(corners);
   }
   return out;
+}
+
+}  // namespace
+
+CpdiParticles<3> conforming_tetrahedra(const ShapeDescription& shape, Real spacing,
+                                       std::vector<std::string>* warnings) {
+  SurfaceMesh surface;
+  if (shape.type == "mesh")
+    surface = detail::load_surface_mesh(shape, warnings);
+  else if (shape.type == "box")
+    surface = detail::box_mesh(shape.min, shape.max);
+  else
+    throw GeometryError(shape.file, fmt::format("conforming CPDI domains in 3D need a closed surface (a mesh or a "
+                                                "box), not a {}",
+                                                shape.type));
+  // Every crease whose faces' normals differ by more than 1 degree is a protected feature, so that the
+  // tetrahedra's boundary facets lie on the input facets and the volumes sum to the mesh volume. Mesh_3 can
+  // fail on some inputs (curves meeting at small angles); other protection sizes are tried, and at last
+  // only the creases sharper than 30 degrees (the volume is then approximate, with a warning).
+  const double mesh_volume = CGAL::Polygon_mesh_processing::volume(surface);
+  namespace p = CGAL::parameters;
+  const struct { double feature_angle, edge_size; } attempts[] = {{1, 0.5}, {1, 1.0}, {1, 0.3}, {1, 0.75}, {30, 1.0}};
+  std::string failure;
+  for (const auto& attempt : attempts) {
+    try {
+      Domain domain(surface);
+      domain.detect_features(attempt.feature_angle);
+      const Criteria criteria(p::edge_size = attempt.edge_size * spacing, p::facet_angle = 25, p::facet_size = spacing,
+                              p::facet_distance = spacing / 10, p::cell_radius_edge_ratio = 3, p::cell_size = spacing);
+      const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, p::no_perturb(), p::no_exude());
+      CpdiParticles<3> out = elements(c3t3);
+      const double sum = std::accumulate(out.volumes.begin(), out.volumes.end(), 0.0);
+      if (std::abs(sum / mesh_volume - 1) > 1e-10 && warnings)
+        warnings->push_back(
+            fmt::format("{}: the conforming tetrahedra approximate the surface: their volumes sum to "
+                        "{:.6g} m^3, the mesh encloses {:.6g} m^3 ({:+.3g}%)",
+                        shape.file.empty() ? "box" : shape.file, sum, mesh_volume, 100 * (sum / mesh_volume - 1)));
+      return out;
+    } catch (const CGAL::Failure_exception& e) {
+      failure = e.message();
+    }
+  }
+  throw GeometryError(shape.file, "CGAL Mesh_3 could not mesh the surface into tetrahedra: " + failure);
 }
 
 }  // namespace mpm::geometry

@@ -19,8 +19,13 @@ namespace mpm::geometry {
 /// polygonal (a disk, an image, a union, ...).
 CpdiParticles<2> conforming_triangles(const ShapeDescription& shape, Real spacing, std::vector<std::string>* warnings);
 
-/// Tetrahedra of edge length about `spacing` (CGAL Mesh_3 with the sharp edges of the surface protected),
-/// right-handed corners. Throws GeometryError for a shape that is neither a mesh nor a box.
+/// Tetrahedra of edge length about `spacing` (cells and surface facets; protected creases get edges of
+/// about spacing / 2), right-handed corners. Every edge of the input surface whose faces' normals differ
+/// by more than 1 degree is protected as a feature, so the boundary facets lie on the input facets and the
+/// volumes sum to the mesh volume (1e-10 relative; a fan of many thin triangles makes more elements). When
+/// Mesh_3 fails with that protection it retries with other sizes, then with only the creases sharper than
+/// 30 degrees, and a warning gives the volume difference. Throws GeometryError for a shape that is neither
+/// a mesh nor a box, or when Mesh_3 fails.
 CpdiParticles<3> conforming_tetrahedra(const ShapeDescription& shape, Real spacing, std::vector<std::string>* warnings);
 
 /// The elements of the dimension: conforming_triangles (2D) or conforming_tetrahedra (3D).
