@@ -11,10 +11,10 @@
 namespace mpm {
 
 std::vector<std::string> output_field_names() {
-  return {"velocity",         "displacement", "stress",  "deformation_gradient", "mass",
-          "volume",           "density",      "body",    "velocity_gradient",    "pressure",
-          "von_mises_stress", "domain_size",  "domains", "plastic_strain",       "plastic_strain_rate",
-          "damage",           "temperature"};
+  return {"velocity",         "displacement", "stress",         "deformation_gradient", "mass",
+          "volume",           "density",      "body",           "velocity_gradient",    "pressure",
+          "von_mises_stress", "domain_size",  "domains",        "plastic_strain",       "plastic_strain_rate",
+          "damage",           "temperature",  "internal_energy"};
 }
 
 namespace {
@@ -81,9 +81,15 @@ void append_field(const std::string& name, const Body<Dim>& b, std::vector<doubl
     // a field of the body's material model (plasticity: plastic_strain, plastic_strain_rate, damage)
   } else if (name == "plastic_strain" || name == "plastic_strain_rate" || name == "damage") {
     each([&](Index) { out.push_back(0.0); });  // a body without plasticity: no plastic flow, no damage
+  } else if (name == "internal_energy") {
+    each([&](Index) { out.push_back(0.0); });  // J/kg; only gas bodies (ideal_gas) carry one
   } else if (name == "temperature") {
-    const auto& T = p.template field<Real>("temperature");  // K; the builder checked that every body has it
-    each([&](Index i) { out.push_back(T[i]); });
+    if (p.has_field("temperature")) {
+      const auto& T = p.template field<Real>("temperature");  // K
+      each([&](Index i) { out.push_back(T[i]); });
+    } else {
+      each([&](Index) { out.push_back(0.0); });  // a body that does not track temperature (documented: 0)
+    }
   } else if (name == "id") {
     each([&](Index i) { out.push_back(p.id[i]); });
   } else {

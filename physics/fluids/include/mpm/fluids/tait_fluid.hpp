@@ -1,0 +1,45 @@
+#pragma once
+/// \file tait_fluid.hpp
+/// Weakly compressible Newtonian fluid (review §5.4, eqs 5.29-5.31):
+///   sigma = 2 mu dev(D) + zeta tr(D) I - p I,   p = kappa [(rho/rho0)^gamma - 1] = kappa (J^-gamma - 1),
+/// with D = sym(L), the shear viscosity mu, the bulk viscosity zeta = lambda_N + 2 mu/3 (0 by default: the
+/// Stokes condition lambda_N = -2 mu/3, digest erratum to eq. 5.30), and the density rho = rho0/J from
+/// det F (eq. 2.55c). Stateless: F carries the whole history, so the law batches like the elastic ones.
+
+#include <cmath>
+
+#include "mpm/material.hpp"
+
+namespace mpm::fluids {
+
+struct TaitFluid {
+  static constexpr const char* key = "newtonian_fluid";
+  struct Params {
+    Real density;         ///< rho0, kg/m^3
+    Real bulk_modulus;    ///< kappa, Pa (may be reduced below the physical value: weak compressibility)
+    Real gamma;           ///< Tait exponent (7 water, 1.4 air)
+    Real viscosity;       ///< mu, Pa s
+    Real bulk_viscosity;  ///< zeta, Pa s
+  };
+
+  static inline Real pressure(const Params& c, Real J) { return c.bulk_modulus * (std::pow(J, -c.gamma) - 1); }
+
+  static inline Mat3 update_point(const Params& c, const PointKinematics& k, const Mat3&) {
+    const Mat3 D = 0.5 * (k.L + k.L.transpose());
+    const Real trD = D.trace();
+    const Mat3 dev = D - trD / 3 * Mat3::Identity();
+    return 2 * c.viscosity * dev + (c.bulk_viscosity * trD - pressure(c, k.J)) * Mat3::Identity();
+  }
+  /// Sound speed c^2 = dp/drho = gamma kappa / rho0 J^(1 - gamma).
+  static inline Real wave_speed(const Params& c, Real J) {
+    return std::sqrt(c.gamma * c.bulk_modulus * std::pow(J, 1 - c.gamma) / c.density);
+  }
+  /// Stored energy per reference volume, W(J) = -int_1^J p dJ = kappa [(J^(1-gamma) - 1)/(gamma - 1) + J - 1]
+  /// (dW/dJ = -p; viscous stresses store nothing).
+  static inline Real energy_density(const Params& c, const Mat3& F, const Mat3&) {
+    const Real J = F.determinant();
+    return c.bulk_modulus * ((std::pow(J, 1 - c.gamma) - 1) / (c.gamma - 1) + J - 1);
+  }
+};
+
+}  // namespace mpm::fluids
