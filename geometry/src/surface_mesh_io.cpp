@@ -55,9 +55,11 @@ SurfaceMesh load_surface_mesh(const ShapeDescription& shape, std::vector<std::st
 
   std::vector<Point3> points;
   std::vector<std::vector<std::size_t>> polygons;
-  if (!CGAL::IO::read_polygon_soup(file, points, polygons))
-    throw GeometryError(file, fmt::format("cannot read the file as a {} mesh (corrupt or not a {} file)", ext.substr(1),
-                                          ext.substr(1)));
+  if (!CGAL::IO::read_polygon_soup(file, points, polygons)) {
+    std::string format = ext.substr(1);
+    std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return std::toupper(c); });
+    throw GeometryError(file, fmt::format("cannot read the {} file (corrupt, truncated or not {})", format, format));
+  }
   if (polygons.empty()) throw GeometryError(file, "the mesh has no face");
   for (const auto& polygon : polygons)
     for (const std::size_t v : polygon)

@@ -469,9 +469,6 @@ void read_polygon(const Reader& r, const MapReader& m, ShapeDescription& shape) 
   auto& p = shape.vertices;
   if (p.size() > 3 && p.front() == p.back()) p.pop_back();  // a closing corner repeated
   if (p.size() < 3) r.fail(list, fmt::format("a polygon needs at least 3 corners, got {}", p.size()));
-  double area = 0;
-  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) area += p[j][0] * p[i][1] - p[i][0] * p[j][1];
-  if (area == 0) r.fail(list, "the polygon has zero area");
   const std::size_t n = p.size();
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
@@ -482,6 +479,13 @@ void read_polygon(const Reader& r, const MapReader& m, ShapeDescription& shape) 
                                  "and {})",
                                  i, i, (i + 1) % n, j, j, (j + 1) % n));
     }
+  double area = 0, lo[2] = {p[0][0], p[0][1]}, hi[2] = {p[0][0], p[0][1]};
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    area += p[j][0] * p[i][1] - p[i][0] * p[j][1];
+    for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], p[i][d]), hi[d] = std::max(hi[d], p[i][d]);
+  }
+  if (std::abs(area) <= 1e-12 * (hi[0] - lo[0]) * (hi[1] - lo[1]) || hi[0] == lo[0] || hi[1] == lo[1])
+    r.fail(list, "the polygon has zero area");
 }
 
 void read_mesh(const Reader& r, const MapReader& m, int dimension, const std::string& scene_file,

@@ -195,7 +195,7 @@ TEST(MeshFill, BadMeshesAreRefusedWithTheFileAndTheProblem) {
   std::ofstream(dir / "empty.off");
   expect_error(dir / "empty.off", "the mesh file is empty");
   std::ofstream(dir / "garbage.off") << "OFF\n3 1 0\n0 0 zero\n";
-  expect_error(dir / "garbage.off", "cannot read the file as a off mesh");
+  expect_error(dir / "garbage.off", "cannot read the OFF file (corrupt, truncated or not OFF)");
 
   TriMesh open = mpm::test::cube_mesh();
   open.triangles.pop_back();
