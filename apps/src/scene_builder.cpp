@@ -127,15 +127,15 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       p.template add_field<MatU<Dim>>("affine_velocity", MatU<Dim>::Zero());  // C_p = 0 at the start
     if (wants("velocity_gradient")) p.template add_field<MatU<Dim>>("velocity_gradient", MatU<Dim>::Zero());
     body.material->prepare_particles(p);  // the model's history fields (plasticity), if it has any
-    if (wants("temperature") && !p.has_field("temperature"))
-      throw SceneError(scene.output.where, "output.fields",
-                       "temperature: body '" + bd.name + "' (material '" + bd.material + "', model " + md.model +
-                           ") does not track temperature; give its material specific_heat (johnson_cook, "
-                           "j2_plasticity) or remove temperature from the fields");
     for (const Real v : elements.volumes) max_particle_mass = std::max(max_particle_mass, rho * v);
     for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
     bodies.push_back(std::move(body));
   }
+  if (wants("temperature") && std::none_of(bodies.begin(), bodies.end(),
+                                           [](const Body<Dim>& b) { return b.particles.has_field("temperature"); }))
+    throw SceneError(scene.output.where, "output.fields",
+                     "temperature: no body tracks temperature; give a material specific_heat (johnson_cook, "
+                     "j2_plasticity) or remove temperature from the fields");
 
   SimulationSettings<Dim> settings;
   settings.transfer.flip_fraction = scene.solver.flip_fraction;

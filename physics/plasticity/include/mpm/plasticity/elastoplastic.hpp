@@ -3,7 +3,7 @@
 /// Hypoelastic-plastic-damage law with an equation of state (review App. B.3, Algs 11-13 with the digest's
 /// errata 25-28), for one material point. Per step, with F and L at t + dt:
 ///   1. R from F = R U (polar_decomposition.hpp; in 3D warm-started from the last step's rotation);
-///      un-rotated rate d = R^T sym(L) R, deviator d'.
+///      un-rotated rate d = R^T sym(L) R, deviator d'. (Implemented in the current frame, see below.)
 ///   2. Radial return (Alg. 12, Leroch et al. 2016), flow stress held at eps_p^t:
 ///        G' = (1 - D) G,  s_trial = s' + 2 G' dt d',  sigma_eq = sqrt(3/2 s_trial : s_trial),
 ///        sigma_f = flow(eps_p, rate*, T*) (1 - D);  if sigma_eq > sigma_f:
@@ -27,20 +27,24 @@
 
 namespace mpm::plasticity {
 
-/// The rotation of the last polar decomposition, the starting point of the next one (3D only: in 1D and 2D
-/// the rotation has a closed form and nothing is stored).
+/// The rotation R_t of the last polar decomposition: the start of the next one in 3D, and the way to turn
+/// the stored Cauchy deviator into the next step's frame (Delta R = R_{t+dt} R_t^T). 1D: R = 1.
 template <int Dim>
 struct RotationMemory {};
+template <>
+struct RotationMemory<2> {
+  Real c = 1, s = 0;  ///< cos and sin of the rotation about z
+};
 template <>
 struct RotationMemory<3> {
   Real q[4] = {1, 0, 0, 0};  ///< unit quaternion (w, x, y, z)
 };
 
 /// History of one material point (one on-demand particle field "plasticity", read and written together).
+/// The deviatoric stress is not stored: s' = R^T dev(sigma) R, so the Cauchy stress and R_t carry it.
 template <int Dim>
 struct PlasticState {
-  [[no_unique_address]] RotationMemory<Dim> rotation;  ///< R of F = R U at the last step (3D)
-  SymTensor<Dim> deviator;                             ///< un-rotated deviatoric stress s' = R^T dev(sigma) R, Pa
+  [[no_unique_address]] RotationMemory<Dim> rotation;  ///< R of F = R U at the last step
   Real plastic_strain = 0;                             ///< equivalent plastic strain eps_p, -
   Real plastic_strain_rate = 0;                        ///< d eps_p / dt over the last step, 1/s
   Real damage = 0;                                     ///< D in [0, 1]
@@ -82,18 +86,42 @@ struct Elastoplastic {
   template <int Dim>
   static inline void update_point(const Params& c, const Mat<Dim>& F, const Mat<Dim>& L, Real J, Real dt, Real volume,
                                   PlasticState<Dim>& state, Real* temperature, SymTensor<Dim>& stress) {
-    Mat3 R;
-    if constexpr (Dim == 3)
-      R = polar_rotation_warm(F, state.rotation.q);
-    else
-      R = polar_rotation_of<Dim>(F);
-    const Mat3 L3 = embed<Dim>(L, 0);
-    const Mat3 Dr = 0.5 * (L3 + L3.transpose());
-    Mat3 d;
-    if constexpr (Dim == 1)
-      d = Dr;
-    else
-      d = rotate_symmetric(R.transpose(), Dr);
+    // Alg. 11 in the current frame: with s' = R_t^T dev(sigma_t) R_t and d' = R^T dev(D) R (R = R_{t+dt}),
+    // R (s' + 2 G dt d') R^T = Delta R dev(sigma_t) Delta R^T + 2 G dt dev(D), Delta R = R R_t^T; the radial
+    // return only scales, so it commutes with the rotation. One rotation per step instead of three.
+    Mat3 s = stress.full();
+    const Real tr_s = s.trace();
+    s.diagonal().array() -= tr_s / 3;
+    if constexpr (Dim == 3) {
+      const Real* q = state.rotation.q;
+      const Real q0[4] = {q[0], -q[1], -q[2], -q[3]};  // R_t^T
+      polar_rotation_warm(F, state.rotation.q);
+      Real dq[4];  // q_{t+dt} (x) conj(q_t)
+      dq[0] = q[0] * q0[0] - q[1] * q0[1] - q[2] * q0[2] - q[3] * q0[3];
+      dq[1] = q[0] * q0[1] + q[1] * q0[0] + q[2] * q0[3] - q[3] * q0[2];
+      dq[2] = q[0] * q0[2] - q[1] * q0[3] + q[2] * q0[0] + q[3] * q0[1];
+      dq[3] = q[0] * q0[3] + q[1] * q0[2] - q[2] * q0[1] + q[3] * q0[0];
+      s = rotate_symmetric(rotation_of(dq), s);
+    } else if constexpr (Dim == 2) {
+      const Real a = F(0, 0) + F(1, 1), b = F(1, 0) - F(0, 1), n = 1 / std::hypot(a, b);
+      const Real c1 = a * n, s1 = b * n;
+      const Real dc = c1 * state.rotation.c + s1 * state.rotation.s, ds = s1 * state.rotation.c - c1 * state.rotation.s;
+      state.rotation.c = c1;
+      state.rotation.s = s1;
+      // rotate the in-plane block by [[dc, -ds], [ds, dc]]; zz is unchanged
+      const Real xx = s(0, 0), yy = s(1, 1), xy = s(0, 1);
+      s(0, 0) = dc * dc * xx - 2 * dc * ds * xy + ds * ds * yy;
+      s(1, 1) = ds * ds * xx + 2 * dc * ds * xy + dc * dc * yy;
+      s(0, 1) = s(1, 0) = dc * ds * (xx - yy) + (dc * dc - ds * ds) * xy;
+    }
+    Mat3 d;  // dev(D) in the current frame
+    if constexpr (Dim == 1) {
+      d = Mat3::Zero();
+      d(0, 0) = L(0, 0);
+    } else {
+      const Mat3 L3 = embed<Dim>(L, 0);
+      d = 0.5 * (L3 + L3.transpose());
+    }
     const Real tr_d = d.trace();
     d.diagonal().array() -= tr_d / 3;
 
@@ -103,11 +131,12 @@ struct Elastoplastic {
             ? std::clamp((T - c.room_temperature) / (c.melting_temperature - c.room_temperature), Real(0), Real(1))
             : Real(0);
     const Real D = state.damage;
-    Mat3 s = Mat3::Zero();
     Real d_eps = 0, sigma_f = 0;
-    if (D < 1) {
+    if (D >= 1) {
+      s.setZero();
+    } else {
       const Real G = (1 - D) * c.shear_modulus;
-      s = state.deviator.full() + (2 * G * dt) * d;
+      s += (2 * G * dt) * d;
       const Real eq = std::sqrt(1.5 * s.squaredNorm());
       const Real rate_star = std::max(state.plastic_strain_rate / c.reference_strain_rate, Real(1));
       sigma_f = c.flow.stress(state.plastic_strain, rate_star, T_star) * (1 - D);
@@ -128,7 +157,6 @@ struct Elastoplastic {
     }
     Mat3 sigma = s;
     sigma.diagonal().array() -= p + q;
-    if constexpr (Dim > 1) sigma = rotate_symmetric(R, sigma);
     stress = SymTensor<Dim>::from(sigma);
 
     if (d_eps > 0) {
@@ -144,7 +172,6 @@ struct Elastoplastic {
     }
     state.plastic_strain += d_eps;
     state.plastic_strain_rate = d_eps / dt;
-    state.deviator = SymTensor<Dim>::from(s);
   }
 
   /// Dilatational wave speed sqrt((K_t + 4 G / 3) / rho), rho = rho0 / J, K_t the larger of K and the
@@ -154,10 +181,10 @@ struct Elastoplastic {
     return std::sqrt((K + 4 * c.shear_modulus / 3) * std::max(J, Real(0)) / c.density);
   }
 
-  /// Stored elastic energy per reference volume: J s':s' / (4 G) + W_eos(J).
-  template <int Dim>
-  static inline Real energy_density(const Params& c, Real J, const PlasticState<Dim>& state) {
-    return J * state.deviator.full().squaredNorm() / (4 * c.shear_modulus) + c.eos.energy(J);
+  /// Stored elastic energy per reference volume: J dev(sigma):dev(sigma) / (4 G) + W_eos(J).
+  static inline Real energy_density(const Params& c, Real J, const Mat3& stress) {
+    const Mat3 dev = stress - stress.trace() / 3 * Mat3::Identity();
+    return J * dev.squaredNorm() / (4 * c.shear_modulus) + c.eos.energy(J);
   }
 };
 

@@ -64,10 +64,9 @@ class PlasticBatch final : public Material<Dim> {
   }
 
   Real strain_energy(const ParticleSet<Dim>& p) const override {
-    const auto& state = p.template field<State>(state_field);
     Real e = 0;  // serial: fixed summation order
     for (Index i = 0; i < p.size(); ++i)
-      e += p.volume0[i] * Model::template energy_density<Dim>(params_, p.F[i].determinant(), state[i]);
+      e += p.volume0[i] * Model::energy_density(params_, p.F[i].determinant(), p.stress[i].full());
     return e;
   }
 
