@@ -1,4 +1,5 @@
-// The `mpm` command line program: `mpm run SCENE`, `mpm check SCENE`. Exit statuses in run_scene.hpp.
+// The `mpm` command line program: `mpm run SCENE`, `mpm check SCENE`, `mpm particles INPUT`. Exit statuses in
+// run_scene.hpp.
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -7,6 +8,7 @@
 #include <memory>
 
 #include "mpm/app/modules.hpp"
+#include "mpm/app/particles_command.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_loader.hpp"
@@ -30,6 +32,22 @@ int main(int argc, char** argv) {
                     "the breakdown at the end");
   auto* check_cmd = cli.add_subcommand("check", "validate a scene without running it");
   check_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
+  ParticlesOptions particles;  // `mpm particles`: particle sets of meshes, images and scenes for ParaView
+  auto* particles_cmd = cli.add_subcommand("particles", "write the particles of a mesh, an image or a scene (.vtu)");
+  particles_cmd->add_option("input", particles.input, "mesh (.stl .obj .off .ply) or image (.png .pgm .vti)");
+  particles_cmd->add_option("--scene", particles.scene, "scene: its grid for INPUT, or all its bodies without INPUT");
+  particles_cmd->add_option("--spacing", particles.spacing, "grid cell size around INPUT, m")
+      ->check(CLI::PositiveNumber);
+  particles_cmd->add_option("--ppc", particles.particles_per_cell, "particles per cell per axis (default 2)");
+  particles_cmd->add_option("--pixel-size", particles.pixel_size, "image pixel size, m")->check(CLI::PositiveNumber);
+  particles_cmd->add_option("--threshold", particles.threshold, "image: pixels with a value >= threshold");
+  particles_cmd->add_option("--label", particles.label, "image: pixels with this value");
+  particles_cmd->add_option("--section", particles.section, "mesh: 2D particles of the plane z = section, m");
+  particles_cmd->add_option("--scale", particles.scale, "mesh: factor on the coordinates")->check(CLI::PositiveNumber);
+  particles_cmd->add_option("--domains", particles.domains,
+                            "also write CPDI domains to NAME_domains.vtu: lattice or conforming (INPUT), scene "
+                            "(the scene's shape function)");
+  particles_cmd->add_option("-o,--output", particles.output, "output .vtu file")->required();
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -40,6 +58,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<tbb::global_control> thread_limit;
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  if (particles_cmd->parsed()) return particles_command(particles, std::cout, std::cerr);
   try {
     register_modules();  // the optional modules' material models, before the scene is read
     const mpm::SceneDescription scene = mpm::load_scene(scene_file);

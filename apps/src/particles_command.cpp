@@ -1,0 +1,225 @@
+#include "mpm/app/particles_command.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numeric>
+#include <ostream>
+#include <stdexcept>
+
+#include "mpm/app/modules.hpp"
+#include "mpm/app/run_scene.hpp"
+#include "mpm/app/scene_builder.hpp"
+#include "mpm/geometry/conforming_domains.hpp"
+#include "mpm/geometry/cpdi_domains.hpp"
+#include "mpm/geometry/geometry_error.hpp"
+#include "mpm/geometry/shape_filler.hpp"
+#include "mpm/io/vtk_writer.hpp"
+#include "mpm/particle_domain_mesh.hpp"
+#include "mpm/scene_error.hpp"
+#include "mpm/scene_loader.hpp"
+
+namespace mpm::app {
+namespace {
+
+/// A bad command line: exit status 2 with the message.
+struct UsageError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+std::string lower_extension(const std::string& file) {
+  std::string ext = std::filesystem::path(file).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+std::filesystem::path domains_path(const std::filesystem::path& output) {
+  return output.parent_path() / (output.stem().string() + "_domains.vtu");
+}
+
+template <int Dim>
+void push_point(std::vector<double>& out, const Vec<Dim>& x) {
+  for (int d = 0; d < 3; ++d) out.push_back(d < Dim ? x[d] : 0.0);
+}
+
+/// Particles of an input file on a grid: the scene's or one of `spacing` around the input.
+template <int Dim>
+std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape,
+                        const std::optional<SceneDescription>& scene, std::ostream& err) {
+  std::vector<std::string> warnings;
+  const auto region = geometry::make_region<Dim>(shape, &warnings);
+  Vec<Dim> origin, h;
+  std::array<int, Dim> cells{};
+  if (scene) {
+    if (scene->dimension != Dim)
+      throw UsageError(
+          fmt::format("{} makes a {}D body; the scene {} is {}D", o.input, Dim, o.scene, scene->dimension));
+    for (int d = 0; d < Dim; ++d) {
+      origin[d] = scene->grid.origin[d];
+      h[d] = scene->grid.cell_size[d];
+      cells[d] = scene->grid.cells[d];
+    }
+  } else {  // cells of `spacing` aligned with 0, one empty cell around the input
+    const geometry::Box<Dim> box = region->bounds();
+    for (int d = 0; d < Dim; ++d) {
+      h[d] = *o.spacing;
+      origin[d] = (std::floor(box.lo[d] / h[d]) - 1) * h[d];
+      cells[d] = static_cast<int>(std::ceil(box.hi[d] / h[d]) + 1 - std::floor(box.lo[d] / h[d]) + 1);
+    }
+  }
+  const GridGeometry<Dim> grid(origin, h, cells);
+  const std::array<int, 3> ppc{o.particles_per_cell, o.particles_per_cell, o.particles_per_cell};
+  const auto seeds = geometry::fill_shape<Dim>(shape, grid, ppc, &warnings);
+  if (seeds.positions.empty())
+    throw geometry::GeometryError(o.input, "no particle: the body is smaller than a particle spacing");
+
+  geometry::CpdiParticles<Dim> elements;
+  Vec<Dim> spacing = h / o.particles_per_cell;
+  if (o.domains == "conforming") {
+    elements = geometry::conforming_cpdi_particles<Dim>(shape, spacing.minCoeff(), &warnings);
+  } else if (o.domains == "lattice") {
+    elements = geometry::cpdi_particles<Dim>(seeds, spacing, Dim == 2 ? 3 : 4);
+  } else {
+    elements.positions = seeds.positions;
+    elements.volumes.assign(seeds.positions.size(), seeds.volume);
+  }
+  for (const auto& w : warnings) err << "warning: " << w << '\n';
+
+  io::PointCloud cloud;
+  io::FieldArray volume{"volume", 1, elements.volumes}, body{"body", 1, {}}, id{"id", 1, {}};
+  for (std::size_t k = 0; k < elements.positions.size(); ++k) {
+    push_point<Dim>(cloud.points, elements.positions[k]);
+    body.values.push_back(0);
+    id.values.push_back(static_cast<double>(k));
+  }
+  cloud.fields = {volume, body, id};
+  io::write_vtu(o.output, cloud);
+  if (!o.domains.empty()) {
+    io::CellMesh cells_mesh;
+    cells_mesh.corners = Dim == 2 ? 3 : 4;
+    cells_mesh.cell_type = Dim == 2 ? 5 : 10;  // VTK_TRIANGLE, VTK_TETRA
+    for (std::size_t k = 0; k < elements.positions.size(); ++k)
+      for (int c = 0; c < cells_mesh.corners; ++c)
+        push_point<Dim>(cells_mesh.points, Vec<Dim>(elements.positions[k] + Vec<Dim>(elements.offsets[k][c])));
+    cells_mesh.cell_fields = {volume, id};
+    io::write_cells_vtu(domains_path(o.output), cells_mesh);
+  }
+  const double total = std::accumulate(elements.volumes.begin(), elements.volumes.end(), 0.0);
+  std::string text =
+      fmt::format("{}: {} particles ({}D, cells of {:.6g} m, {} per cell per axis{}), volume {:.10g} m^{}",
+                  o.output.string(), elements.positions.size(), Dim, h[0], o.particles_per_cell,
+                  o.domains.empty() ? "" : ", " + o.domains + " CPDI domains", total, Dim);
+  if (const auto exact = region->exact_volume())
+    text += fmt::format(" (body: {:.10g} m^{}, relative difference {:.3g})", *exact, Dim, total / *exact - 1);
+  return text;
+}
+
+/// All bodies of a scene as the simulation builds them.
+template <int Dim>
+std::string write_scene(const ParticlesOptions& o, const SceneDescription& scene) {
+  const auto sim = build_simulation<Dim>(scene);
+  io::PointCloud cloud;
+  io::FieldArray volume{"volume", 1, {}}, body{"body", 1, {}}, id{"id", 1, {}};
+  double total = 0;
+  for (const auto& b : sim->bodies()) {
+    const auto& p = b.particles;
+    for (Index i = 0; i < p.size(); ++i) {
+      push_point<Dim>(cloud.points, Vec<Dim>(p.x[i]));
+      volume.values.push_back(p.volume0[i]);
+      body.values.push_back(b.index);
+      id.values.push_back(p.id[i]);
+      total += p.volume0[i];
+    }
+  }
+  cloud.fields = {volume, body, id};
+  if (!o.domains.empty())
+    for (const auto& b : sim->bodies())
+      if (!has_particle_domains(b))
+        throw UsageError(
+            fmt::format("--domains: the scene's shape function {} has no particle domains (use gimp, "
+                        "cpgimp or a cpdi_* function)",
+                        scene.solver.shape_function));
+  io::write_vtu(o.output, cloud);
+  if (!o.domains.empty()) io::write_cells_vtu(domains_path(o.output), particle_domain_mesh(sim->bodies()));
+  return fmt::format("{}: {} particles in {} bodies ({}D), volume {:.10g} m^{}", o.output.string(), cloud.size(),
+                     sim->bodies().size(), Dim, total, Dim);
+}
+
+std::string run(const ParticlesOptions& o, std::ostream& err) {
+  if (o.output.extension() != ".vtu") throw UsageError("-o: the output must be a .vtu file, got " + o.output.string());
+  if (o.input.empty() && o.scene.empty()) throw UsageError("give an input file (mesh or image) or --scene SCENE");
+  if (!o.input.empty() && o.scene.empty() && !o.spacing)
+    throw UsageError("give the grid: --spacing H (cell size, m) or --scene SCENE");
+  if (o.spacing && !o.scene.empty()) throw UsageError("give either --spacing or --scene, not both");
+  if (o.particles_per_cell < 1) throw UsageError("--ppc must be >= 1");
+  std::optional<SceneDescription> scene;
+  if (!o.scene.empty()) {
+    register_modules();
+    scene = load_scene(o.scene);
+  }
+  if (o.input.empty()) {
+    if (o.domains != "" && o.domains != "scene")
+      throw UsageError("--domains " + o.domains + " applies to an input file; with a scene alone use --domains scene");
+    switch (scene->dimension) {
+      case 1:
+        return write_scene<1>(o, *scene);
+      case 2:
+        return write_scene<2>(o, *scene);
+      default:
+        return write_scene<3>(o, *scene);
+    }
+  }
+  if (o.domains != "" && o.domains != "lattice" && o.domains != "conforming")
+    throw UsageError("--domains with an input file: lattice or conforming, got " + o.domains);
+
+  ShapeDescription shape;
+  shape.file = o.input;
+  const std::string ext = lower_extension(o.input);
+  int dimension = 3;
+  if (ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply") {
+    shape.type = "mesh";
+    shape.scale = o.scale;
+    shape.section = o.section;
+    dimension = o.section ? 2 : 3;
+  } else if (ext == ".png" || ext == ".pgm" || ext == ".vti") {
+    shape.type = "image";
+    dimension = ext == ".vti" ? 3 : 2;
+    if (o.pixel_size)
+      shape.pixel_size = {*o.pixel_size, *o.pixel_size, *o.pixel_size};
+    else if (dimension == 2)
+      throw UsageError("--pixel-size is required for a picture (the size of a pixel, m)");
+    if (!o.threshold && !o.label) throw UsageError("an image needs --threshold T or --label L");
+    shape.threshold = o.threshold;
+    shape.label = o.label;
+  } else {
+    throw geometry::GeometryError(o.input, fmt::format("unsupported input format '{}' (meshes: .stl, .obj, .off, "
+                                                       ".ply; images: .png, .pgm, .vti)",
+                                                       ext));
+  }
+  if (dimension == 2) return write_input<2>(o, shape, scene, err);
+  return write_input<3>(o, shape, scene, err);
+}
+
+}  // namespace
+
+int particles_command(const ParticlesOptions& options, std::ostream& out, std::ostream& err) {
+  try {
+    out << run(options, err) << '\n';
+    return exit_ok;
+  } catch (const UsageError& e) {
+    err << "error: mpm particles: " << e.what() << '\n';
+  } catch (const geometry::GeometryError& e) {
+    err << "error: " << e.what() << '\n';
+  } catch (const SceneError& e) {
+    err << "error: " << e.what() << '\n';
+  } catch (const std::exception& e) {
+    err << "error: " << e.what() << '\n';
+    return exit_runtime_error;
+  }
+  return exit_bad_input;
+}
+
+}  // namespace mpm::app

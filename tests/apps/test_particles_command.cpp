@@ -1,0 +1,152 @@
+// `mpm particles` (apps/src/particles_command.cpp): the .vtu it writes is read back with VTK and its
+// particle count, volumes and domains are checked against the exact body volume; bad input exits with 2
+// and writes nothing.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path data = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Result mpm(const std::string& args, const fs::path& dir) {
+  const std::string cmd = std::string(MPM_EXECUTABLE) + " " + args + " > " + (dir / "stdout").string() + " 2> " +
+                          (dir / "stderr").string() + " < /dev/null";
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "stdout"), slurp(dir / "stderr")};
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("mpm_particles_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct Read {
+  vtkIdType points = 0, cells = 0;
+  double volume_sum = 0;  ///< of the point (or, for domains, cell) field `volume`
+};
+
+Read read_vtu(const fs::path& file, bool cell_data) {
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  Read r;
+  r.points = grid->GetNumberOfPoints();
+  r.cells = grid->GetNumberOfCells();
+  vtkDataArray* volume = cell_data ? grid->GetCellData()->GetArray("volume") : grid->GetPointData()->GetArray("volume");
+  if (volume)
+    for (vtkIdType i = 0; i < volume->GetNumberOfTuples(); ++i) r.volume_sum += volume->GetComponent(i, 0);
+  return r;
+}
+
+}  // namespace
+
+// The unit cube mesh, cells of 0.1 m, 2 per axis: 8000 particles of total volume 1 m^3; conforming
+// tetrahedra (CPDI-Tet4 domains) also sum to 1 m^3 (1e-10).
+TEST(ParticlesCommand, MeshWithLatticeAndConformingDomains) {
+  const auto dir = scratch("mesh");
+  auto r = mpm(
+      "particles " + (data / "meshes" / "cube.off").string() + " --spacing 0.1 -o " + (dir / "cube.vtu").string(), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("8000 particles"), std::string::npos) << r.out;
+  Read cube = read_vtu(dir / "cube.vtu", false);
+  EXPECT_EQ(cube.points, 8000);
+  EXPECT_NEAR(cube.volume_sum, 1, 1e-12);
+
+  r = mpm("particles " + (data / "meshes" / "cube.off").string() + " --spacing 0.25 --domains conforming -o " +
+              (dir / "tets.vtu").string(),
+          dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Read points = read_vtu(dir / "tets.vtu", false);
+  const Read cells = read_vtu(dir / "tets_domains.vtu", true);
+  EXPECT_GT(points.points, 100);
+  EXPECT_EQ(cells.cells, points.points);
+  EXPECT_EQ(cells.points, 4 * cells.cells);  // each tetrahedron has its own four corners
+  EXPECT_NEAR(points.volume_sum, 1, 1e-10);
+  EXPECT_NEAR(cells.volume_sum, 1, 1e-10);
+  fs::remove_all(dir);
+}
+
+// The disk picture (radius 40 pixels of 1 cm): the particle volumes sum to the selected pixel area, which
+// is within 1% of pi 0.4^2 m^2; a 2D section of the cube mesh makes conforming triangles of area 1 m^2.
+TEST(ParticlesCommand, ImageAndSection) {
+  const auto dir = scratch("image");
+  auto r = mpm("particles " + (data / "images" / "disk.png").string() +
+                   " --pixel-size 0.01 --threshold 128 --spacing 0.05 --ppc 4 -o " + (dir / "disk.vtu").string(),
+               dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Read disk = read_vtu(dir / "disk.vtu", false);
+  EXPECT_NEAR(disk.volume_sum / (M_PI * 0.16), 1, 0.01);
+  r = mpm("particles " + (data / "meshes" / "cube.off").string() +
+              " --section 0.5 --spacing 0.1 --domains conforming -o " + (dir / "section.vtu").string(),
+          dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(read_vtu(dir / "section_domains.vtu", true).volume_sum, 1, 1e-10);
+  fs::remove_all(dir);
+}
+
+// A scene alone: every body as the builder makes it (here the 2D test scene), with its domains when its
+// shape function has them.
+TEST(ParticlesCommand, SceneBodies) {
+  const auto dir = scratch("scene");
+  const auto r =
+      mpm("particles --scene " + (data / "good_scene_2d.yaml").string() + " -o " + (dir / "p.vtu").string(), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_GT(read_vtu(dir / "p.vtu", false).points, 0);
+  fs::remove_all(dir);
+}
+
+TEST(ParticlesCommand, BadInputExitsWithTwoAndWritesNothing) {
+  const auto dir = scratch("bad");
+  const fs::path out = dir / "p.vtu";
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {(data / "meshes" / "open.off").string() + " --spacing 0.1", "open.off: the mesh is open"},
+      {(data / "meshes" / "cube.off").string(), "give the grid: --spacing H (cell size, m) or --scene SCENE"},
+      {"", "give an input file (mesh or image) or --scene SCENE"},
+      {(data / "meshes" / "none.stl").string() + " --spacing 0.1", "none.stl: mesh file not found"},
+      {(data / "good_scene_2d.yaml").string() + " --spacing 0.1", "unsupported input format '.yaml'"},
+      {(data / "images" / "disk.png").string() + " --spacing 0.1 --threshold 1", "--pixel-size is required"},
+      {(data / "images" / "black.png").string() + " --spacing 0.1 --pixel-size 0.01 --threshold 1",
+       "black.png: no pixel reaches the threshold 1"},
+      {"--scene " + (data / "good_scene_2d.yaml").string() + " --domains scene",
+       "--domains: the scene's shape function"},
+  };
+  for (const auto& c : cases) {
+    const auto r = mpm("particles " + c.args + " -o " + out.string(), dir);
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+  }
+  fs::remove_all(dir);
+}
