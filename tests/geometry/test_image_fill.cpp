@@ -188,7 +188,8 @@ TEST(ImageFill, VtiStackGivesA3dBody) {
   EXPECT_NEAR(seeds.volume * static_cast<double>(seeds.positions.size()), selected, 1e-12 * selected);
   EXPECT_NEAR(selected / (4.0 / 3 * M_PI * std::pow(0.02, 3)), 1, 0.01);
   // A lattice point lies in a selected voxel, whose centre is within 20 voxels of the ball's centre.
-  for (const auto& x : seeds.positions) EXPECT_LE((x - Vec<3>::Constant(0.032)).norm(), 0.02 + std::sqrt(3.0) / 2 * 1e-3);
+  for (const auto& x : seeds.positions)
+    EXPECT_LE((x - Vec<3>::Constant(0.032)).norm(), 0.02 + std::sqrt(3.0) / 2 * 1e-3);
   fs::remove_all(dir);
 }
 
