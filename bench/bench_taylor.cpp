@@ -65,13 +65,14 @@ int main(int argc, char** argv) {
   const mpm::TaylorResult r = mpm::run_taylor_anvil(spec);
   if (!r.failure.empty()) std::fprintf(stderr, "stopped: %s\n", r.failure.c_str());
   std::printf(
-      "| scheme | shape | h (mm) | particles | steps | t_end (us) | L_f (mm) | D_f (mm) | W_f (mm) | Delta | "
+      "| scheme | shape | h (mm) | particles | steps | t_end (us) | KE left | L_f (mm) | D_f (mm) | W_f (mm) | Delta | "
       "energy error | max eps_p | wall (s) | particle-updates/s | threads |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  std::printf("| %s | %s | %g | %lld | %lld | %.1f | %.2f | %.2f | %.2f | %.3f | %.1e | %.2f | %.1f | %.3g | %d |\n",
-              spec.scheme.c_str(), spec.shape_function.c_str(), spec.h * 1e3, r.particles, r.steps, r.time * 1e6,
-              r.length * 1e3, r.diameter * 1e3, r.bulge * 1e3, r.error, r.energy_error, r.max_plastic_strain,
-              r.wall_seconds, r.particle_updates_per_second, threads);
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| %s | %s | %g | %lld | %lld | %.1f | %.2f%% | %.2f | %.2f | %.2f | %.3f | %.1e | %.2f | %.1f | %.3g | %d |\n",
+      spec.scheme.c_str(), spec.shape_function.c_str(), spec.h * 1e3, r.particles, r.steps, r.time * 1e6,
+      100 * r.kinetic_fraction, r.length * 1e3, r.diameter * 1e3, r.bulge * 1e3, r.error, r.energy_error,
+      r.max_plastic_strain, r.wall_seconds, r.particle_updates_per_second, threads);
   std::printf(
       "reference (Table 6): experiment L 16.2, D 13.5, W 10.1 mm; review TLMPM 16.2/13.9/9.4 (0.03), "
       "MPM 17.2/14.4/8.9 (0.08), BSMPM 16.5/13.9/9.5 (0.04)\n");

@@ -98,7 +98,14 @@ TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
   // bad_scenes: refused by the loader; bad_built_scenes: valid YAML refused when the simulation is built.
   std::vector<fs::path> files;
   for (const char* folder : {"bad_scenes", "bad_built_scenes"})
-    for (const auto& entry : fs::directory_iterator(data / folder)) files.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(data / folder)) {
+#ifndef MPM_WITH_PLASTICITY  // fixtures of the plasticity module's models, unknown without it
+      if (entry.path().filename().string().rfind("plasticity_", 0) == 0 ||
+          entry.path().filename() == "output_temperature_without_specific_heat.yaml")
+        continue;
+#endif
+      files.push_back(entry.path());
+    }
   for (const auto& file : files) {
     std::ifstream in(file);
     std::string expect_line, line_line;
