@@ -459,12 +459,42 @@ bool segments_meet(const std::array<double, 2>& a, const std::array<double, 2>& 
   return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) || (o4 == 0 && on(c, d, b));
 }
 
-void read_polygon(const Reader& r, const MapReader& m, ShapeDescription& shape) {
-  m.allow({"type", "vertices"});
-  const Value list = m.required("vertices");
-  for (const auto& item : r.list(list, std::nullopt, "[x, y] corners")) {
-    const auto xy = r.vector(item, 2, any_number, "m");
-    shape.vertices.push_back({xy[0], xy[1]});
+/// Corners from a polygon file: one corner "x y" (or "x, y") per line, in m; blank lines and lines starting
+/// with '#' are skipped.
+void read_polygon_file(const Reader& r, const Value& v, const std::string& scene_file, ShapeDescription& shape) {
+  const std::string name = r.name(v);
+  std::filesystem::path path(name);
+  if (path.is_relative()) path = std::filesystem::path(scene_file).parent_path() / path;
+  std::ifstream in(path);
+  if (!in) r.fail(v, fmt::format("polygon file '{}' not found or not readable (looked for {})", name, path.string()));
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream words(line);
+    std::string x_text, y_text, extra;
+    if (!(words >> x_text) || x_text[0] == '#') continue;
+    words >> y_text >> extra;
+    const auto x = parse_number(x_text), y = parse_number(y_text);
+    if (!x || !y || !extra.empty())
+      r.fail(v, fmt::format("polygon file '{}', line {}: expected two numbers \"x y\" (m), got \"{}\"", name, number,
+                            line));
+    shape.vertices.push_back({*x, *y});
+  }
+}
+
+void read_polygon(const Reader& r, const MapReader& m, const std::string& scene_file, ShapeDescription& shape) {
+  m.allow({"type", "vertices", "file"});
+  const auto vertices = m.find("vertices"), file = m.find("file");
+  if (vertices && file) r.fail(*file, "give the corners either as vertices or in a file, not both");
+  if (!vertices && !file) m.required("vertices", "key", " (or file: a text file of corners)");
+  const Value list = vertices ? *vertices : *file;
+  if (file) {
+    read_polygon_file(r, *file, scene_file, shape);
+  } else {
+    for (const auto& item : r.list(list, std::nullopt, "[x, y] corners")) {
+      const auto xy = r.vector(item, 2, any_number, "m");
+      shape.vertices.push_back({xy[0], xy[1]});
+    }
   }
   auto& p = shape.vertices;
   if (p.size() > 3 && p.front() == p.back()) p.pop_back();  // a closing corner repeated
@@ -603,7 +633,7 @@ ShapeDescription read_shape(const Reader& r, const Value& v, int dimension, cons
         r.fail(max, fmt::format("max must exceed min on every axis; on axis {}: min {} m, max {} m", axis_names[d],
                                 shape.min[d], shape.max[d]));
   } else if (shape.type == "polygon") {
-    read_polygon(r, m, shape);
+    read_polygon(r, m, scene_file, shape);
   } else if (shape.type == "cylinder") {
     m.allow({"type", "center", "radius", "axis", "length"});
     shape.center = r.vector(m.required("center"), dimension, any_number, "m");

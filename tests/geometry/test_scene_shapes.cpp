@@ -116,3 +116,15 @@ TEST(SceneShapes, MeshPathIsRelativeToTheScene) {
   const auto sim = app::build_simulation<3>(scene);
   EXPECT_NEAR(total_volume(sim->bodies()[0]), 0.125, 1e-14);
 }
+
+// A polygon from a text file (corners "x y" or "x, y", comments, blank lines) is the polygon of its corners.
+TEST(SceneShapes, PolygonFromAFile) {
+  const auto scene =
+      parse_scene(scene_2d("  - material: m\n    shape: {type: polygon, file: ../polygons/l_shape.txt}\n"),
+                  (source / "tests" / "data" / "bad_scenes" / "any.yaml").string());
+  const std::vector<std::array<double, 2>> corners{{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.5},
+                                                   {0.5, 0.5}, {0.5, 0.8}, {0.2, 0.8}};
+  EXPECT_EQ(scene.bodies[0].shape.vertices, corners);
+  const auto sim = app::build_simulation<2>(scene);
+  EXPECT_NEAR(total_volume(sim->bodies()[0]) / 0.27, 1, 1e-12);  // a sum of 2,700 equal volumes
+}
