@@ -33,25 +33,8 @@ ParticleSeeds<Dim> fill_region(const Region<Dim>& region, const GridGeometry<Dim
   return seeds;
 }
 
-template <int Dim>
-bool contains(const ShapeDescription& shape, const Vec<Dim>& x) {
-  return make_region<Dim>(shape)->contains(x);
-}
-
-template <int Dim>
-ParticleSeeds<Dim> fill_primitive(const ShapeDescription& shape, const GridGeometry<Dim>& g,
-                                  const std::array<int, 3>& ppc) {
-  return fill_region<Dim>(*make_region<Dim>(shape), g, ppc);
-}
-
 template ParticleSeeds<1> fill_region<1>(const Region<1>&, const GridGeometry<1>&, const std::array<int, 3>&);
 template ParticleSeeds<2> fill_region<2>(const Region<2>&, const GridGeometry<2>&, const std::array<int, 3>&);
 template ParticleSeeds<3> fill_region<3>(const Region<3>&, const GridGeometry<3>&, const std::array<int, 3>&);
-template bool contains<1>(const ShapeDescription&, const Vec<1>&);
-template bool contains<2>(const ShapeDescription&, const Vec<2>&);
-template bool contains<3>(const ShapeDescription&, const Vec<3>&);
-template ParticleSeeds<1> fill_primitive<1>(const ShapeDescription&, const GridGeometry<1>&, const std::array<int, 3>&);
-template ParticleSeeds<2> fill_primitive<2>(const ShapeDescription&, const GridGeometry<2>&, const std::array<int, 3>&);
-template ParticleSeeds<3> fill_primitive<3>(const ShapeDescription&, const GridGeometry<3>&, const std::array<int, 3>&);
 
 }  // namespace mpm::geometry

@@ -26,13 +26,4 @@ template <int Dim>
 ParticleSeeds<Dim> fill_region(const Region<Dim>& region, const GridGeometry<Dim>& grid,
                                const std::array<int, 3>& particles_per_cell);
 
-/// True when x lies in the shape (boundary included for primitives).
-template <int Dim>
-bool contains(const ShapeDescription& shape, const Vec<Dim>& x);
-
-/// fill_region() of the shape's region.
-template <int Dim>
-ParticleSeeds<Dim> fill_primitive(const ShapeDescription& shape, const GridGeometry<Dim>& grid,
-                                  const std::array<int, 3>& particles_per_cell);
-
 }  // namespace mpm::geometry
