@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "taylor_anvil.hpp"
 
@@ -56,6 +58,26 @@ TEST(TaylorAnvil, CoarseMusl) {
   EXPECT_NEAR(r.bulge, 9.58e-3, 0.5e-3);
   EXPECT_LT(r.error, 0.045);
   EXPECT_LT(r.energy_error, 0.02);
+}
+
+// The example's scene files are the runner's scenes (so `mpm run` on them gives what bench_taylor measures);
+// regenerate them with bench_taylor --print-scene [--scheme musl --h 0.5e-3 [--shape cubic_bspline]].
+TEST(TaylorAnvil, ExampleScenesAreTheRunnerScenes) {
+  const auto read = [](const std::string& name) {
+    std::ifstream in(std::string(MPM_SOURCE_DIR) + "/examples/05_taylor_anvil/" + name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  TaylorSpec tl;
+  tl.h = 0.25e-3;
+  EXPECT_EQ(read("tlmpm.yaml"), taylor_anvil_scene(tl));
+  TaylorSpec musl;
+  musl.scheme = "musl";
+  musl.h = 0.5e-3;
+  EXPECT_EQ(read("musl.yaml"), taylor_anvil_scene(musl));
+  musl.shape_function = "cubic_bspline";
+  EXPECT_EQ(read("bsmpm.yaml"), taylor_anvil_scene(musl));
 }
 
 }  // namespace

@@ -95,7 +95,7 @@ struct Elastoplastic {
     if constexpr (Dim == 3) {
       const Real* q = state.rotation.q;
       const Real q0[4] = {q[0], -q[1], -q[2], -q[3]};  // R_t^T
-      polar_rotation_warm(F, state.rotation.q);
+      polar_update_warm(F, state.rotation.q);
       Real dq[4];  // q_{t+dt} (x) conj(q_t)
       dq[0] = q[0] * q0[0] - q[1] * q0[1] - q[2] * q0[2] - q[3] * q0[3];
       dq[1] = q[0] * q0[1] + q[1] * q0[0] + q[2] * q0[3] - q[3] * q0[2];
@@ -176,10 +176,11 @@ struct Elastoplastic {
 
   /// Dilatational wave speed sqrt((K_t + 4 G / 3) / rho), rho = rho0 / J, K_t the larger of K and the
   /// EOS tangent modulus (damage ignored: conservative).
-  static inline Real wave_speed(const Params& c, Real J) {
+  static inline Real wave_speed_squared(const Params& c, Real J) {
     const Real K = std::max(c.bulk_modulus, c.eos.tangent_bulk_modulus(J));
-    return std::sqrt((K + 4 * c.shear_modulus / 3) * std::max(J, Real(0)) / c.density);
+    return (K + 4 * c.shear_modulus / 3) * std::max(J, Real(0)) / c.density;
   }
+  static inline Real wave_speed(const Params& c, Real J) { return std::sqrt(wave_speed_squared(c, J)); }
 
   /// Stored elastic energy per reference volume: J dev(sigma):dev(sigma) / (4 G) + W_eos(J).
   static inline Real energy_density(const Params& c, Real J, const Mat3& stress) {

@@ -69,7 +69,8 @@ inline Mat3 rotation_of(const Real q[4]) {
 /// the rotation of one explicit step is small, so one or two iterations reach |theta| < `tolerance`
 /// (the error left is about |theta|^2). R is orthogonal to round-off whatever the number of iterations
 /// (q is normalised). After `max_iterations`, or for a degenerate F, the closed form above is used and q reset.
-inline Mat3 polar_rotation_warm(const Mat3& F, Real q[4], Real tolerance = 1e-3, int max_iterations = 8) {
+/// polar_update_warm only updates q; polar_rotation_warm also returns R.
+inline void polar_update_warm(const Mat3& F, Real q[4], Real tolerance = 1e-3, int max_iterations = 8) {
   for (int it = 0; it < max_iterations; ++it) {
     const Mat3 A = rotation_of(q).transpose() * F;
     const Real k0 = 0.5 * (A(2, 1) - A(1, 2)), k1 = 0.5 * (A(0, 2) - A(2, 0)), k2 = 0.5 * (A(1, 0) - A(0, 1));
@@ -95,7 +96,7 @@ inline Mat3 polar_rotation_warm(const Mat3& F, Real q[4], Real tolerance = 1e-3,
     q[1] = x * n;
     q[2] = y * n;
     q[3] = z * n;
-    if (t0 * t0 + t1 * t1 + t2 * t2 < tolerance * tolerance) return rotation_of(q);
+    if (t0 * t0 + t1 * t1 + t2 * t2 < tolerance * tolerance) return;
   }
   const Mat3 R = polar_rotation(F);
   const Real w = 0.5 * std::sqrt(std::max(Real(0), 1 + R.trace()));
@@ -115,7 +116,11 @@ inline Mat3 polar_rotation_warm(const Mat3& F, Real q[4], Real tolerance = 1e-3,
     q[1 + j] = (R(j, i) + R(i, j)) / s;
     q[1 + k] = (R(k, i) + R(i, k)) / s;
   }
-  return R;
+}
+
+inline Mat3 polar_rotation_warm(const Mat3& F, Real q[4], Real tolerance = 1e-3, int max_iterations = 8) {
+  polar_update_warm(F, q, tolerance, max_iterations);
+  return rotation_of(q);
 }
 
 /// R S R^T for a symmetric S (written out: 45 multiply-adds instead of 54, no temporaries).
