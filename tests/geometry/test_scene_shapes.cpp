@@ -2,10 +2,12 @@
 // user's scene file goes; and the STL cylinder of examples/09_stl_cylinder against the primitive.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numeric>
 
+#include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/scene_loader.hpp"
@@ -127,4 +129,19 @@ TEST(SceneShapes, PolygonFromAFile) {
   EXPECT_EQ(scene.bodies[0].shape.vertices, corners);
   const auto sim = app::build_simulation<2>(scene);
   EXPECT_NEAR(total_volume(sim->bodies()[0]) / 0.27, 1, 1e-12);  // a sum of 2,700 equal volumes
+}
+
+// The two geometry examples build as their READMEs say (they need the plasticity module for their
+// materials).
+TEST(SceneShapes, ExamplesBuildWithTheirParticleCounts) {
+  app::register_modules();
+  const auto modules = app::compiled_modules();
+  if (std::find(modules.begin(), modules.end(), "plasticity") == modules.end())
+    GTEST_SKIP() << "the examples' materials need MPM_WITH_PLASTICITY";
+  const auto image = load_scene(source / "examples" / "08_image_impact" / "scene.yaml");
+  const auto sim = app::build_simulation<2>(image);
+  EXPECT_EQ(sim->particle_count(), 7616);
+  EXPECT_NEAR(total_volume(sim->bodies()[0]), 480.68e-6, 0.005e-6);  // the selected pixel area, m^2
+  const auto rod = load_scene(source / "examples" / "09_stl_cylinder" / "scene.yaml");
+  EXPECT_EQ(app::build_simulation<3>(rod)->particle_count(), 74664);
 }
