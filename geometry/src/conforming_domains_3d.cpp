@@ -5,6 +5,7 @@
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
+#include <CGAL/Random.h>
 #include <CGAL/make_mesh_3.h>
 #include <fmt/format.h>
 
@@ -45,7 +46,19 @@ CpdiParticles<3> elements(const C3t3& c3t3) {
     out.volumes.push_back(volume);
     out.offsets.push_back(corners);
   }
-  return out;
+  // Sliver exudation leaves a few flat elements whose four corners lie on one flat input facet (volume
+  // ~1e-24 m^3 where the mean is 1e-5): they hold no volume and their CPDI gradient weights ~ 1/V would
+  // blow up, so they are dropped.
+  const Real mean =
+      std::accumulate(out.volumes.begin(), out.volumes.end(), 0.0) / std::max<Real>(1, out.volumes.size());
+  CpdiParticles<3> kept;
+  for (std::size_t k = 0; k < out.volumes.size(); ++k)
+    if (out.volumes[k] > 1e-12 * mean) {
+      kept.positions.push_back(out.positions[k]);
+      kept.volumes.push_back(out.volumes[k]);
+      kept.offsets.push_back(out.offsets[k]);
+    }
+  return kept;
 }
 
 }  // namespace
@@ -71,11 +84,16 @@ CpdiParticles<3> conforming_tetrahedra(const ShapeDescription& shape, Real spaci
   std::string failure;
   for (const auto& attempt : attempts) {
     try {
+      // Mesh_3's perturbation draws from CGAL's default random generator, seeded from the clock: seed it
+      // so that the same scene gives the same elements.
+      CGAL::get_default_random() = CGAL::Random(0);
       Domain domain(surface);
       domain.detect_features(attempt.feature_angle);
       const Criteria criteria(p::edge_size = attempt.edge_size * spacing, p::facet_angle = 25, p::facet_size = spacing,
                               p::facet_distance = spacing / 10, p::cell_radius_edge_ratio = 3, p::cell_size = spacing);
-      const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, p::no_perturb(), p::no_exude());
+      // Perturbation and exudation remove the slivers (flat tetrahedra of near-zero volume, whose CPDI
+      // gradient weights ~ 1/V blow up the first step).
+      const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, p::perturb(), p::exude());
       CpdiParticles<3> out = elements(c3t3);
       const double sum = std::accumulate(out.volumes.begin(), out.volumes.end(), 0.0);
       if (std::abs(sum / mesh_volume - 1) > 1e-10 && warnings)
