@@ -49,6 +49,7 @@ struct Point {
   Real T = 293.15;
   SymTensor<3> stress;
   bool track_temperature = false;
+  Real volume = 1;  ///< current volume, m^3 (the artificial viscosity's length is its cube root)
 
   static Mat3 expm(const Mat3& A) {  // scaling and squaring with a 12-term series (exact to round-off here)
     int k = 0;
@@ -66,7 +67,8 @@ struct Point {
   /// One step of size dt with velocity gradient L; returns the new stress (full 3x3).
   Mat3 step(const Mat3& L, Real dt) {
     F = expm(dt * L) * F;
-    Model::template update_point<3>(c, F, L, F.determinant(), dt, 1.0, state, track_temperature ? &T : nullptr, stress);
+    Model::template update_point<3>(c, F, L, F.determinant(), dt, volume, state, track_temperature ? &T : nullptr,
+                                    stress);
     return stress.full();
   }
   /// The same step on copies (a trial deformation: nothing is committed).
@@ -360,6 +362,27 @@ TEST(PlasticityPoint, LinearAndVoceHardeningInShear) {
     const Real eps = pt.state.plastic_strain;
     const Real expected = pt.c.flow.stress(eps, 1, 0);
     EXPECT_NEAR(von_mises(pt.stress.full()), expected, pt.c.flow.slope(0) * 1.1e-4) << "voce = " << voce;
+  }
+}
+
+// Artificial bulk viscosity (von Neumann-Richtmyer quadratic + Landshoff linear, as Karamelo's EOS): in
+// compression, q = rho l (c2 l (tr D)^2 - c1 c_b tr D) adds to the pressure, with l = V^(1/3) and
+// c_b = sqrt(K / rho); in expansion it is zero.
+TEST(PlasticityPoint, ArtificialViscosityInCompressionOnly) {
+  for (Real rate : {-1e4, 1e4}) {
+    Point<J2Linear> plain, viscous;
+    set_elastic(plain.c, 2700, 70e9, 0.33);
+    plain.c.flow.yield_stress = 300e6;
+    viscous.c = plain.c;
+    viscous.c.viscosity_linear = 0.2;
+    viscous.c.viscosity_quadratic = 1.5;
+    plain.volume = viscous.volume = 1e-9;        // l = 1 mm
+    const Mat3 L = rate * Mat3::Identity() / 3;  // tr D = rate
+    const Real dt = 1e-8;
+    const Real dp = -(viscous.step(L, dt).trace() - plain.step(L, dt).trace()) / 3;
+    const Real J = std::exp(rate * dt), rho = 2700 / J, l = 1e-3, cb = std::sqrt(plain.c.bulk_modulus / rho);
+    const Real q = rate < 0 ? rho * l * (1.5 * l * rate * rate - 0.2 * cb * rate) : 0;
+    EXPECT_NEAR(dp, q, 1e-9 * std::abs(q) + 1e-6) << "tr D = " << rate;
   }
 }
 
