@@ -50,6 +50,7 @@ struct PlasticState {
   Real damage = 0;                                     ///< D in [0, 1]
   Real damage_initiation = 0;                          ///< D_init of eq. B.14
   Real plastic_work = 0;                               ///< dissipated energy per reference volume, J/m^3
+  Real hardening = -1;  ///< cache of flow.hardening(plastic_strain), Pa (-1: not computed yet)
 };
 
 /// Constants shared by every flow law and equation of state.
@@ -139,7 +140,8 @@ struct Elastoplastic {
       s += (2 * G * dt) * d;
       const Real eq = std::sqrt(1.5 * s.squaredNorm());
       const Real rate_star = std::max(state.plastic_strain_rate / c.reference_strain_rate, Real(1));
-      sigma_f = c.flow.stress(state.plastic_strain, rate_star, T_star) * (1 - D);
+      if (state.hardening < 0) state.hardening = c.flow.hardening(state.plastic_strain);
+      sigma_f = state.hardening * c.flow.factor(rate_star, T_star) * (1 - D);
       if (eq > sigma_f) {
         d_eps = (eq - sigma_f) / (3 * G);
         s *= sigma_f / eq;
@@ -170,7 +172,10 @@ struct Elastoplastic {
       if (temperature) *temperature += c.taylor_quinney * sigma_f * d_eps * J / (c.density * c.specific_heat);
       state.plastic_work += J * sigma_f * d_eps;
     }
-    state.plastic_strain += d_eps;
+    if (d_eps > 0) {
+      state.plastic_strain += d_eps;
+      state.hardening = c.flow.hardening(state.plastic_strain);  // for the next step (one power law per plastic step)
+    }
     state.plastic_strain_rate = d_eps / dt;
   }
 

@@ -20,11 +20,14 @@ struct HardeningFlow {
   Real saturation_stress = 0;  ///< Voce Q, Pa
   Real saturation_rate = 0;    ///< Voce b, -
 
-  Real stress(Real eps_p, Real /*rate_star*/, Real /*T_star*/) const {
+  /// The strain-hardening part (what a history cache keeps), and the factor of rate and temperature.
+  Real hardening(Real eps_p) const {
     Real s = yield_stress + hardening_modulus * eps_p;
     if (saturation_stress != 0) s += saturation_stress * (1 - std::exp(-saturation_rate * eps_p));
     return s;
   }
+  Real factor(Real /*rate_star*/, Real /*T_star*/) const { return 1; }
+  Real stress(Real eps_p, Real rate_star, Real T_star) const { return hardening(eps_p) * factor(rate_star, T_star); }
   Real slope(Real eps_p) const {
     return hardening_modulus + saturation_stress * saturation_rate * std::exp(-saturation_rate * eps_p);
   }
@@ -37,13 +40,14 @@ struct JohnsonCookFlow {
   Real C = 0;  ///< strain-rate coefficient, -
   Real m = 1;  ///< thermal softening exponent, -
 
-  Real stress(Real eps_p, Real rate_star, Real T_star) const {
-    Real s = A;
-    if (eps_p > 0) s += B * std::pow(eps_p, n);
-    if (C != 0) s *= 1 + C * std::log(rate_star);
-    if (T_star > 0) s *= T_star < 1 ? 1 - std::pow(T_star, m) : 0;
-    return s;
+  Real hardening(Real eps_p) const { return eps_p > 0 ? A + B * std::pow(eps_p, n) : A; }
+  Real factor(Real rate_star, Real T_star) const {
+    Real f = 1;
+    if (C != 0 && rate_star > 1) f += C * std::log(rate_star);
+    if (T_star > 0) f *= T_star < 1 ? 1 - std::pow(T_star, m) : 0;
+    return f;
   }
+  Real stress(Real eps_p, Real rate_star, Real T_star) const { return hardening(eps_p) * factor(rate_star, T_star); }
   /// d sigma_f / d eps_p at rate* = 1 and T* = 0.
   Real slope(Real eps_p) const { return B * n * std::pow(eps_p, n - 1); }
 };
