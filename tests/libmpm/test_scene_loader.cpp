@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/app/modules.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/scene_loader.hpp"
 
@@ -56,6 +57,9 @@ TEST_P(SceneLoaderBadScene, ReportsMessageAndLine) {
   const BadScene& scene = GetParam();
   ASSERT_FALSE(scene.expect.empty()) << scene.file << ": first line must be '# expect: ...'";
   ASSERT_GT(scene.line, 0) << scene.file << ": second line must be '# line: N'";
+  // CTest runs each case in its own process: the optional modules' models (plasticity, fluids) must be
+  // registered here, as the program does, or their fixtures would fail as "unknown material model".
+  mpm::app::register_modules();
   try {
     mpm::load_scene(scene.file);
     FAIL() << scene.file << " was accepted; expected an error containing: " << scene.expect;
