@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Compares two bench_throughput programs (two builds, e.g. before and after a change) on the same cases,
 # alternating them round by round so that a change of machine load hits both, and prints per case the best
-# and the median particle-updates/s of each, the ratio B/A of the bests and the heap bytes per particle.
-# On a shared machine the best of several runs is the number to compare (the least disturbed run); the
-# median shows the spread.
+# and the median particle-updates/s of each, the ratio B/A of the bests, the median over the rounds of
+# B/A within a round (A and B ran back to back: the most robust number on a shared machine) and the heap
+# bytes per particle.
 #   bash bench/compare_builds.sh A_BENCH B_BENCH [--rounds N] [--case LIST] [--threads T] [--full] [--profile]
 # A_BENCH, B_BENCH: paths to bench_throughput executables. --full: 1e6-particle blocks (default: the
 # --quick blocks). --profile: B runs with its phase timers on (B must support --profile): the cost of
@@ -75,14 +75,16 @@ done
 import csv, statistics, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 print(f"A = {sys.argv[2]}\nB = {sys.argv[3]}\n")
-print("| case | threads | A best | A median | B best | B median | B/A (best) | heap B/particle A | B |")
-print("|---|---|---|---|---|---|---|---|---|")
+print("| case | threads | A best | A median | B best | B median | B/A (best) | B/A (median of rounds) | heap B/particle A | B |")
+print("|---|---|---|---|---|---|---|---|---|---|")
 for case in dict.fromkeys(r["case"] for r in rows):
     for t in dict.fromkeys(r["threads"] for r in rows if r["case"] == case):
         sel = lambda w, k: [float(r[k]) for r in rows if r["case"] == case and r["threads"] == t and r["build"] == w and r[k]]
         a, b = sel("A", "particle_updates_per_second"), sel("B", "particle_updates_per_second")
         heap = lambda w: f"{statistics.median(sel(w, 'heap_bytes_per_particle')):.0f}" if sel(w, "heap_bytes_per_particle") else "–"
+        # A and B of the same round ran one after the other: their ratio cancels slow changes of the load.
+        paired = statistics.median(x / y for x, y in zip(b, a))
         print(f"| {case} | {t} | {max(a):.4g} | {statistics.median(a):.4g} | {max(b):.4g} | {statistics.median(b):.4g} "
-              f"| {max(b) / max(a):.3f} | {heap('A')} | {heap('B')} |")
+              f"| {max(b) / max(a):.3f} | {paired:.3f} | {heap('A')} | {heap('B')} |")
 print(f"\n{max(int(r['round']) for r in rows)} runs per case and build, in alternating rounds; all in {sys.argv[1]}")
 PY
