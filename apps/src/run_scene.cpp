@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ostream>
@@ -21,9 +22,9 @@ void check(const SceneDescription& scene, std::ostream& out) {
   const Real dt = sim->next_time_step();
   fmt::print(out,
              "{}: valid. {}D, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
-             "(stable bound {:.6g} s); about {} steps to t = {:.6g} s\n",
+             "(stable bound {:.6g} s, {}); about {} steps to t = {:.6g} s\n",
              scene.file, Dim, sim->particle_count(), sim->bodies().size(), sim->grid().size(), scene.solver.scheme,
-             scene.solver.shape_function, dt, sim->stable_time_step(),
+             scene.solver.shape_function, dt, sim->stable_time_step(), sim->time_step_limiter(),
              static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
 }
 
@@ -37,6 +38,11 @@ RunSummary run(const SceneDescription& scene, const RunOptions& options, std::os
   for (const auto& b : sim->bodies())
     summary.bytes_per_particle = std::max(summary.bytes_per_particle, b.particles.bytes_per_particle());
   const Real e0 = sim->energy().total();
+  // With a module that bounds the time step (heat conduction: diffusion), say which bound governs.
+  if (std::any_of(sim->modules().begin(), sim->modules().end(),
+                  [&](const auto& m) { return std::isfinite(m->stable_time_step(sim->bodies())); }))
+    fmt::print(log, "time step: {:.6g} s, stable bound {:.6g} s governed by {}\n", sim->next_time_step(),
+               sim->stable_time_step(), sim->time_step_limiter());
   if (options.profile) sim->enable_profiling();
   // Output is timed only when profiling (the profile's "output" phase).
   auto write = [&](const Simulation<Dim>& s, bool always) {

@@ -12,6 +12,7 @@
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/material_factory.hpp"
+#include "mpm/module_factory.hpp"
 #include "mpm/scene_error.hpp"
 
 namespace mpm::app {
@@ -131,11 +132,21 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
     for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
     bodies.push_back(std::move(body));
   }
+  // Optional modules the scene asks for (thermal: heat conduction), built before the first snapshot so that
+  // their particle fields are part of it.
+  std::vector<std::shared_ptr<Module<Dim>>> modules;
+  for (const auto& build : scene_module_builders<Dim>())
+    if (auto m = build ? build(scene, bodies, geometry) : nullptr) modules.push_back(std::move(m));
   if (wants("temperature") && std::none_of(bodies.begin(), bodies.end(),
                                            [](const Body<Dim>& b) { return b.particles.has_field("temperature"); }))
     throw SceneError(scene.output.where, "output.fields",
                      "temperature: no body tracks temperature; give a material specific_heat (johnson_cook, "
-                     "j2_plasticity) or remove temperature from the fields");
+                     "j2_plasticity), add a thermal: section, or remove temperature from the fields");
+  if (wants("heat_flux") &&
+      std::none_of(bodies.begin(), bodies.end(), [](const Body<Dim>& b) { return b.particles.has_field("heat_flux"); }))
+    throw SceneError(scene.output.where, "output.fields",
+                     "heat_flux: no body conducts heat; add a thermal: section (and thermal_conductivity to the "
+                     "materials) or remove heat_flux from the fields");
 
   SimulationSettings<Dim> settings;
   settings.transfer.flip_fraction = scene.solver.flip_fraction;
@@ -149,6 +160,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
 
   auto sim = std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme),
                                                GridBoundary<Dim>(geometry, gd.boundary), settings);
+  for (auto& m : modules) sim->add_module(std::move(m));
   if (track_corners)
     sim->add_module(
         std::make_shared<CpdiCornerTracking<Dim>>(find_shape_function(scene.solver.shape_function)->domain_corners));

@@ -24,6 +24,20 @@ std::vector<MaterialModelSpec>& catalog() {
   return models;
 }
 
+/// Parameters that an optional module adds to every model (the thermal module: conductivity, expansion).
+std::vector<ParameterSpec>& common_parameters() {
+  static std::vector<ParameterSpec> specs;
+  return specs;
+}
+
+/// Appends the common parameters that `spec` does not declare itself.
+void add_common(MaterialModelSpec& spec) {
+  for (const auto& c : common_parameters())
+    if (std::none_of(spec.parameters.begin(), spec.parameters.end(),
+                     [&](const ParameterSpec& p) { return p.name == c.name; }))
+      spec.parameters.push_back(c);
+}
+
 }  // namespace
 
 const MaterialModelSpec* find_material_model(std::string_view model) {
@@ -33,12 +47,22 @@ const MaterialModelSpec* find_material_model(std::string_view model) {
 }
 
 void register_material_model(MaterialModelSpec spec) {
+  add_common(spec);
   for (auto& m : catalog())
     if (m.model == spec.model) {
       m = std::move(spec);
       return;
     }
   catalog().push_back(std::move(spec));
+}
+
+void register_common_material_parameters(const std::vector<ParameterSpec>& specs) {
+  for (const auto& s : specs) {
+    auto& common = common_parameters();
+    if (std::none_of(common.begin(), common.end(), [&](const ParameterSpec& c) { return c.name == s.name; }))
+      common.push_back(s);
+  }
+  for (auto& m : catalog()) add_common(m);
 }
 
 std::vector<std::string> material_model_names() {

@@ -11,10 +11,25 @@
 namespace mpm {
 
 std::vector<std::string> output_field_names() {
-  return {"velocity",         "displacement", "stress",         "deformation_gradient", "mass",
-          "volume",           "density",      "body",           "velocity_gradient",    "pressure",
-          "von_mises_stress", "domain_size",  "domains",        "plastic_strain",       "plastic_strain_rate",
-          "damage",           "temperature",  "internal_energy"};
+  return {"velocity",
+          "displacement",
+          "stress",
+          "deformation_gradient",
+          "mass",
+          "volume",
+          "density",
+          "body",
+          "velocity_gradient",
+          "pressure",
+          "von_mises_stress",
+          "domain_size",
+          "domains",
+          "plastic_strain",
+          "plastic_strain_rate",
+          "damage",
+          "temperature",
+          "internal_energy",
+          "heat_flux"};
 }
 
 namespace {
@@ -90,6 +105,13 @@ void append_field(const std::string& name, const Body<Dim>& b, std::vector<doubl
     } else {
       each([&](Index) { out.push_back(0.0); });  // a body that does not track temperature (documented: 0)
     }
+  } else if (name == "heat_flux") {
+    if (p.has_field("heat_flux")) {
+      const auto& q = p.template field<VecU<Dim>>("heat_flux");  // W/m^2 (thermal module)
+      each([&](Index i) { pad3<Dim>(out, q[i]); });
+    } else {
+      each([&](Index) { pad3<Dim>(out, VecU<Dim>::Zero()); });  // a body without conduction
+    }
   } else if (name == "id") {
     each([&](Index i) { out.push_back(p.id[i]); });
   } else {
@@ -98,7 +120,7 @@ void append_field(const std::string& name, const Body<Dim>& b, std::vector<doubl
 }
 
 int components(const std::string& name) {
-  if (name == "velocity" || name == "displacement" || name == "domain_size") return 3;
+  if (name == "velocity" || name == "displacement" || name == "domain_size" || name == "heat_flux") return 3;
   if (name == "stress") return 6;
   if (name == "deformation_gradient" || name == "velocity_gradient") return 9;
   return 1;
@@ -126,7 +148,8 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
   energy_ = std::make_unique<io::CsvLog>(
       directory_ / "energy.csv",
       std::vector<std::string>{"time", "step", "kinetic_energy", "strain_energy", "gravity_potential_energy",
-                               "total_energy", "momentum_x", "momentum_y", "momentum_z", "mass", "plastic_work"});
+                               "total_energy", "momentum_x", "momentum_y", "momentum_z", "mass", "plastic_work",
+                               "thermal_energy"});
 }
 
 template <int Dim>
@@ -180,6 +203,8 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
       pad3<Dim>(force.values, g.node[n].force);
     }
     image.fields = {mass, velocity, force};
+    for (const auto& [name, values] : g.node_fields)  // modules' nodal fields (thermal: temperature)
+      if (static_cast<Index>(values.size()) == g.size()) image.fields.push_back({name, 1, values});
     const std::string grid_name = fmt::format("{}_grid_{:06d}.vti", prefix_, frame_);
     io::write_vti(directory_ / grid_name, image);
     grid_pvd_->add(sim.time(), directory_ / grid_name);
@@ -187,7 +212,7 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
   }
   const EnergyBalance e = sim.energy();
   energy_->append({sim.time(), static_cast<double>(sim.step()), e.kinetic, e.strain, e.gravity, e.total(),
-                   e.momentum[0], e.momentum[1], e.momentum[2], e.mass, e.plastic_work});
+                   e.momentum[0], e.momentum[1], e.momentum[2], e.mass, e.plastic_work, e.thermal});
   last_written_ = sim.time();
   ++frame_;
   if (interval_ > 0)

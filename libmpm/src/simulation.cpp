@@ -45,6 +45,21 @@ Real Simulation<Dim>::stable_time_step() const {
 }
 
 template <int Dim>
+std::string Simulation<Dim>::time_step_limiter() const {
+  Real dt = std::numeric_limits<Real>::infinity();
+  std::string limiter = "CFL (eq. 2.73)";
+  const auto& h = grid_.geometry.h;
+  for (int d = 0; d < Dim; ++d)
+    if (wave_speed_.max_speed[d] > 0) dt = std::min(dt, h[d] / wave_speed_.max_speed[d]);
+  for (const auto& m : hooks_.all())
+    if (const Real bound = m->stable_time_step(bodies_); bound < dt) {
+      dt = bound;
+      limiter = std::string(m->time_step_bound());
+    }
+  return limiter;
+}
+
+template <int Dim>
 Real Simulation<Dim>::next_time_step() const {
   if (settings_.fixed_dt) return *settings_.fixed_dt;
   return settings_.cfl * stable_time_step();
@@ -190,6 +205,7 @@ EnergyBalance Simulation<Dim>::energy() const {
     e.strain += b.material->strain_energy(p);
     e.plastic_work += b.material->dissipated_energy(p);
   }
+  for (const auto& m : hooks_.all()) m->add_energy(bodies_, e);
   return e;
 }
 

@@ -6,6 +6,8 @@
 /// particle-to-grid scatter (see slab_binning.hpp).
 
 #include <array>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "mpm/types.hpp"
@@ -93,6 +95,9 @@ struct Grid {
   GridGeometry<Dim> geometry;
   std::vector<NodeRecord<Dim>> node;        ///< mass (kg), momentum (kg m/s), force (N)
   std::vector<NodeVelocity<Dim>> velocity;  ///< m/s
+  /// Nodal scalar fields that optional modules keep (the thermal module's "temperature", K), by name; written
+  /// with the grid output. Empty unless a module fills it.
+  std::map<std::string, std::vector<Real>> node_fields;
 
   explicit Grid(const GridGeometry<Dim>& g = {}) : geometry(g), node(g.node_count()), velocity(g.node_count()) {}
   Index size() const { return static_cast<Index>(node.size()); }

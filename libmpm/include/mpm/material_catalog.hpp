@@ -52,5 +52,9 @@ std::vector<std::string> material_model_names();
 /// Adds a model of an optional module (or replaces the one with the same key). Call before loading
 /// scenes; modules are registered by the generated call mpm::app::register_modules().
 void register_material_model(MaterialModelSpec spec);
+/// Adds parameters to every model, registered or to come, that does not declare one of that name itself
+/// (an optional module's per-material keys, e.g. thermal_conductivity). The module that registers them reads
+/// them from MaterialDescription::parameters; the models ignore them.
+void register_common_material_parameters(const std::vector<ParameterSpec>& specs);
 
 }  // namespace mpm

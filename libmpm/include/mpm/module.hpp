@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mpm/energy.hpp"
 #include "mpm/step_context.hpp"
 
 namespace mpm {
@@ -45,6 +46,10 @@ class Module {
   virtual void before_step(StepContext<Dim>&) {}
   /// The largest stable time step this module allows (s); infinity when it imposes none.
   virtual Real stable_time_step(const std::vector<Body<Dim>>&) const { return std::numeric_limits<Real>::infinity(); }
+  /// What stable_time_step() bounds, for the log ("diffusion bound h^2 rho c / (2 dim k)").
+  virtual std::string_view time_step_bound() const { return name(); }
+  /// Adds the module's share of the conservation audit (e.g. the thermal energy) to `e`.
+  virtual void add_energy(const std::vector<Body<Dim>>&, EnergyBalance&) const {}
 };
 
 /// The modules of a run, sorted by phase.

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "mpm/energy.hpp"
@@ -38,6 +39,8 @@ class Simulation {
 
   /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), and of the modules.
   Real stable_time_step() const;
+  /// Which bound governs stable_time_step(): "CFL (eq. 2.73)" or the module's time_step_bound().
+  std::string time_step_limiter() const;
   /// The time step the next step will take: the fixed dt, or cfl * stable_time_step().
   Real next_time_step() const;
   /// Takes one step of size dt. If the stability guard trips, the state is rolled back to the end of

@@ -1,0 +1,327 @@
+#pragma once
+/// \file heat_conduction.hpp
+/// Explicit heat conduction on the MPM grid (review §5.3.2, Algorithm 8) and its coupling to the mechanics on
+/// the same grid and time step (Algorithm 9). One step, all with the weights at the particle positions of the
+/// start of the step (the reference positions with the TLMPM):
+///   C_I = sum phi m c (eq. 5.24);  T_I = sum phi (m c T)_p / C_I (eq. 5.25);
+///   Q_I = sum V_p [gamma* phi_I + q_p . grad phi_I] - sum_faces q* A_I (eqs 5.21-5.23);
+///   T~_I = T_I + dt Q_I / C_I, Dirichlet nodes T_I = T~_I = T*;
+///   T_p += sum phi (T~_I - T_I) (FLIP-type);  T_I^{t+dt} = sum phi (m c T)_p / C_I (second mapping);
+///   q_p = -k grad T with grad T = sum grad phi_I T_I^{t+dt}: the flux of the next step comes from the
+///   re-mapped grid temperature, not from T~ (the double mapping of Alg. 8).
+/// It runs in the phase after P2G, so the stress update of the same step sees T^{t+dt} (Alg. 9). The shared
+/// particle field "temperature" is the one the plasticity module heats by plastic work (eq. B.13) and reads
+/// for Johnson-Cook softening, so conduction, plastic heating and softening act on one temperature.
+/// Thermal expansion (eq. 5.26) of linear_elastic bodies: eps_dot^e = eps_dot - (alpha dT/dt) I, applied
+/// by subtracting (alpha dT/dt) I from the velocity gradient before the stress update, plus the part of
+/// the thermal strain the packed law cannot see (out-of-plane axes in 1D/2D) after it.
+/// TLMPM: the grid is the reference configuration; grad T = F^-T grad_0 T and the heat flow uses the
+/// pulled-back flux J F^-1 q with the reference volume (the nominal flux, like P for the force).
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mpm/expression.hpp"
+#include "mpm/module.hpp"
+#include "mpm/shape/stencil.hpp"
+#include "mpm/thermal/thermal_body.hpp"
+
+namespace mpm::thermal {
+
+/// Nodes of one face of the grid box with their tributary areas (lengths in 2D, 1 in 1D), for the flux.
+struct FaceNodes {
+  std::vector<Index> node;
+  std::vector<Real> area;  ///< m^2 (m in 2D, 1 in 1D)
+};
+
+template <int Dim>
+struct ConductionSetup {
+  std::vector<ThermalBody<Dim>> bodies;  ///< one per body of the scene
+  std::string source = "0";              ///< W/m^3, expression of x, y, z, t
+  std::array<std::optional<std::string>, 2 * Dim> face_temperature, face_flux;
+  std::vector<std::string> region_temperature;  ///< K, expressions of t; particle field "thermal_region"
+  bool total_lagrangian = false;                ///< TLMPM: weights at the reference positions
+};
+
+template <int Dim, class Shape>
+class HeatConduction final : public Module<Dim> {
+ public:
+  HeatConduction(ConductionSetup<Dim> setup, const GridGeometry<Dim>& g) : s_(std::move(setup)), source_(s_.source) {
+    for (int f = 0; f < 2 * Dim; ++f) {
+      if (s_.face_temperature[f])
+        face_temperature_[f] = std::make_unique<Expression>(*s_.face_temperature[f], std::vector<std::string>{"t"});
+      if (s_.face_flux[f])
+        face_flux_[f] = std::make_unique<Expression>(*s_.face_flux[f], std::vector<std::string>{"t"});
+      if (face_temperature_[f] || face_flux_[f]) faces_[f] = face_nodes(g, f);
+    }
+    for (const auto& r : s_.region_temperature) region_.emplace_back(r, std::vector<std::string>{"t"});
+    for (const auto& b : s_.bodies) expands_ = expands_ || b.expansion != 0;
+    const Index n = g.node_count();
+    C_.assign(n, 0);
+    CT_.assign(n, 0);
+    Q_.assign(n, 0);
+    T_.assign(n, 0);
+    Tt_.assign(n, 0);
+    dT_.resize(s_.bodies.size());
+  }
+
+  std::string_view name() const override { return "heat_conduction"; }
+  unsigned phases() const override { return phase_after_p2g | (expands_ ? phase_after_g2p | phase_after_stress : 0u); }
+  std::string_view time_step_bound() const override {
+    return "heat conduction (diffusion bound h^2 rho c / (2 dim k))";
+  }
+
+  /// min over bodies of h_min^2 rho c / (2 Dim k_max): the explicit diffusion limit (review §5.3.3; with the
+  /// errata: the paper's 1D step 8e-5 exceeds h^2/(2k) = 5e-5 for 100 cells).
+  Real stable_time_step(const std::vector<Body<Dim>>&) const override {
+    Real dt = std::numeric_limits<Real>::infinity();
+    for (const auto& b : s_.bodies)
+      if (b.max_conductivity > 0)
+        dt = std::min(dt, h_min_ * h_min_ * b.density * b.specific_heat / (2 * Dim * b.max_conductivity));
+    return dt;
+  }
+  void set_cell_size(const GridGeometry<Dim>& g) { h_min_ = g.h.minCoeff(); }
+
+  /// Thermal energy sum m c (T - T_ref), J.
+  void add_energy(const std::vector<Body<Dim>>& bodies, EnergyBalance& e) const override {
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const auto& p = bodies[b].particles;
+      const auto& T = p.template field<Real>("temperature");
+      const auto& tb = s_.bodies[b];
+      for (Index i = 0; i < p.size(); ++i)
+        e.thermal += p.mass[i] * tb.specific_heat * (T[i] - tb.reference_temperature);
+    }
+  }
+
+  /// The grid temperature T_I^{t+dt} of the last step (K; zero on nodes without heat capacity).
+  const std::vector<Real>& grid_temperature() const { return T_; }
+
+  void after_p2g(StepContext<Dim>& ctx) override {
+    auto& grid = ctx.grid;
+    const auto& g = grid.geometry;
+    const Real t1 = ctx.time + ctx.dt;
+    if (!flux_ready_) {  // the first step: q_p from the initial temperature field
+      hold_particles(ctx.bodies, ctx.time);
+      map_temperature(ctx, false);
+      flux_from_grid(ctx);
+      flux_ready_ = true;
+    }
+    hold_particles(ctx.bodies, ctx.time);
+    map_temperature(ctx, true);  // C_I, T_I^t and Q_I
+    for (int f = 0; f < 2 * Dim; ++f)
+      if (face_flux_[f]) {
+        const Real q = (*face_flux_[f])(0, 0, 0, ctx.time);
+        for (std::size_t k = 0; k < faces_[f].node.size(); ++k) Q_[faces_[f].node[k]] -= q * faces_[f].area[k];
+      }
+    // T~_I = T_I + dt Q_I / C_I; Dirichlet nodes: T_I = T~_I = T*
+    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+      for (Index n = r.begin(); n != r.end(); ++n) Tt_[n] = C_[n] > 0 ? T_[n] + ctx.dt * Q_[n] / C_[n] : T_[n];
+    });
+    hold_nodes(T_, ctx.time);
+    hold_nodes(Tt_, t1);
+    // T_p += sum phi (T~_I - T_I), then the second mapping gives T_I^{t+dt}
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_particles(ctx.bodies[b], b, g, t1);
+    map_temperature(ctx, false);
+    flux_from_grid(ctx);
+    grid.node_fields["temperature"] = T_;
+  }
+
+  /// Thermal expansion (eq. 5.26): L -= (alpha dT / dt) I before the stress update of linear_elastic bodies.
+  void after_g2p(StepContext<Dim>& ctx) override {
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
+      const Real alpha = s_.bodies[b].expansion;
+      if (alpha == 0) continue;
+      auto& L = ctx.bodies[b].velocity_gradient;
+      const auto& dT = dT_[b];
+      for (std::size_t i = 0; i < L.size(); ++i)
+        for (int d = 0; d < Dim; ++d) L[i](d, d) -= alpha * dT[i] / ctx.dt;
+    }
+  }
+  /// The thermal strain the in-plane velocity gradient cannot carry: with eps^T = alpha dT I in 3D, the
+  /// linear law gives lambda tr(eps^T) over all three axes and 2 mu eps^T on the out-of-plane ones.
+  void after_stress(StepContext<Dim>& ctx) override {
+    if constexpr (Dim < 3) {
+      for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
+        const auto& tb = s_.bodies[b];
+        if (tb.expansion == 0) continue;
+        auto& p = ctx.bodies[b].particles;
+        const auto& dT = dT_[b];
+        for (Index i = 0; i < p.size(); ++i) {
+          const Real e = tb.expansion * dT[i];
+          for (int k = 0; k < Dim; ++k) p.stress[i].c[k] -= (3 - Dim) * tb.lambda * e;
+          for (int k = Dim; k < 3; ++k) p.stress[i].c[k] -= ((3 - Dim) * tb.lambda + 2 * tb.mu) * e;
+        }
+      }
+    }
+  }
+
+ private:
+  static FaceNodes face_nodes(const GridGeometry<Dim>& g, int face) {
+    const int axis = face / 2;
+    const int layer = face % 2 == 0 ? 0 : g.nodes[axis] - 1;
+    FaceNodes f;
+    for (Index n = 0; n < g.node_count(); ++n) {
+      const auto ijk = g.node_indices(n);
+      if (ijk[axis] != layer) continue;
+      Real area = 1;
+      for (int d = 0; d < Dim; ++d)
+        if (d != axis) area *= (ijk[d] == 0 || ijk[d] == g.nodes[d] - 1) ? 0.5 * g.h[d] : g.h[d];
+      f.node.push_back(n);
+      f.area.push_back(area);
+    }
+    return f;
+  }
+
+  const VecU<Dim>* positions(const ParticleSet<Dim>& p) const {
+    return s_.total_lagrangian ? p.template field<VecU<Dim>>("reference_position").data() : p.x.data();
+  }
+
+  void hold_nodes(std::vector<Real>& T, Real t) const {
+    for (int f = 0; f < 2 * Dim; ++f)
+      if (face_temperature_[f]) {
+        const Real value = (*face_temperature_[f])(0, 0, 0, t);
+        for (Index n : faces_[f].node) T[n] = value;
+      }
+  }
+
+  /// Particles in a fixed-temperature region take its temperature at time t.
+  void hold_particles(std::vector<Body<Dim>>& bodies, Real t) const {
+    if (region_.empty()) return;
+    std::vector<Real> value;
+    for (const auto& r : region_) value.push_back(r(0, 0, 0, t));
+    for (auto& body : bodies) {
+      auto& p = body.particles;
+      const auto& region = p.template field<int>("thermal_region");
+      auto& T = p.template field<Real>("temperature");
+      for (Index i = 0; i < p.size(); ++i)
+        if (region[i] >= 0) T[i] = value[static_cast<std::size_t>(region[i])];
+    }
+  }
+
+  /// C_I and T_I = sum phi (m c T) / C_I; with `heat_flow`, also Q_I = sum V (gamma* phi + q . grad phi).
+  void map_temperature(StepContext<Dim>& ctx, bool heat_flow) {
+    auto& grid = ctx.grid;
+    const auto& g = grid.geometry;
+    std::fill(C_.begin(), C_.end(), 0);
+    std::fill(CT_.begin(), CT_.end(), 0);
+    if (heat_flow) std::fill(Q_.begin(), Q_.end(), 0);
+    const bool constant_source = source_.is_constant();
+    const Real source_value = source_.constant_value();
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
+      auto& body = ctx.bodies[b];
+      const auto& p = body.particles;
+      const Real c = s_.bodies[b].specific_heat;
+      const VecU<Dim>* x = positions(p);
+      const auto& T = p.template field<Real>("temperature");
+      const auto& q = p.template field<VecU<Dim>>("heat_flux");
+      // gamma* per particle, evaluated serially (an Expression is not thread-safe), only when it varies
+      if (heat_flow && !constant_source) {
+        gamma_.resize(p.size());
+        for (Index i = 0; i < p.size(); ++i) {
+          double xyz[3] = {0, 0, 0};
+          for (int d = 0; d < Dim; ++d) xyz[d] = p.x[i][d];
+          gamma_[i] = source_.evaluate(xyz, ctx.time);
+        }
+      }
+      for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+        Stencil<Dim, Shape> st;
+        const ParticleDomain<Dim, Shape> domain(p);
+        for (Index k = 0; k < count; ++k) {
+          const Index i = index[k];
+          st.compute(x[i], g, domain(i));
+          const Real mc = p.mass[i] * c, mcT = mc * T[i];
+          for (int a = 0; a < st.count; ++a) {
+            C_[st.node[a]] += st.w[a] * mc;
+            CT_[st.node[a]] += st.w[a] * mcT;
+          }
+          if (!heat_flow) continue;
+          const Mat<Dim> F = p.F[i];
+          const Real J = F.determinant();
+          // current volume and flux; TLMPM: reference volume and nominal flux J F^-1 q
+          Real V = p.volume0[i] * J;
+          Vec<Dim> qv = q[i];
+          if (s_.total_lagrangian) {
+            V = p.volume0[i];
+            qv = J * (F.inverse() * qv);
+          }
+          const Real src = V * (constant_source ? source_value : gamma_[i]);
+          for (int a = 0; a < st.count; ++a) {
+            Real flow = src * st.w[a];
+            for (int d = 0; d < Dim; ++d) flow += V * qv[d] * st.grad[a][d];
+            Q_[st.node[a]] += flow;
+          }
+        }
+      });
+    }
+    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+      for (Index n = r.begin(); n != r.end(); ++n) T_[n] = C_[n] > 0 ? CT_[n] / C_[n] : 0;
+    });
+    if (!heat_flow) hold_nodes(T_, ctx.time + ctx.dt);
+  }
+
+  /// T_p += sum phi (T~_I - T_I); keeps the increment for the thermal expansion.
+  void update_particles(Body<Dim>& body, std::size_t b, const GridGeometry<Dim>& g, Real t1) {
+    auto& p = body.particles;
+    auto& T = p.template field<Real>("temperature");
+    const VecU<Dim>* x = positions(p);
+    auto& dT = dT_[b];
+    dT.resize(p.size());
+    const int* region = region_.empty() ? nullptr : p.template field<int>("thermal_region").data();
+    std::vector<Real> held;
+    for (const auto& r : region_) held.push_back(r(0, 0, 0, t1));
+    tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
+      Stencil<Dim, Shape> st;
+      const ParticleDomain<Dim, Shape> domain(p);
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        st.compute(x[i], g, domain(i));
+        Real d = 0;
+        for (int a = 0; a < st.count; ++a) d += st.w[a] * (Tt_[st.node[a]] - T_[st.node[a]]);
+        if (region && region[i] >= 0) d = held[static_cast<std::size_t>(region[i])] - T[i];
+        T[i] += d;
+        dT[i] = d;
+      }
+    });
+  }
+
+  /// q_p = -k grad T, grad T = sum grad phi_I T_I^{t+dt} (TLMPM: F^-T grad_0 T).
+  void flux_from_grid(StepContext<Dim>& ctx) {
+    const auto& g = ctx.grid.geometry;
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
+      auto& p = ctx.bodies[b].particles;
+      auto& q = p.template field<VecU<Dim>>("heat_flux");
+      const VecU<Dim>* x = positions(p);
+      const Mat<Dim> k = s_.bodies[b].conductivity;
+      tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
+        Stencil<Dim, Shape> st;
+        const ParticleDomain<Dim, Shape> domain(p);
+        for (Index i = r.begin(); i != r.end(); ++i) {
+          st.compute(x[i], g, domain(i));
+          Vec<Dim> grad = Vec<Dim>::Zero();
+          for (int a = 0; a < st.count; ++a)
+            for (int d = 0; d < Dim; ++d) grad[d] += st.grad[a][d] * T_[st.node[a]];
+          if (s_.total_lagrangian) grad = Mat<Dim>(p.F[i]).inverse().transpose() * grad;
+          q[i] = -(k * grad);
+        }
+      });
+    }
+  }
+
+  ConductionSetup<Dim> s_;
+  Expression source_;
+  std::array<std::unique_ptr<Expression>, 2 * Dim> face_temperature_, face_flux_;
+  std::array<FaceNodes, 2 * Dim> faces_;
+  std::vector<Expression> region_;
+  bool expands_ = false;
+  bool flux_ready_ = false;
+  Real h_min_ = 1;
+  std::vector<Real> C_, CT_, Q_, T_, Tt_;  ///< per node: J/K, J, W, K, K
+  std::vector<std::vector<Real>> dT_;      ///< per body and particle: temperature increment of the step, K
+  std::vector<Real> gamma_;                ///< scratch: W/m^3 per particle
+};
+
+}  // namespace mpm::thermal
