@@ -33,6 +33,7 @@ inline PlasticityConstants constants(const std::map<std::string, double>& p) {
   c.specific_heat = get(p, "specific_heat", 0);
   c.taylor_quinney = get(p, "taylor_quinney_coefficient", 0.9);
   c.room_temperature = get(p, "room_temperature", 293.15);
+  c.thermal_expansion = get(p, "thermal_expansion", 0);
   c.softening = p.count("melting_temperature") != 0;
   c.melting_temperature = get(p, "melting_temperature", 0);
   c.viscosity_linear = get(p, "artificial_viscosity_linear", 0);

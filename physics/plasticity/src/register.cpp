@@ -52,6 +52,9 @@ std::vector<ParameterSpec> shared_parameters(bool johnson_cook) {
       with_default("taylor_quinney_coefficient", "-", "fraction chi of plastic work turned into heat (eq. B.13)", 0.9,
                    0.0, true, 1.0, true),
       with_default("room_temperature", "K", "reference (and initial) temperature T_r", 293.15, 0.0, false),
+      optional("thermal_expansion", "1/K",
+               "linear thermal expansion coefficient alpha: the EOS uses J exp(-3 alpha (T - T_r)) (needs "
+               "specific_heat)"),
       with_default("artificial_viscosity_linear", "-", "linear artificial bulk viscosity coefficient c_1", 0.0, 0.0),
       with_default("artificial_viscosity_quadratic", "-", "quadratic artificial bulk viscosity coefficient c_2", 0.0,
                    0.0),
@@ -65,6 +68,10 @@ std::vector<ParameterSpec> shared_parameters(bool johnson_cook) {
 }
 
 std::optional<ParameterError> check_shared(const std::map<std::string, double>& p) {
+  if (p.count("thermal_expansion") && !p.count("specific_heat"))
+    return ParameterError{"thermal_expansion",
+                          "thermal expansion needs the temperature, which is only tracked with specific_heat "
+                          "(J/(kg K)); give specific_heat too"};
   for (const char* key : {"hugoniot_slope", "gruneisen_gamma"})
     if (p.count(key) && !p.count("bulk_sound_speed"))
       return ParameterError{key, fmt::format("{} belongs to the Mie-Gruneisen equation of state, which "

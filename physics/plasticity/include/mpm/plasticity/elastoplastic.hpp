@@ -65,10 +65,13 @@ struct PlasticityConstants {
   Real specific_heat = 0;          ///< c, J/(kg K)
   Real taylor_quinney = 0.9;       ///< chi, -
   Real room_temperature = 293.15;  ///< T_r, K
-  bool softening = false;          ///< Johnson-Cook thermal softening (needs thermal)
-  Real melting_temperature = 0;    ///< T_m, K
-  Real viscosity_linear = 0;       ///< c_1, -
-  Real viscosity_quadratic = 0;    ///< c_2, -
+  /// alpha, 1/K: the EOS sees the mechanical volume ratio J exp(-3 alpha (T - T_r)) (eq. 5.26; isotropic, so
+  /// the deviatoric rate is unchanged). 0 = no thermal expansion.
+  Real thermal_expansion = 0;
+  bool softening = false;        ///< Johnson-Cook thermal softening (needs thermal)
+  Real melting_temperature = 0;  ///< T_m, K
+  Real viscosity_linear = 0;     ///< c_1, -
+  Real viscosity_quadratic = 0;  ///< c_2, -
 };
 
 template <class Flow, class Eos>
@@ -149,7 +152,9 @@ struct Elastoplastic {
     }
 
     const Real e = c.thermal ? c.specific_heat * c.density * (T - c.room_temperature) : Real(0);
-    Real p = c.eos.pressure(J, e);
+    const Real J_mech =
+        c.thermal_expansion != 0 ? J * std::exp(-3 * c.thermal_expansion * (T - c.room_temperature)) : J;
+    Real p = c.eos.pressure(J_mech, e);
     if (p < 0) p *= 1 - D;
     Real q = 0;
     if (tr_d < 0 && (c.viscosity_linear > 0 || c.viscosity_quadratic > 0)) {
