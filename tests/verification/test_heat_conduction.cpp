@@ -7,6 +7,9 @@
 #include <cstdio>
 
 #include "heat_conduction.hpp"
+#include "mpm/app/modules.hpp"
+#include "mpm/app/scene_builder.hpp"
+#include "mpm/scene_loader.hpp"
 
 namespace mpm::verification {
 namespace {
@@ -84,6 +87,36 @@ TEST(HeatConduction, Plate2dWithTheBoundaryOnTheParticles) {
   EXPECT_GT(coarse.probe, 40.354);
   EXPECT_LT(std::abs(fine.probe - 40.354), std::abs(coarse.probe - 40.354));
 }
+
+TEST(HeatConduction, Example10PlateGivesTheNumbersOfItsReadme) {
+  // examples/10_heat_plate/plate.yaml (20 x 20 cells, 4 PPC): centre 40.124 against the exact 40.354.
+  app::register_modules();
+  auto sim = app::build_simulation<2>(load_scene(std::string(MPM_SOURCE_DIR) + "/examples/10_heat_plate/plate.yaml"));
+  EXPECT_EQ(sim->particle_count(), 1600);
+  EXPECT_NE(sim->time_step_limiter().find("heat conduction"), std::string::npos);
+  sim->run();
+  const auto& T = sim->grid().node_fields.at("temperature");
+  const double centre = T[10 + 21 * 10];
+  std::printf("[ measured ] example 10: centre %.4f (exact %.4f)\n", centre, heat_plate_exact(0.5, 0.5, 0.05));
+  EXPECT_NEAR(centre, 40.124, 0.01);
+}
+
+#ifdef MPM_WITH_PLASTICITY
+TEST(HeatConduction, Example11TaylorSceneSharesTheTemperatureWithPlasticity) {
+  // examples/11_thermal_taylor/tlmpm.yaml: one temperature field, from room temperature; the CFL bound
+  // governs (the diffusion bound h^2 rho c/(6k) = 3.7e-7 s is above h/c = 1.0e-7 s).
+  app::register_modules();
+  auto sim =
+      app::build_simulation<3>(load_scene(std::string(MPM_SOURCE_DIR) + "/examples/11_thermal_taylor/tlmpm.yaml"));
+  EXPECT_EQ(sim->particle_count(), 9180);
+  const auto& p = sim->bodies()[0].particles;
+  ASSERT_TRUE(p.has_field("temperature") && p.has_field("heat_flux"));
+  EXPECT_DOUBLE_EQ(p.field<Real>("temperature")[0], 293.15);
+  EXPECT_EQ(sim->time_step_limiter(), "CFL (eq. 2.73)");
+  const double diffusion = 0.5e-3 * 0.5e-3 * 8940 * 383 / (6 * 386.0);
+  EXPECT_NEAR(sim->modules().front()->stable_time_step(sim->bodies()), diffusion, 1e-12 * diffusion);
+}
+#endif
 
 }  // namespace
 }  // namespace mpm::verification
