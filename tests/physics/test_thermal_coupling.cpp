@@ -122,6 +122,67 @@ TEST(ThermalExpansion, PlasticModelConfinedReachesMinusThreeKAlphaDeltaT) {
                      "{type: box, min: [0], max: [1]}");
 }
 
+/// Heat in through a face and from a source, nothing out: the heat stored grows at exactly the rate put in
+/// (eq. 5.21: Q_ext = sum V gamma* phi - sum q* A on the face nodes).
+TEST(ThermalBoundary, FluxAndSourceAddHeatAtTheirRates) {
+  app::register_modules();
+  const std::string yaml =
+      "dimension: 2\n"
+      "grid: {origin: [0, 0], extent: [1, 0.5], cell_size: 0.125}\n"
+      "materials: {m: {model: linear_elastic, density: 2, youngs_modulus: 1.0e-9, poisson_ratio: 0, specific_heat: 3,\n"
+      "                thermal_conductivity: 0.5, room_temperature: 10}}\n"
+      "bodies: [{material: m, shape: {type: box, min: [0, 0], max: [1, 0.5]}, particles_per_cell: 2}]\n"
+      "solver: {scheme: musl, cfl: 0.5, end_time: 0.2}\n"
+      "thermal:\n"
+      "  source: 4\n"                       // W/m^3 over 0.5 m^2 (per m): 2 W/m
+      "  boundary: {x_max: {flux: -7}}\n";  // W/m^2 inward over a 0.5 m face: 3.5 W/m
+  auto sim = app::build_simulation<2>(parse_scene(yaml, "flux.yaml"));
+  sim->run();
+  const double expected = (4 * 0.5 + 7 * 0.5) * sim->time();  // J per m out of plane
+  std::printf("[ measured ] heat stored %.12f J/m, put in %.12f J/m\n", sim->energy().thermal, expected);
+  EXPECT_NEAR(sim->energy().thermal, expected, 1e-9 * expected);
+  // the flux made x_max the hot side
+  const auto& T = sim->grid().node_fields.at("temperature");
+  EXPECT_GT(T[8], T[0]);
+}
+
+/// k = diag(1, 0): heat flows along x only, so a 2D plate held at T = 0 and 1 on its x faces is the 1D bar of
+/// eq. 5.27 on every row (the series at t = 0.05, to the 1D accuracy at 40 cells).
+TEST(ThermalBoundary, AnisotropicConductivityConductsAlongItsAxisOnly) {
+  app::register_modules();
+  const std::string yaml =
+      "dimension: 2\n"
+      "grid: {origin: [0, 0], extent: [1, 0.1], cell_size: 0.025}\n"
+      "materials: {m: {model: linear_elastic, density: 1, youngs_modulus: 1.0e-9, poisson_ratio: 0, specific_heat: 1,\n"
+      "                thermal_conductivity_xx: 1}}\n"
+      "bodies: [{material: m, shape: {type: box, min: [0, 0], max: [1, 0.1]}, particles_per_cell: 2}]\n"
+      "solver: {scheme: usl, cfl: 0.8, end_time: 0.05}\n"
+      "thermal:\n"
+      "  initial_temperature: 0\n"
+      "  boundary: {x_min: {temperature: 0}, x_max: {temperature: 1}}\n";
+  auto sim = app::build_simulation<2>(parse_scene(yaml, "anisotropic.yaml"));
+  // the bound uses k_max = 1: h^2 rho c / (2 dim k) = 0.025^2 / 4
+  EXPECT_NEAR(sim->stable_time_step(), 0.025 * 0.025 / 4, 1e-15);
+  sim->run();
+  const auto& T = sim->grid().node_fields.at("temperature");
+  const auto& g = sim->grid().geometry;
+  double worst = 0, row_spread = 0;
+  for (Index n = 0; n < g.node_count(); ++n) {
+    const auto ij = g.node_indices(n);
+    const double x = ij[0] * 0.025;
+    double exact = x;  // eq. 5.27, T0 = 0, T1 = 1
+    for (int k = 1; k <= 400; ++k) {
+      const double a = k * 3.141592653589793;
+      exact += 2 * (k % 2 ? -1.0 : 1.0) / a * std::exp(-a * a * sim->time()) * std::sin(a * x);
+    }
+    worst = std::max(worst, std::abs(T[n] - exact));
+    row_spread = std::max(row_spread, std::abs(T[n] - T[ij[0]]));  // against the node of row 0
+  }
+  std::printf("[ measured ] k = diag(1, 0): max |T - T_1D exact| = %.3e, spread across rows %.3e\n", worst, row_spread);
+  EXPECT_LT(worst, 6e-4);  // measured 3.6e-4
+  EXPECT_LT(row_spread, 1e-12);
+}
+
 /// A steel bar (J2, perfectly plastic, sigma_y = 400 MPa) compressed in uniaxial strain by its x_max face moving
 /// at 5 m/s: plastic flow heats it by chi sigma_f d eps_p / (rho c) (eq. B.13, the plasticity module), and
 /// conduction (the thermal module) moves that heat without creating or losing any (no held temperature, insulated

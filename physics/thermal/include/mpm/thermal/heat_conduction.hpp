@@ -67,7 +67,6 @@ class HeatConduction final : public Module<Dim> {
     Q_.assign(n, 0);
     T_.assign(n, 0);
     Tt_.assign(n, 0);
-    dT_.resize(s_.bodies.size());
   }
 
   std::string_view name() const override { return "heat_conduction"; }
@@ -125,7 +124,7 @@ class HeatConduction final : public Module<Dim> {
     hold_nodes(T_, ctx.time);
     hold_nodes(Tt_, t1);
     // T_p += sum phi (T~_I - T_I), then the second mapping gives T_I^{t+dt}
-    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_particles(ctx.bodies[b], b, g, t1);
+    for (auto& body : ctx.bodies) update_particles(body, g, t1);
     map_temperature(ctx, false);
     flux_from_grid(ctx);
     grid.node_fields["temperature"] = T_;
@@ -137,7 +136,7 @@ class HeatConduction final : public Module<Dim> {
       const Real alpha = s_.bodies[b].expansion;
       if (alpha == 0) continue;
       auto& L = ctx.bodies[b].velocity_gradient;
-      const auto& dT = dT_[b];
+      const auto& dT = increment(ctx.bodies[b].particles);
       for (std::size_t i = 0; i < L.size(); ++i)
         for (int d = 0; d < Dim; ++d) L[i](d, d) -= alpha * dT[i] / ctx.dt;
     }
@@ -150,7 +149,7 @@ class HeatConduction final : public Module<Dim> {
         const auto& tb = s_.bodies[b];
         if (tb.expansion == 0) continue;
         auto& p = ctx.bodies[b].particles;
-        const auto& dT = dT_[b];
+        const auto& dT = increment(p);
         for (Index i = 0; i < p.size(); ++i) {
           const Real e = tb.expansion * dT[i];
           for (int k = 0; k < Dim; ++k) p.stress[i].c[k] -= (3 - Dim) * tb.lambda * e;
@@ -175,6 +174,13 @@ class HeatConduction final : public Module<Dim> {
       f.area.push_back(area);
     }
     return f;
+  }
+
+  /// The temperature change of the last thermal step per particle (K), for the expansion: a particle field,
+  /// so that it follows reordering and snapshots (USF runs the stress update before the thermal step: it
+  /// then sees the previous step's change, zero at the first step).
+  static std::vector<Real>& increment(ParticleSet<Dim>& p) {
+    return p.template add_field<Real>("temperature_increment", 0);
   }
 
   const VecU<Dim>* positions(const ParticleSet<Dim>& p) const {
@@ -264,13 +270,13 @@ class HeatConduction final : public Module<Dim> {
     if (!heat_flow) hold_nodes(T_, ctx.time + ctx.dt);
   }
 
-  /// T_p += sum phi (T~_I - T_I); keeps the increment for the thermal expansion.
-  void update_particles(Body<Dim>& body, std::size_t b, const GridGeometry<Dim>& g, Real t1) {
+  /// T_p += sum phi (T~_I - T_I); keeps the increment for the thermal expansion (field
+  /// "temperature_increment", only when a body expands).
+  void update_particles(Body<Dim>& body, const GridGeometry<Dim>& g, Real t1) {
     auto& p = body.particles;
     auto& T = p.template field<Real>("temperature");
     const VecU<Dim>* x = positions(p);
-    auto& dT = dT_[b];
-    dT.resize(p.size());
+    Real* dT = expands_ ? increment(p).data() : nullptr;
     const int* region = region_.empty() ? nullptr : p.template field<int>("thermal_region").data();
     std::vector<Real> held;
     for (const auto& r : region_) held.push_back(r(0, 0, 0, t1));
@@ -283,7 +289,7 @@ class HeatConduction final : public Module<Dim> {
         for (int a = 0; a < st.count; ++a) d += st.w[a] * (Tt_[st.node[a]] - T_[st.node[a]]);
         if (region && region[i] >= 0) d = held[static_cast<std::size_t>(region[i])] - T[i];
         T[i] += d;
-        dT[i] = d;
+        if (dT) dT[i] = d;
       }
     });
   }
@@ -320,7 +326,6 @@ class HeatConduction final : public Module<Dim> {
   bool flux_ready_ = false;
   Real h_min_ = 1;
   std::vector<Real> C_, CT_, Q_, T_, Tt_;  ///< per node: J/K, J, W, K, K
-  std::vector<std::vector<Real>> dT_;      ///< per body and particle: temperature increment of the step, K
   std::vector<Real> gamma_;                ///< scratch: W/m^3 per particle
 };
 
