@@ -226,4 +226,27 @@ TEST(Cli, StabilityGuardStopsTheRunAndWritesTheLastGoodState) {
   fs::remove_all(dir);
 }
 
+#ifdef MPM_WITH_THERMAL
+TEST(Cli, ThermalSceneSaysWhichTimeStepBoundGovernsAndWritesTheHeat) {
+  // examples/10_heat_plate: the diffusion bound governs and the log says so; the energy log has the thermal
+  // energy, the particle files the temperature and heat flux, the grid files the nodal temperature.
+  const auto dir = scratch("thermal");
+  const auto scene = fs::path(MPM_SOURCE_DIR) / "examples" / "10_heat_plate" / "plate.yaml";
+  const auto check = mpm("check " + scene.string(), dir);
+  EXPECT_EQ(check.status, 0) << check.err;
+  EXPECT_NE(check.out.find("heat conduction (diffusion bound"), std::string::npos) << check.out;
+  const auto r = mpm("run " + scene.string() + " -o " + (dir / "out").string(), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string log = r.out + r.err;  // the run log goes to the error stream
+  EXPECT_NE(log.find("time step: 0.0005 s, stable bound 0.000625 s governed by heat conduction"), std::string::npos)
+      << log;
+  std::ifstream energy(dir / "out" / "energy.csv");
+  std::string header;
+  std::getline(energy, header);
+  EXPECT_NE(header.find("plastic_work,thermal_energy"), std::string::npos) << header;
+  EXPECT_TRUE(fs::exists(dir / "out" / "particles_grid_000005.vti"));
+  fs::remove_all(dir);
+}
+#endif
+
 }  // namespace
