@@ -167,12 +167,10 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   if (settings.fixed_dt) {
     const Real bound = sim->stable_time_step();
     if (*settings.fixed_dt > bound)
-      throw SceneError(
-          scene.solver.dt_where, "solver.dt",
-          fmt::format("dt = {:.6g} s is larger than the stable time step {:.6g} s of the initial state "
-                      "({}); use dt <= {:.6g} or `cfl` instead",
-                      *settings.fixed_dt, bound,
-                      sim->modules().empty() ? "CFL bound h / (c + |v|), eq. 2.73" : sim->time_step_limiter(), bound));
+      throw SceneError(scene.solver.dt_where, "solver.dt",
+                       fmt::format("dt = {:.6g} s is larger than the stable time step {:.6g} s of the initial state "
+                                   "({}); use dt <= {:.6g} or `cfl` instead",
+                                   *settings.fixed_dt, bound, sim->time_step_limiter(), bound));
   }
   return sim;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -23,7 +24,10 @@ Simulation<Dim>::Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<
       boundary_(std::move(boundary)),
       settings_(settings) {
   scheme_->initialize(bodies_, grid_);
-  for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
+  for (auto& b : bodies_) {
+    wave_speed_.merge(b.material->wave_speed_bound(b.particles));
+    kinematic_viscosity_ = std::max(kinematic_viscosity_, b.material->kinematic_viscosity());
+  }
   take_snapshot();
 }
 
@@ -40,6 +44,10 @@ Real Simulation<Dim>::stable_time_step() const {
   const auto& h = grid_.geometry.h;
   for (int d = 0; d < Dim; ++d)
     if (wave_speed_.max_speed[d] > 0) dt = std::min(dt, h[d] / wave_speed_.max_speed[d]);  // eq. 2.73
+  if (kinematic_viscosity_ > 0) {  // explicit viscous diffusion: dt <= h^2 / (2 Dim nu)
+    const Real h_min = h.minCoeff();
+    dt = std::min(dt, h_min * h_min / (2 * Dim * kinematic_viscosity_));
+  }
   for (const auto& m : hooks_.all()) dt = std::min(dt, m->stable_time_step(bodies_));
   return dt;
 }
@@ -47,10 +55,15 @@ Real Simulation<Dim>::stable_time_step() const {
 template <int Dim>
 std::string Simulation<Dim>::time_step_limiter() const {
   Real dt = std::numeric_limits<Real>::infinity();
-  std::string limiter = "CFL (eq. 2.73)";
+  std::string limiter = "CFL bound h / (c + |v|), eq. 2.73";
   const auto& h = grid_.geometry.h;
   for (int d = 0; d < Dim; ++d)
     if (wave_speed_.max_speed[d] > 0) dt = std::min(dt, h[d] / wave_speed_.max_speed[d]);
+  if (kinematic_viscosity_ > 0)
+    if (const Real h_min = h.minCoeff(), bound = h_min * h_min / (2 * Dim * kinematic_viscosity_); bound < dt) {
+      dt = bound;
+      limiter = "viscous diffusion h^2 / (2 dim nu)";
+    }
   for (const auto& m : hooks_.all())
     if (const Real bound = m->stable_time_step(bodies_); bound < dt) {
       dt = bound;
