@@ -93,6 +93,24 @@ TEST(Cli, CheckValidScene) {
   fs::remove_all(dir);
 }
 
+#if defined(MPM_WITH_PLASTICITY) && defined(MPM_WITH_FLUIDS)
+// Every scene shipped in examples/ is valid (built, not run), so that a change of the scene format cannot
+// leave an example behind.
+TEST(Cli, EveryExampleSceneIsValid) {
+  int checked = 0;
+  for (const auto& folder : fs::directory_iterator(fs::path(MPM_SOURCE_DIR) / "examples")) {
+    if (!folder.is_directory()) continue;
+    for (const auto& entry : fs::directory_iterator(folder.path())) {
+      if (entry.path().extension() != ".yaml") continue;
+      const auto r = mpm("check " + entry.path().string(), folder.path());
+      EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.err;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 15);
+}
+#endif
+
 TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
   int checked = 0;
   // bad_scenes: refused by the loader; bad_built_scenes: valid YAML refused when the simulation is built.
