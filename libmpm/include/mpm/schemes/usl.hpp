@@ -29,7 +29,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const Vec<Dim> upper = g.upper();
-    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
     Stencil<Dim, Shape> st;
