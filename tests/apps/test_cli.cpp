@@ -104,6 +104,9 @@ TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
           entry.path().filename() == "output_temperature_without_specific_heat.yaml")
         continue;
 #endif
+#ifndef MPM_WITH_CONTACT  // fixtures of the contact module's section, an unknown key without it
+      if (entry.path().filename().string().rfind("contact_", 0) == 0) continue;
+#endif
       files.push_back(entry.path());
     }
   for (const auto& file : files) {
