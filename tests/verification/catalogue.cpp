@@ -16,6 +16,9 @@
 #ifdef MPM_WITH_PLASTICITY
 #include "plasticity_cases.hpp"
 #endif
+#ifdef MPM_WITH_CONTACT
+#include "contact_cases.hpp"
+#endif
 
 namespace mpm::verification {
 namespace {
@@ -187,6 +190,9 @@ std::vector<VerificationCase> catalogue(bool quick, int refinements) {
   // Optional modules register their cases here, one explicit call each (see catalogue.hpp).
 #ifdef MPM_WITH_PLASTICITY
   add_plasticity_cases(list, quick, refinements);
+#endif
+#ifdef MPM_WITH_CONTACT
+  add_contact_cases(list, quick, refinements);
 #endif
   return list;
 }
