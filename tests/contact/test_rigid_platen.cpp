@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "contact_scene_support.hpp"
+#include "mpm/scene_loader.hpp"
 
 namespace mpm::test {
 namespace {
@@ -78,6 +79,29 @@ TEST(RigidPlaten, ReactionFollowsTheElasticStiffness) {
   std::printf("[ measured ] reactions over the last 0.01 s: platen %.2f N/m, floor %.2f N/m\n", fy_platen, fy_floor);
   EXPECT_GT(fy_platen, 0.9 * expected);  // the block pushes the platen up
   EXPECT_LT(fy_floor, -0.9 * expected);  // and the floor down
+}
+
+}  // namespace
+}  // namespace mpm::test
+
+namespace mpm::test {
+namespace {
+
+// examples/09_ring_crush builds (the ring, two rigid platens, the contact module) and its platens move with
+// their prescribed velocities from the first steps (the full run is the example's, see its README).
+TEST(RingCrushExample, BuildsAndMovesThePlatens) {
+  app::register_modules();
+  SceneDescription scene =
+      load_scene(std::filesystem::path(MPM_SOURCE_DIR) / "examples" / "09_ring_crush" / "scene.yaml");
+  scene.output.directory = (std::filesystem::path(MPM_BINARY_DIR) / "tests" / "ring_crush_example_output").string();
+  auto sim = app::build_simulation<2>(scene);
+  ASSERT_NE(contact_module(*sim), nullptr);
+  ASSERT_EQ(sim->bodies().size(), 3u);
+  const double dt = sim->next_time_step();
+  for (int i = 0; i < 10; ++i) sim->advance(dt);
+  EXPECT_NEAR(body_velocity(sim->bodies()[1])[1], -5.0, 1e-12);     // top platen
+  EXPECT_NEAR(body_velocity(sim->bodies()[2])[1], 5.0, 1e-12);      // bottom platen
+  EXPECT_NEAR(body_velocity(sim->bodies()[0]).norm(), 0.0, 1e-12);  // the ring is not touched yet (gap 0.17 mm)
 }
 
 }  // namespace
