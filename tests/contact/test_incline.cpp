@@ -98,6 +98,42 @@ TEST(InclineBlock, StaysWhenMuExceedsTanTheta) {
   }
 }
 
+// The same block in 3D (0.2 x 0.1 x 0.1 m, floor z = 0, gravity tilted in the x-z plane): the Coulomb
+// correction of eqs 5.6-5.7 in vector form. theta = 30 deg, mu = 0.2: 3.2059 m/s^2; mu = 0.7: no sliding.
+TEST(InclineBlock, ThreeDimensions) {
+  const std::string scene = R"(
+dimension: 3
+grid: {origin: [0, 0, -0.05], extent: [0.8, 0.15, 0.2], cell_size: 0.025}
+materials:
+  rubber: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}
+bodies:
+  - {name: body, material: rubber, shape: {type: box, min: [0.1, 0.025, 0.0], max: [0.3, 0.125, 0.1]},
+     particles_per_cell: 2}
+solver: {scheme: musl, shape_function: linear, flip_fraction: 0, cfl: 0.4, end_time: 0.3, gravity: [@GX@, 0, @GY@]}
+contact:
+  planes: [{name: floor, point: [0, 0, 0], normal: [0, 0, 1], friction: @MU@}]
+)";
+  for (const double mu : {0.2, 0.7}) {
+    auto values = tilted(30);
+    values["MU"] = std::to_string(mu);
+    auto sim = simulation_from_yaml<3>(fill(scene, values));
+    std::vector<double> t, v;
+    sim->run([&](const Simulation<3>& s) {
+      if (s.time() >= 0.1) {
+        t.push_back(s.time());
+        v.push_back(body_velocity(s.bodies()[0])[0]);
+      }
+    });
+    const double a = slope(t, v);
+    const double expected = mu < std::tan(M_PI / 6) ? g * (std::sin(M_PI / 6) - mu * std::cos(M_PI / 6)) : 0.0;
+    std::printf("[ measured ] 3D block on 30 deg incline, mu %.1f: a = %.4f m/s^2 (exact %.4f)\n", mu, a, expected);
+    EXPECT_NEAR(a, expected, 0.03 * 3.2059) << "mu " << mu;
+    if (expected == 0) {
+      EXPECT_LT(std::abs(v.back()), 1e-3);
+    }
+  }
+}
+
 const std::string disk = "{type: disk, center: [0.15, 0.1], radius: 0.1}";
 
 // theta = 45 degrees: rolling (mu = 0.5 >= tan 45 / 3) a = (2/3) g sin 45 = 4.6245 m/s^2; sliding
