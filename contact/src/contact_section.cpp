@@ -131,6 +131,8 @@ std::any parse_contact_section(const YAML::Node& section, const SceneDescription
   top.allow({"friction", "pairs", "normals", "onset", "rigid_bodies", "planes", "force_file", "force_interval"});
   if (scene.solver.scheme == "tlmpm")
     top.fail("contact needs scheme usl, musl or usf (TLMPM has no contact between bodies)");
+  if (scene.solver.velocity_transfer == "apic")  // contact/README.md, limits
+    top.fail("contact is not available with velocity_transfer: apic (a block on a contact plane diverges); use flip");
   for (int f = 0; f < 2 * scene.dimension; ++f)
     for (const auto& t : scene.grid.boundary[f].traction)
       if (t) top.fail("face tractions (grid.boundary ... traction) are not supported together with contact");
