@@ -51,10 +51,27 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   };
   write(*sim, false);
 
+  // The materials' validity checks (e.g. the density tolerance of a weakly compressible fluid), every
+  // 50 steps and at the end; the first warning of each body is logged once.
+  std::vector<bool> warned(sim->bodies().size(), false);
+  auto check_state = [&](const Simulation<Dim>& s) {
+    for (std::size_t b = 0; b < s.bodies().size(); ++b) {
+      if (warned[b]) continue;
+      const auto& body = s.bodies()[b];
+      const std::string message = body.material->state_warning(body.particles);
+      if (message.empty()) continue;
+      warned[b] = true;
+      summary.warnings.push_back(fmt::format("body {} at t = {:.6g} s: {}", body.name, s.time(), message));
+      if (options.progress) log << '\n';
+      fmt::print(log, "warning: {}\n", summary.warnings.back());
+    }
+  };
+
   const auto start = Clock::now();
   auto last_print = start;
   auto after_step = [&](const Simulation<Dim>& s) {
     write(s, false);
+    if (s.step() % 50 == 0) check_state(s);
     if (!options.progress) return;
     const auto now = Clock::now();
     if (now - last_print < std::chrono::milliseconds(500)) return;
@@ -74,6 +91,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     throw;
   }
   summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();  // stepping only
+  check_state(*sim);
   write(*sim, true);
   if (options.progress) log << '\n';
   summary.steps = sim->step();

@@ -9,6 +9,12 @@ GridBoundary<Dim>::GridBoundary(const GridGeometry<Dim>& g, const std::array<Fac
   for (int face = 0; face < 2 * Dim; ++face) {
     const int axis = face / 2;
     const int layer = face % 2 == 0 ? 0 : g.nodes[axis] - 1;
+    if (faces[face].component[axis] && *faces[face].component[axis] == "0") {  // a wall
+      if (face % 2 == 0)
+        wall_lower_[axis] = g.origin[axis];
+      else
+        wall_upper_[axis] = g.upper()[axis];
+    }
     std::vector<Index> nodes;
     for (Index n = 0; n < g.node_count(); ++n)
       if (g.node_indices(n)[axis] == layer) nodes.push_back(n);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -23,7 +24,10 @@ Simulation<Dim>::Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<
       boundary_(std::move(boundary)),
       settings_(settings) {
   scheme_->initialize(bodies_, grid_);
-  for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
+  for (auto& b : bodies_) {
+    wave_speed_.merge(b.material->wave_speed_bound(b.particles));
+    kinematic_viscosity_ = std::max(kinematic_viscosity_, b.material->kinematic_viscosity());
+  }
   take_snapshot();
 }
 
@@ -40,6 +44,10 @@ Real Simulation<Dim>::stable_time_step() const {
   const auto& h = grid_.geometry.h;
   for (int d = 0; d < Dim; ++d)
     if (wave_speed_.max_speed[d] > 0) dt = std::min(dt, h[d] / wave_speed_.max_speed[d]);  // eq. 2.73
+  if (kinematic_viscosity_ > 0) {  // explicit viscous diffusion: dt <= h^2 / (2 Dim nu)
+    const Real h_min = h.minCoeff();
+    dt = std::min(dt, h_min * h_min / (2 * Dim * kinematic_viscosity_));
+  }
   for (const auto& m : hooks_.all()) dt = std::min(dt, m->stable_time_step(bodies_));
   return dt;
 }

@@ -2,8 +2,11 @@
 // (partition of unity); a full USL or MUSL step with no external force conserves linear momentum.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
+#include "mpm/boundary_conditions.hpp"
 #include "mpm/schemes/transfer_kernels.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/linear_hat.hpp"
@@ -101,6 +104,37 @@ TEST(Transfers, MuslApicConservesMomentum) {
   const EnergyBalance e0 = sim->energy();
   for (int s = 0; s < 200; ++s) sim->advance(sim->next_time_step());
   EXPECT_LT((sim->energy().momentum - e0.momentum).norm(), 1e-11 * e0.mass);
+}
+
+}  // namespace
+}  // namespace mpm
+
+namespace mpm {
+namespace {
+
+// Walls keep particles in (boundary_conditions.hpp): a face whose normal velocity is held at 0 (`fixed`,
+// `slip`) bounds the positions; free faces and prescribed non-zero velocities do not; NaN stays NaN for
+// the stability guard.
+TEST(GridWalls, ClampOnlyAtWallFaces) {
+  const GridGeometry<2> g(Vec<2>(-1, 0), Vec<2>(0.5, 0.25), {4, 8});  // [-1, 1] x [0, 2]
+  std::array<FaceBoundary, 6> faces{};
+  faces[1].component[0] = "0";  // x_max slip: a wall
+  faces[2].component[0] = "0";  // y_min: tangential only, not a wall
+  faces[3].component[1] = "0";  // y_max: a wall ...
+  faces[3].component[0] = "0";  // ... held in both components (fixed)
+  faces[0].component[0] = "2";  // x_min moves at 2 m/s: a piston, not a wall
+  const GridBoundary<2> b(g, faces);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(b.wall_lower(), Vec<2>(-inf, -inf));
+  EXPECT_EQ(b.wall_upper(), Vec<2>(1, 2));
+  VecU<2> x(1.25, -0.5);
+  kernels::keep_inside_walls<2>(x, b.wall_lower(), b.wall_upper());
+  EXPECT_EQ(x[0], 1.0);
+  EXPECT_EQ(x[1], -0.5);  // the free y_min face: the guard reports the particle
+  x = VecU<2>(std::nan(""), 3);
+  kernels::keep_inside_walls<2>(x, b.wall_lower(), b.wall_upper());
+  EXPECT_TRUE(std::isnan(x[0]));
+  EXPECT_EQ(x[1], 2.0);
 }
 
 }  // namespace

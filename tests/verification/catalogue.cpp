@@ -13,6 +13,9 @@
 #include "mpm/stability_error.hpp"
 #include "tlmpm_paper.hpp"
 #include "vortex.hpp"
+#ifdef MPM_WITH_FLUIDS
+#include "fluids_cases.hpp"
+#endif
 #ifdef MPM_WITH_PLASTICITY
 #include "plasticity_cases.hpp"
 #endif
@@ -188,6 +191,9 @@ std::vector<VerificationCase> catalogue(bool quick, int refinements) {
   std::vector<VerificationCase> list;
   add_elastic_cases(list, quick, refinements);
   // Optional modules register their cases here, one explicit call each (see catalogue.hpp).
+#ifdef MPM_WITH_FLUIDS
+  add_fluids_cases(list, quick, refinements);
+#endif
 #ifdef MPM_WITH_PLASTICITY
   add_plasticity_cases(list, quick, refinements);
 #endif

@@ -5,6 +5,7 @@
 /// where the algorithms overwrite them (v^t, v~^{t+dt}, v^{t+dt}).
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -31,6 +32,12 @@ class GridBoundary {
   /// face area of node I (a cell face shared by its corner nodes; per unit out-of-plane size in 1D/2D).
   /// Nodes without mass get nothing (they are not part of the body).
   void apply_traction(std::vector<NodeRecord<Dim>>& node, Real t) const;
+  /// Bounds that keep particles inside the walls: on an axis whose face holds the normal velocity at 0
+  /// (`fixed` or `slip`), the face's coordinate; elsewhere -inf / +inf. The position updates clamp to
+  /// them, so that a particle carried past a wall by the velocity of a nearly empty node (a round-off or
+  /// small-mass effect, not physics) is put back onto the wall instead of stopping the run.
+  const Vec<Dim>& wall_lower() const { return wall_lower_; }
+  const Vec<Dim>& wall_upper() const { return wall_upper_; }
   /// Sets the constrained components of `member` of every face node to their value at time t.
   void apply(std::vector<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member, Real t) const;
 
@@ -48,6 +55,8 @@ class GridBoundary {
     std::vector<Real> area;  ///< m^2 per node
   };
   std::vector<Traction> tractions_;
+  Vec<Dim> wall_lower_ = Vec<Dim>::Constant(-std::numeric_limits<Real>::infinity());
+  Vec<Dim> wall_upper_ = Vec<Dim>::Constant(std::numeric_limits<Real>::infinity());
 };
 
 }  // namespace mpm

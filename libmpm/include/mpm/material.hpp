@@ -62,6 +62,13 @@ class Material {
   virtual bool append_output(std::string_view /*field*/, const ParticleSet<Dim>&, std::vector<double>&) const {
     return false;
   }
+  /// Kinematic viscosity nu (m^2/s) of the model's viscous stress, 0 if it has none: the simulation adds the
+  /// explicit diffusion bound dt <= h^2 / (2 Dim nu) to the CFL bound (review §5.4).
+  virtual Real kinematic_viscosity() const { return 0; }
+  /// A message when the particles' state has left the range in which the model is valid (e.g. a weakly
+  /// compressible fluid compressed beyond its stated tolerance), empty otherwise. The run checks it at each
+  /// output frame and logs the first message of every body.
+  virtual std::string state_warning(const ParticleSet<Dim>&) const { return {}; }
 };
 
 }  // namespace mpm

@@ -8,11 +8,15 @@
 ///   static Real energy_density(const Params&, const Mat3& F, const Mat3& stress);  per reference volume (J/m^3)
 /// The update is pure (old state in, new state out) so that an implicit scheme can call it for trial
 /// deformations without committing anything.
+/// Optional: `static Real kinematic_viscosity(const Params&)` (m^2/s, for the viscous time-step bound) and
+/// `static std::string state_warning(const Params&, Real J_min, Real J_max)` (see Material::state_warning).
 /// A model may also provide `template <int Dim> static void update_packed(const Params&, const Mat<Dim>& F,
 /// const Mat<Dim>& L, Real J, Real dt, SymTensor<Dim>& stress)`, the same law written on the packed
 /// in-plane storage; the batch loop then uses it (the elastic laws do: it avoids 3x3 round trips).
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "mpm/material.hpp"
 
@@ -55,6 +59,26 @@ class MaterialBatch final : public Material<Dim> {
     bound.max_speed = max_speed;
     bound.finite = finite;
     return bound;
+  }
+
+  Real kinematic_viscosity() const override {
+    if constexpr (requires(const Params& c) { Model::kinematic_viscosity(c); })
+      return Model::kinematic_viscosity(params_);
+    else
+      return 0;
+  }
+  std::string state_warning(const ParticleSet<Dim>& p) const override {
+    if constexpr (requires(const Params& c, Real J) { Model::state_warning(c, J, J); }) {
+      Real lo = 1, hi = 1;  // extreme det F of the body
+      for (Index i = 0; i < p.size(); ++i) {
+        const Real J = p.F[i].determinant();
+        lo = std::min(lo, J);
+        hi = std::max(hi, J);
+      }
+      return Model::state_warning(params_, lo, hi);
+    } else {
+      return {};
+    }
   }
 
   WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override {

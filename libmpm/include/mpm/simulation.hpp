@@ -36,7 +36,8 @@ class Simulation {
   void add_module(std::shared_ptr<Module<Dim>> module) { hooks_.add(std::move(module)); }
   const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
 
-  /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), and of the modules.
+  /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), of the viscous
+  /// materials (h^2 / (2 Dim nu)) and of the modules.
   Real stable_time_step() const;
   /// The time step the next step will take: the fixed dt, or cfl * stable_time_step().
   Real next_time_step() const;
@@ -87,6 +88,7 @@ class Simulation {
   SimulationSettings<Dim> settings_;
   ModuleHooks<Dim> hooks_;
   WaveSpeedBound<Dim> wave_speed_;
+  Real kinematic_viscosity_ = 0;  ///< largest of the materials' (viscous time-step bound)
   Real time_ = 0;
   Index step_ = 0;
   Snapshot snapshot_;

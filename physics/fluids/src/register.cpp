@@ -40,6 +40,8 @@ MaterialModelSpec newtonian_spec() {
       parameter("eos_exponent", "-", "Tait exponent gamma (7 water, 1.4 air)", 7.0, 1, false),
       parameter("viscosity", "Pa s", "dynamic (shear) viscosity mu", 0.0, 0, true),
       parameter("bulk_viscosity", "Pa s", "bulk viscosity zeta = lambda + 2 mu/3 (0: Stokes condition)", 0.0, 0, true),
+      parameter("density_tolerance", "-",
+                "largest |rho/rho0 - 1| before the run warns that the bulk modulus is too small", 0.03, 0, false),
   };
   return s;
 }
@@ -66,8 +68,8 @@ MaterialModelSpec ideal_gas_spec() {
 template <int Dim>
 std::unique_ptr<Material<Dim>> make_newtonian_fluid(const MaterialDescription& d) {
   const auto& p = d.parameters;
-  const TaitFluid::Params c{p.at("density"), p.at("bulk_modulus"), p.at("eos_exponent"), p.at("viscosity"),
-                            p.at("bulk_viscosity")};
+  const TaitFluid::Params c{p.at("density"),   p.at("bulk_modulus"),   p.at("eos_exponent"),
+                            p.at("viscosity"), p.at("bulk_viscosity"), p.at("density_tolerance")};
   return std::make_unique<MaterialBatch<Dim, TaitFluid>>(c);
 }
 

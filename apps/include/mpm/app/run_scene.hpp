@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <iosfwd>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "mpm/scene.hpp"
 #include "mpm/step_profile.hpp"
@@ -33,6 +35,9 @@ struct RunSummary {
   std::size_t particles = 0;
   std::size_t bytes_per_particle = 0;
   StepProfile profile;  ///< per-phase wall time, with RunOptions::profile (all zero otherwise)
+  /// Warnings of the materials about their state (Material::state_warning), the first of each body,
+  /// as logged: "body NAME at t = ... s: MESSAGE".
+  std::vector<std::string> warnings;
 };
 
 /// Builds the scene's simulation without running it (throws SceneError like load_scene).

@@ -104,6 +104,8 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const Vec<Dim> upper = g.upper();
+    const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
+    const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
@@ -120,6 +122,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
         for (int c = 0; c < Dim; ++c) L.col(c) += nv.mapped * st.grad[a][c];
       }
       p.x[i] += dt * v_move;
+      kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
       L_out[i - begin] = L;
       if (affine) affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].mapped); });
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&

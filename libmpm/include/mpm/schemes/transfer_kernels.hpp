@@ -169,6 +169,15 @@ inline bool update_deformation_gradient(MatU<Dim>& F, const Mat<Dim>& L, Real dt
   return J > 0 && std::isfinite(J);
 }
 
+/// Clamps x into [lower, upper] (GridBoundary::wall_lower/upper); NaN stays NaN for the guard.
+template <int Dim>
+inline void keep_inside_walls(VecU<Dim>& x, const Vec<Dim>& lower, const Vec<Dim>& upper) {
+  for (int d = 0; d < Dim; ++d) {
+    if (x[d] < lower[d]) x[d] = lower[d];
+    if (x[d] > upper[d]) x[d] = upper[d];
+  }
+}
+
 /// True when x is inside the grid box (false for NaN).
 template <int Dim>
 inline bool inside(const VecU<Dim>& x, const GridGeometry<Dim>& g, const Vec<Dim>& upper) {

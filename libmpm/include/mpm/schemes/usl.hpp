@@ -29,6 +29,8 @@ class Usl final : public ShapedScheme<Dim, Shape> {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const Vec<Dim> upper = g.upper();
+    const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
+    const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
@@ -53,6 +55,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
         p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
       }
       p.x[i] += dt * v_pic;
+      kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
       L_out[i - begin] = L;
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
             std::isfinite(p.v[i].sum());

@@ -7,6 +7,9 @@
 /// det F (eq. 2.55c). Stateless: F carries the whole history, so the law batches like the elastic ones.
 
 #include <cmath>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "mpm/material.hpp"
 
@@ -15,11 +18,12 @@ namespace mpm::fluids {
 struct TaitFluid {
   static constexpr const char* key = "newtonian_fluid";
   struct Params {
-    Real density;         ///< rho0, kg/m^3
-    Real bulk_modulus;    ///< kappa, Pa (may be reduced below the physical value: weak compressibility)
-    Real gamma;           ///< Tait exponent (7 water, 1.4 air)
-    Real viscosity;       ///< mu, Pa s
-    Real bulk_viscosity;  ///< zeta, Pa s
+    Real density;                   ///< rho0, kg/m^3
+    Real bulk_modulus;              ///< kappa, Pa (may be reduced below the physical value: weak compressibility)
+    Real gamma;                     ///< Tait exponent (7 water, 1.4 air)
+    Real viscosity;                 ///< mu, Pa s
+    Real bulk_viscosity;            ///< zeta, Pa s
+    Real density_tolerance = 0.03;  ///< largest |rho/rho0 - 1| of a valid weakly compressible run
   };
 
   static inline Real pressure(const Params& c, Real J) { return c.bulk_modulus * (std::pow(J, -c.gamma) - 1); }
@@ -33,6 +37,21 @@ struct TaitFluid {
   /// Sound speed c^2 = dp/drho = gamma kappa / rho0 J^(1 - gamma).
   static inline Real wave_speed(const Params& c, Real J) {
     return std::sqrt(c.gamma * c.bulk_modulus * std::pow(J, 1 - c.gamma) / c.density);
+  }
+  /// nu of the longitudinal (fastest-diffusing) viscous mode, (4 mu / 3 + zeta) / rho0: the bound
+  /// dt <= h^2 / (2 Dim nu) of explicit viscous diffusion (J near 1: weak compressibility).
+  static inline Real kinematic_viscosity(const Params& c) {
+    return (4 * c.viscosity / 3 + c.bulk_viscosity) / c.density;
+  }
+  /// Weak compressibility holds while rho/rho0 = 1/J stays within the tolerance (default 3%); past it the
+  /// bulk modulus is too small for the flow (the pressure is no longer an incompressibility constraint).
+  static inline std::string state_warning(const Params& c, Real J_min, Real J_max) {
+    const Real deviation = std::max(1 / J_min - 1, 1 - 1 / J_max);
+    if (!(deviation > c.density_tolerance)) return {};
+    return fmt::format(
+        "newtonian_fluid: the density deviates from rho0 by {:.3g}% (rho/rho0 in [{:.4g}, {:.4g}]), more than "
+        "density_tolerance = {:.3g}%: raise bulk_modulus (the sound speed should be about 10x the flow speed)",
+        100 * deviation, 1 / J_max, 1 / J_min, 100 * c.density_tolerance);
   }
   /// Stored energy per reference volume, W(J) = -int_1^J p dJ = kappa [(J^(1-gamma) - 1)/(gamma - 1) + J - 1]
   /// (dW/dJ = -p; viscous stresses store nothing).
