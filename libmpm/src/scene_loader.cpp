@@ -22,6 +22,7 @@
 #include "mpm/expression.hpp"
 #include "mpm/material_catalog.hpp"
 #include "mpm/output_writer.hpp"
+#include "mpm/scene_extension.hpp"
 #include "mpm/scheme.hpp"
 
 namespace mpm {
@@ -911,7 +912,9 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   if (!root.IsMap())
     r.fail(top_value, fmt::format("expected a map with the keys {}, got {}", top_keys, describe(root)));
   const MapReader top = r.map(top_value);
-  top.allow({"dimension", "grid", "materials", "bodies", "solver", "output"});
+  std::vector<std::string> top_allowed{"dimension", "grid", "materials", "bodies", "solver", "output"};
+  for (const auto& key : scene_extension_keys()) top_allowed.push_back(key);
+  top.allow(top_allowed);
 
   SceneDescription scene;
   scene.file = file_name_for_messages;
@@ -921,6 +924,9 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   scene.bodies = read_bodies(r, top.required("bodies"), scene);
   scene.solver = read_solver(r, top.required("solver"), scene);
   if (const auto output = top.find("output")) scene.output = read_output(r, *output);
+  for (const auto& key : scene_extension_keys())  // module sections last: they may refer to bodies
+    if (const auto section = top.find(key))
+      scene.extensions[key] = find_scene_extension(key)->parse(section->node, scene);
   return scene;
 }
 

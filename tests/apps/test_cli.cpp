@@ -122,6 +122,9 @@ TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
           entry.path().filename() == "output_temperature_without_specific_heat.yaml")
         continue;
 #endif
+#ifndef MPM_WITH_CONTACT  // fixtures of the contact module's section, an unknown key without it
+      if (entry.path().filename().string().rfind("contact_", 0) == 0) continue;
+#endif
 #ifndef MPM_WITH_FLUIDS  // fixtures of the fluids module's models
       if (entry.path().filename().string().rfind("fluids_", 0) == 0) continue;
 #endif

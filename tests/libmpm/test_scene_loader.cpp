@@ -37,6 +37,9 @@ std::vector<BadScene> bad_scenes() {
   std::vector<BadScene> scenes;
   for (const auto& entry : fs::directory_iterator(data_dir / "bad_scenes")) {
     if (entry.path().extension() != ".yaml") continue;
+#ifndef MPM_WITH_CONTACT  // the contact module's section is an unknown key without it
+    if (entry.path().filename().string().rfind("contact_", 0) == 0) continue;
+#endif
     BadScene scene{entry.path(), "", 0};
     std::ifstream in(entry.path());
     std::string first, second;

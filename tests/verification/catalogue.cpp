@@ -19,6 +19,9 @@
 #ifdef MPM_WITH_PLASTICITY
 #include "plasticity_cases.hpp"
 #endif
+#ifdef MPM_WITH_CONTACT
+#include "contact_cases.hpp"
+#endif
 
 namespace mpm::verification {
 namespace {
@@ -193,6 +196,9 @@ std::vector<VerificationCase> catalogue(bool quick, int refinements) {
 #endif
 #ifdef MPM_WITH_PLASTICITY
   add_plasticity_cases(list, quick, refinements);
+#endif
+#ifdef MPM_WITH_CONTACT
+  add_contact_cases(list, quick, refinements);
 #endif
   return list;
 }

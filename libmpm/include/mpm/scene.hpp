@@ -4,6 +4,7 @@
 /// The loader (scene_loader.hpp) fills it and validates every value; build_simulation() turns it into
 /// a running Simulation. Nothing here allocates particle or grid storage.
 
+#include <any>
 #include <array>
 #include <map>
 #include <optional>
@@ -126,6 +127,8 @@ struct SceneDescription {
   std::vector<BodyDescription> bodies;
   SolverDescription solver;
   OutputDescription output;
+  /// Sections of optional modules (scene_extension.hpp), by top-level key, as their parsers returned them.
+  std::map<std::string, std::any> extensions;
 };
 
 }  // namespace mpm
