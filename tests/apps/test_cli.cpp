@@ -98,15 +98,17 @@ TEST(Cli, CheckValidScene) {
 // leave an example behind.
 TEST(Cli, EveryExampleSceneIsValid) {
   int checked = 0;
+  const auto dir = scratch("examples");  // the command's stdout/stderr files go here, not into examples/
   for (const auto& folder : fs::directory_iterator(fs::path(MPM_SOURCE_DIR) / "examples")) {
     if (!folder.is_directory()) continue;
     for (const auto& entry : fs::directory_iterator(folder.path())) {
       if (entry.path().extension() != ".yaml") continue;
-      const auto r = mpm("check " + entry.path().string(), folder.path());
+      const auto r = mpm("check " + entry.path().string(), dir);
       EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.err;
       ++checked;
     }
   }
+  fs::remove_all(dir);
   EXPECT_GE(checked, 15);
 }
 #endif
