@@ -29,7 +29,9 @@ void check(const SceneDescription& scene, std::ostream& out) {
 }
 
 template <int Dim>
-RunSummary run(const SceneDescription& scene, const RunOptions& options, std::ostream& log) {
+RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std::ostream& log) {
+  SceneDescription scene = scene_in;  // modules writing their own files (contact forces) follow -o too
+  if (options.output_directory) scene.output.directory = options.output_directory->string();
   auto sim = build_simulation<Dim>(scene);
   const auto& o = scene.output;
   OutputWriter<Dim> writer(options.output_directory.value_or(o.directory), o.prefix, o.fields, o.grid, o.interval);

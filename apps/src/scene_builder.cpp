@@ -14,6 +14,7 @@
 #include "mpm/material_factory.hpp"
 #include "mpm/module_factory.hpp"
 #include "mpm/scene_error.hpp"
+#include "mpm/scene_extension.hpp"
 
 namespace mpm::app {
 
@@ -161,6 +162,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   auto sim = std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme),
                                                GridBoundary<Dim>(geometry, gd.boundary), settings);
   for (auto& m : modules) sim->add_module(std::move(m));
+  build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
   if (track_corners)
     sim->add_module(
         std::make_shared<CpdiCornerTracking<Dim>>(find_shape_function(scene.solver.shape_function)->domain_corners));

@@ -22,7 +22,7 @@
 #include "mpm/expression.hpp"
 #include "mpm/material_catalog.hpp"
 #include "mpm/output_writer.hpp"
-#include "mpm/scene_section.hpp"
+#include "mpm/scene_extension.hpp"
 #include "mpm/scheme.hpp"
 
 namespace mpm {
@@ -894,27 +894,7 @@ OutputDescription read_output(const Reader& r, const Value& v) {
   return output;
 }
 
-std::vector<std::pair<std::string, SceneSectionParser>>& section_parsers() {
-  static std::vector<std::pair<std::string, SceneSectionParser>> parsers;
-  return parsers;
-}
-
 }  // namespace
-
-void register_scene_section(const std::string& key, SceneSectionParser parser) {
-  for (auto& [k, p] : section_parsers())
-    if (k == key) {
-      p = std::move(parser);
-      return;
-    }
-  section_parsers().emplace_back(key, std::move(parser));
-}
-
-std::vector<std::string> scene_section_keys() {
-  std::vector<std::string> keys;
-  for (const auto& [k, p] : section_parsers()) keys.push_back(k);
-  return keys;
-}
 
 SceneDescription parse_scene(const std::string& yaml_text, const std::string& file_name_for_messages) {
   const Reader r(file_name_for_messages);
@@ -924,9 +904,7 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   } catch (const YAML::Exception& e) {
     r.fail(e.mark, "", "YAML syntax error: " + e.msg);
   }
-  std::vector<std::string> top_key_list = {"dimension", "grid", "materials", "bodies", "solver", "output"};
-  for (const auto& key : scene_section_keys()) top_key_list.push_back(key);
-  const std::string top_keys = join(top_key_list);
+  const std::string top_keys = "dimension, grid, materials, bodies, solver, output";
   if (root.IsNull())
     throw SceneError({file_name_for_messages, 1, 1}, "",
                      "the scene is empty: expected a map with the keys " + top_keys);
@@ -934,7 +912,9 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   if (!root.IsMap())
     r.fail(top_value, fmt::format("expected a map with the keys {}, got {}", top_keys, describe(root)));
   const MapReader top = r.map(top_value);
-  top.allow(top_key_list);
+  std::vector<std::string> top_allowed{"dimension", "grid", "materials", "bodies", "solver", "output"};
+  for (const auto& key : scene_extension_keys()) top_allowed.push_back(key);
+  top.allow(top_allowed);
 
   SceneDescription scene;
   scene.file = file_name_for_messages;
@@ -944,8 +924,9 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   scene.bodies = read_bodies(r, top.required("bodies"), scene);
   scene.solver = read_solver(r, top.required("solver"), scene);
   if (const auto output = top.find("output")) scene.output = read_output(r, *output);
-  for (const auto& [key, parser] : section_parsers())
-    if (const auto section = top.find(key)) scene.sections[key] = parser(section->node, scene);
+  for (const auto& key : scene_extension_keys())  // module sections last: they may refer to bodies
+    if (const auto section = top.find(key))
+      scene.extensions[key] = find_scene_extension(key)->parse(section->node, scene);
   return scene;
 }
 

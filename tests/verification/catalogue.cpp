@@ -22,6 +22,9 @@
 #ifdef MPM_WITH_THERMAL
 #include "thermal_cases.hpp"
 #endif
+#ifdef MPM_WITH_CONTACT
+#include "contact_cases.hpp"
+#endif
 
 namespace mpm::verification {
 namespace {
@@ -199,6 +202,9 @@ std::vector<VerificationCase> catalogue(bool quick, int refinements) {
 #endif
 #ifdef MPM_WITH_THERMAL
   add_thermal_cases(list, quick, refinements);
+#endif
+#ifdef MPM_WITH_CONTACT
+  add_contact_cases(list, quick, refinements);
 #endif
   return list;
 }

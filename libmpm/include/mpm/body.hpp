@@ -22,6 +22,10 @@ struct Body {
   /// Scratch: velocity gradients of all particles, used only when a module runs between the
   /// grid-to-particle transfer and the stress update (otherwise a per-block buffer is enough).
   std::vector<MatU<Dim>> velocity_gradient;
+  /// When set (by the contact module, contact/), this body's transfers use these nodal arrays instead of
+  /// the shared grid: its own mass, momentum, force and velocities (one field per body, review §5.1).
+  /// Null for a scene without contact, which then runs exactly as before.
+  Grid<Dim>* own_grid = nullptr;
 };
 
 }  // namespace mpm

@@ -127,8 +127,8 @@ struct SceneDescription {
   std::vector<BodyDescription> bodies;
   SolverDescription solver;
   OutputDescription output;
-  /// Sections of optional modules (scene_section.hpp), by top-level key: what the module's parser returned.
-  std::map<std::string, std::any> sections;
+  /// Sections of optional modules (scene_extension.hpp), by top-level key, as their parsers returned them.
+  std::map<std::string, std::any> extensions;
 };
 
 }  // namespace mpm

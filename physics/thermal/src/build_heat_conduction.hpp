@@ -111,8 +111,8 @@ std::shared_ptr<Module<Dim>> make_conduction(ConductionSetup<Dim> setup, const G
 template <int Dim>
 std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene, std::vector<Body<Dim>>& bodies,
                                                    const GridGeometry<Dim>& g) {
-  const auto it = scene.sections.find(section_key);
-  if (it == scene.sections.end()) {
+  const auto it = scene.extensions.find(section_key);
+  if (it == scene.extensions.end()) {
     check_no_thermal_keys(scene);
     return nullptr;
   }

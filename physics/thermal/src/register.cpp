@@ -5,7 +5,7 @@
 
 #include "mpm/material_catalog.hpp"
 #include "mpm/module_factory.hpp"
-#include "mpm/scene_section.hpp"
+#include "mpm/scene_extension.hpp"
 #include "thermal_section.hpp"
 
 namespace mpm::thermal {
@@ -55,7 +55,8 @@ void register_module() {
   static std::once_flag once;
   std::call_once(once, [] {
     register_common_material_parameters(thermal_parameters());
-    register_scene_section("thermal", &parse_thermal_section);
+    // the section only: the module is built by the builder below, before the first snapshot (it adds fields)
+    register_scene_extension({"thermal", &parse_thermal_section, nullptr, nullptr, nullptr});
     register_scene_module(
         {"heat_conduction", &build_heat_conduction<1>, &build_heat_conduction<2>, &build_heat_conduction<3>});
   });

@@ -23,6 +23,7 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
       if (body.bins.outside >= 0) ctx.guard_tripped = true;
     }
     reset_grid(ctx.grid);
+    reset_own_grids(ctx.bodies);
     for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape>(body, ctx.grid);
   }
   PhaseTimer timer(ctx.profile, StepPhase::grid_update);

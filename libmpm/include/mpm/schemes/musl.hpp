@@ -20,6 +20,8 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     {
       PhaseTimer timer(ctx.profile, StepPhase::p2g);  // the second mapping (with the particle velocity update)
       clear_momentum(ctx.grid);
+      for (auto& body : ctx.bodies)
+        if (body.own_grid) clear_momentum(*body.own_grid);
       for (auto& body : ctx.bodies) update_velocity_and_remap(body, ctx);
     }
     {
@@ -43,8 +45,9 @@ class Musl final : public ShapedScheme<Dim, Shape> {
   static void update_velocity_and_remap(Body<Dim>& body, StepContext<Dim>& ctx) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
-    NodeRecord<Dim>* node = ctx.grid.node.data();
-    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    Grid<Dim>& grid = kernels::grid_of(body, ctx.grid);
+    NodeRecord<Dim>* node = grid.node.data();
+    const NodeVelocity<Dim>* vel = grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction;
     MatU<Dim>* affine = kernels::affine_of(p);
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
@@ -103,7 +106,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     const Vec<Dim> upper = g.upper();
     const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
     const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
-    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
     Stencil<Dim, Shape> st;

@@ -24,6 +24,23 @@ void reset_grid(Grid<Dim>& grid) {
   });
 }
 
+/// The nodal arrays a body's transfers use: its own (multi-velocity contact) or the shared grid.
+template <int Dim>
+inline Grid<Dim>& grid_of(Body<Dim>& body, Grid<Dim>& shared) {
+  return body.own_grid ? *body.own_grid : shared;
+}
+template <int Dim>
+inline const Grid<Dim>& grid_of(const Body<Dim>& body, const Grid<Dim>& shared) {
+  return body.own_grid ? *body.own_grid : shared;
+}
+
+/// Zeroes the bodies' own nodal arrays (contact), when they have any.
+template <int Dim>
+void reset_own_grids(std::vector<Body<Dim>>& bodies) {
+  for (auto& body : bodies)
+    if (body.own_grid) reset_grid(*body.own_grid);
+}
+
 /// The on-demand particle field "body_force" (acceleration b_p, m/s^2, set by a module before the step),
 /// or nullptr: P2G adds f_I += phi_I m_p b_p (eq. 2.35) when it exists. Gravity is separate (m_I g).
 template <int Dim>
@@ -63,7 +80,8 @@ Mat<Dim> affine_matrix(const Stencil<Dim, Shape>& st, NodeVelocityOf&& velocity_
 /// P2G (eqs 2.40, 2.43, 2.36): nodal mass, momentum and internal force f_I = -sum V_p sigma_p grad phi.
 /// USF maps mass and momentum first and the force of the updated stress later: the two flags select.
 template <int Dim, class Shape, bool MassMomentum = true, bool Force = true>
-void particles_to_grid(Body<Dim>& body, Grid<Dim>& grid) {
+void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
+  Grid<Dim>& grid = grid_of(body, shared_grid);
   const auto& p = body.particles;
   const auto& g = grid.geometry;
   NodeRecord<Dim>* node = grid.node.data();

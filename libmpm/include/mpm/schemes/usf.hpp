@@ -26,6 +26,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
         if (body.bins.outside >= 0) ctx.guard_tripped = true;
       }
       kernels::reset_grid(grid);
+      kernels::reset_own_grids(ctx.bodies);
       for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, true, false>(body, grid);
     }
     {
@@ -59,7 +60,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
   static bool deform(Body<Dim>& body, const StepContext<Dim>& ctx, Index begin, Index end, MatU<Dim>* L_out) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
-    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     Stencil<Dim, Shape> st;
     const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
@@ -96,7 +97,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     const Vec<Dim> upper = g.upper();
     const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
     const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
-    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {

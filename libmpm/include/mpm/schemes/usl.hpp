@@ -31,7 +31,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
     const Vec<Dim> upper = g.upper();
     const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
     const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
-    const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
     Stencil<Dim, Shape> st;

@@ -39,7 +39,7 @@ struct ThermalDescription {
   SourceLocation where;
 };
 
-/// Key of the section in the scene and in SceneDescription::sections.
+/// Key of the section in the scene and in SceneDescription::extensions.
 inline constexpr const char* section_key = "thermal";
 
 }  // namespace mpm::thermal

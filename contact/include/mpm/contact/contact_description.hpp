@@ -1,0 +1,51 @@
+#pragma once
+/// \file contact_description.hpp
+/// The scene's `contact:` section as read by the loader (docs/scene-reference.md, "contact"): plain data,
+/// names not yet resolved to body indices.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mpm/scene.hpp"
+
+namespace mpm::contact {
+
+/// Friction coefficient of one pair of bodies (overrides the section's default).
+struct PairFriction {
+  std::array<std::string, 2> bodies;
+  double friction = 0;
+  SourceLocation where;
+};
+
+/// A body of rigid particles (material model `rigid`) moving with a prescribed velocity.
+struct RigidBodyDescription {
+  std::string body;
+  std::array<std::string, 3> velocity{"0", "0", "0"};  ///< m/s, muparser expressions of t
+  SourceLocation where;
+};
+
+/// A rigid plane (wall): the half-space (x - point).normal <= 0 is solid; it may move.
+struct PlaneDescription {
+  std::string name;
+  std::array<double, 3> point{0, 0, 0};   ///< m, a point of the plane at t = 0
+  std::array<double, 3> normal{0, 1, 0};  ///< outward normal of the wall (towards the bodies), normalised
+  double friction = 0;
+  std::array<std::string, 3> velocity{"0", "0", "0"};  ///< m/s, expressions of t
+  SourceLocation where;
+};
+
+struct ContactDescription {
+  double friction = 0;  ///< default Coulomb coefficient of every pair of bodies
+  std::vector<PairFriction> pairs;
+  std::string normals = "mass_gradient";  ///< "mass_gradient" (eq. 5.12) or "density" (eqs 5.9-5.11)
+  std::string onset = "grid";             ///< "grid" (contact nodes, the paper) or "particle_gap"
+  std::vector<RigidBodyDescription> rigid_bodies;
+  std::vector<PlaneDescription> planes;
+  std::string force_file;     ///< CSV of contact forces, relative to output.directory; empty: none
+  double force_interval = 0;  ///< s between CSV rows (0: every step); forces are averaged over it
+  SourceLocation where;
+};
+
+}  // namespace mpm::contact

@@ -1,0 +1,119 @@
+#pragma once
+/// \file multi_velocity_contact.hpp
+/// Bardenhagen's multi-velocity-field contact (review §5.1, Alg. 6; Bardenhagen et al. 2000), rigid
+/// bodies (§4.2.4, Alg. 4) and rigid planes, as a module of the step (module.hpp):
+///  - every body gets its own nodal arrays (Body::own_grid), filled by the schemes' own P2G, so that a
+///    scene without contact runs the unchanged single-field path;
+///  - after P2G: the contact candidates (nodes with mass of two bodies, or behind a rigid plane), the
+///    bodies' normals there (eq. 5.12 or 5.9-5.11) and, with onset `particle_gap`, the particle gap;
+///  - at every grid-velocity stage: the bodies' nodal velocities, the boundary conditions, and at the
+///    `updated` and MUSL `remapped` stages the contact correction (eqs 5.2-5.8; Remark 33: MUSL twice).
+/// Contact forces (impulse of the correction / dt) go to a CSV, reaction forces of rigid bodies too.
+
+#include <array>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mpm/expression.hpp"
+#include "mpm/module.hpp"
+
+namespace mpm::contact {
+
+enum class NormalMethod { mass_gradient, density };
+enum class Onset { grid, particle_gap };
+
+template <int Dim>
+struct ContactSettings {
+  std::vector<Real> friction;  ///< n x n (n = number of bodies), symmetric
+  NormalMethod normals = NormalMethod::mass_gradient;
+  Onset onset = Onset::grid;
+  struct Rigid {
+    int body = 0;
+    std::array<std::string, Dim> velocity;  ///< expressions of t, m/s
+  };
+  std::vector<Rigid> rigid_bodies;
+  struct Plane {
+    std::string name;
+    Vec<Dim> point = Vec<Dim>::Zero();
+    Vec<Dim> normal = Vec<Dim>::Unit(Dim - 1);  ///< outward normal of the wall, unit
+    Real friction = 0;
+    std::array<std::string, Dim> velocity;
+  };
+  std::vector<Plane> planes;
+  std::string force_file;  ///< empty: no CSV
+  Real force_interval = 0;
+};
+
+/// Force on `body` from `other` (a body index, or -1 - plane index), summed over the contact nodes.
+template <int Dim>
+struct PairForce {
+  int body = 0, other = 0;
+  Vec<Dim> force = Vec<Dim>::Zero();  ///< N (per unit thickness in 2D)
+  Real normal = 0;                    ///< N, compressive part: -sum f.n_body (positive when pressed)
+  Real tangential = 0;                ///< N, |sum of the tangential parts|
+};
+
+/// The particle passes that need the shape function (normals, gap), dispatched once per body per step.
+template <int Dim>
+class ShapePasses;
+
+template <int Dim>
+class MultiVelocityContact final : public Module<Dim> {
+ public:
+  /// Gives every body its own nodal arrays; `shape_function` is the scene's (for the normals).
+  MultiVelocityContact(const GridGeometry<Dim>& grid, std::vector<Body<Dim>>& bodies, const std::string& shape_function,
+                       ContactSettings<Dim> settings);
+  ~MultiVelocityContact() override;
+  std::string_view name() const override { return "contact"; }
+  unsigned phases() const override { return phase_after_p2g | phase_grid_velocity | phase_end_of_step; }
+  void after_p2g(StepContext<Dim>& ctx) override;
+  void on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) override;
+  void end_of_step(StepContext<Dim>& ctx) override;
+
+  /// Time (end of the step) of the first contact correction, or a negative value if none happened yet.
+  Real onset_time() const { return onset_time_; }
+  /// Forces of the last step, one entry per pair that touched (bodies, then rigid reactions).
+  const std::vector<PairForce<Dim>>& last_forces() const { return last_forces_; }
+  /// Number of contact nodes (corrected at the `updated` stage) in the last step.
+  Index contact_node_count() const { return contact_nodes_last_; }
+  /// Position of plane k at the current time (it moves with its velocity).
+  Vec<Dim> plane_point(int k) const { return plane_point_[k]; }
+
+ private:
+  void find_candidates(StepContext<Dim>& ctx);
+  void body_velocities(StepContext<Dim>& ctx, GridStage stage);
+  void correct(StepContext<Dim>& ctx, VecU<Dim> NodeVelocity<Dim>::*member, bool record);
+  Vec<Dim> rigid_velocity(int r, Real t) const;
+  Vec<Dim> plane_velocity(int k, Real t) const;
+  void write_forces(Real time);
+
+  std::vector<Body<Dim>>& bodies_;
+  ContactSettings<Dim> settings_;
+  int n_ = 0;                   ///< bodies
+  std::vector<Grid<Dim>> own_;  ///< one per body (Body::own_grid points here)
+  std::vector<int> rigid_of_;   ///< per body: index into settings_.rigid_bodies, or -1
+  std::vector<std::array<Expression, Dim>> rigid_velocity_, plane_velocity_;
+  std::vector<Vec<Dim>> plane_point_;
+  std::unique_ptr<ShapePasses<Dim>> passes_;
+  // Per step
+  std::vector<Index> candidates_;                 ///< nodes where two bodies meet or a body is behind a plane
+  std::vector<std::uint8_t> is_candidate_;        ///< per node
+  std::vector<std::vector<VecU<Dim>>> gradient_;  ///< per body, per node: mass gradient (eq. 5.12) or 5.11
+  std::vector<std::vector<Real>> extent_;         ///< per body, per node: max of x.n + half size (gap)
+  std::vector<std::vector<Real>> gap_upper_;      ///< per body, per node: max of -x.n + half size (gap)
+  std::vector<VecU<Dim>> pair_normal_;            ///< per node: unit normal from the lower to the higher body
+  // Forces
+  std::vector<Vec<Dim>> impulse_;  ///< per (body, other slot): impulse since the last CSV row, N s
+  std::vector<Real> impulse_n_;
+  std::vector<PairForce<Dim>> last_forces_;
+  std::vector<Vec<Dim>> step_force_;  ///< per (body, other slot): force of this step
+  std::vector<Real> step_normal_;
+  Real onset_time_ = -1;
+  Index contact_nodes_last_ = 0;
+  Real last_row_time_ = 0;
+  std::ofstream csv_;
+};
+
+}  // namespace mpm::contact

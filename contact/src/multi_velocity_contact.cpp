@@ -1,0 +1,474 @@
+#include "mpm/contact/multi_velocity_contact.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+
+#include "mpm/contact/contact_law.hpp"
+#include "shape_passes.hpp"
+
+namespace mpm::contact {
+namespace {
+
+constexpr std::uint8_t body_pair = 1;  // node where two or more bodies have mass
+constexpr std::uint8_t behind_plane = 2;
+
+template <int Dim>
+Vec<Dim> unit_or_zero(const Vec<Dim>& v) {
+  const Real n = v.norm();
+  return n > 0 ? Vec<Dim>(v / n) : Vec<Dim>::Zero();
+}
+
+template <int Dim>
+std::array<Expression, Dim> expressions(const std::array<std::string, Dim>& text) {
+  return [&]<std::size_t... d>(std::index_sequence<d...>) {
+    return std::array<Expression, Dim>{Expression(text[d], {"t"})...};
+  }
+  (std::make_index_sequence<Dim>{});
+}
+
+template <int Dim>
+Vec<Dim> evaluate(const std::array<Expression, Dim>& e, Real t) {
+  Vec<Dim> v;
+  for (int d = 0; d < Dim; ++d) v[d] = e[d](0, 0, 0, t);
+  return v;
+}
+
+/// Cell-centred density of eq. 5.9 with the quadratic B-spline S^2 of eq. 5.10 (bounds as corrected in the
+/// digest, erratum 9: +-h/2, +-3h/2), then the nodal normals of eq. 5.11 with the hat-function gradients at
+/// the centres of the cells around each node. Serial: an alternative to eq. 5.12, selected by the scene.
+template <int Dim>
+void density_normals(const Body<Dim>& body, const GridGeometry<Dim>& g, const std::vector<Index>& nodes,
+                     std::vector<VecU<Dim>>& out, std::vector<Real>& density) {
+  std::array<int, Dim> cells{};
+  Index n_cells = 1;
+  for (int d = 0; d < Dim; ++d) {
+    cells[d] = g.cells(d);
+    n_cells *= cells[d];
+  }
+  density.assign(n_cells, 0);
+  const auto& p = body.particles;
+  const Real inv_volume = 1 / g.cell_volume();
+  for (Index i = 0; i < p.size(); ++i) {
+    int base[Dim];
+    Real w[Dim][3];
+    for (int d = 0; d < Dim; ++d) {
+      const Real xi = (p.x[i][d] - g.origin[d]) * g.inv_h[d] - 0.5;  // in cell-centre units
+      base[d] = static_cast<int>(std::floor(xi + 0.5)) - 1;
+      for (int k = 0; k < 3; ++k) {
+        const Real r = std::abs(xi - (base[d] + k));
+        w[d][k] = r < 0.5 ? 0.75 - r * r : (r < 1.5 ? 0.5 * (1.5 - r) * (1.5 - r) : 0);
+      }
+    }
+    const int combos = Dim == 1 ? 3 : (Dim == 2 ? 9 : 27);
+    for (int c = 0; c < combos; ++c) {
+      int rest = c;
+      Index linear = 0, stride = 1;
+      Real weight = p.mass[i] * inv_volume;
+      bool inside = true;
+      for (int d = 0; d < Dim; ++d) {
+        const int k = rest % 3, idx = base[d] + k;
+        rest /= 3;
+        inside = inside && idx >= 0 && idx < cells[d];
+        weight *= w[d][k];
+        linear += stride * idx;
+        stride *= cells[d];
+      }
+      if (inside) density[linear] += weight;
+    }
+  }
+  for (const Index I : nodes) {
+    const auto ijk = g.node_indices(I);
+    Vec<Dim> n = Vec<Dim>::Zero();
+    const int corners = 1 << Dim;
+    for (int c = 0; c < corners; ++c) {
+      Index linear = 0, stride = 1;
+      bool inside = true;
+      int side[Dim];
+      for (int d = 0; d < Dim; ++d) {
+        side[d] = (c >> d) & 1 ? 1 : -1;  // cell above (+1) or below (-1) the node on axis d
+        const int idx = ijk[d] + (side[d] > 0 ? 0 : -1);
+        inside = inside && idx >= 0 && idx < cells[d];
+        linear += stride * idx;
+        stride *= cells[d];
+      }
+      if (!inside) continue;
+      // grad phi_I at the cell centre: d/dx_d of prod (1 - |x - x_I|/h) = -side_d / h_d * (1/2)^(Dim-1)
+      for (int d = 0; d < Dim; ++d) n[d] += density[linear] * (-side[d] * g.inv_h[d]) * std::pow(0.5, Dim - 1);
+    }
+    out[I] = n;
+  }
+}
+
+}  // namespace
+
+template <int Dim>
+MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, std::vector<Body<Dim>>& bodies,
+                                                const std::string& shape_function, ContactSettings<Dim> settings)
+    : bodies_(bodies), settings_(std::move(settings)), n_(static_cast<int>(bodies.size())) {
+  passes_ = make_shape_passes<Dim>(shape_function);
+  own_.reserve(n_);  // Body::own_grid points into own_: no reallocation after this
+  for (int k = 0; k < n_; ++k) {
+    own_.emplace_back(grid);
+    bodies_[k].own_grid = &own_[k];
+  }
+  if (settings_.friction.size() != static_cast<std::size_t>(n_ * n_)) settings_.friction.assign(n_ * n_, 0);
+  rigid_of_.assign(n_, -1);
+  for (std::size_t r = 0; r < settings_.rigid_bodies.size(); ++r) {
+    const auto& rb = settings_.rigid_bodies[r];
+    rigid_of_[rb.body] = static_cast<int>(r);
+    rigid_velocity_.push_back(expressions<Dim>(rb.velocity));
+    // Rigid particles start with the prescribed velocity (their kinetic energy is then constant).
+    const Vec<Dim> v0 = rigid_velocity(static_cast<int>(r), 0);
+    for (auto& v : bodies_[rb.body].particles.v) v = v0;
+  }
+  for (const auto& plane : settings_.planes) {
+    plane_velocity_.push_back(expressions<Dim>(plane.velocity));
+    plane_point_.push_back(plane.point);
+  }
+  const Index nodes = grid.node_count();
+  is_candidate_.assign(nodes, 0);
+  gradient_.assign(n_, std::vector<VecU<Dim>>(nodes, VecU<Dim>::Zero()));
+  if (settings_.onset == Onset::particle_gap)
+    extent_.assign(n_, std::vector<Real>(nodes, -std::numeric_limits<Real>::infinity()));
+  pair_normal_.assign(nodes, VecU<Dim>::Zero());
+  const std::size_t slots = n_ * (n_ + settings_.planes.size());
+  impulse_.assign(slots, Vec<Dim>::Zero());
+  impulse_n_.assign(slots, 0);
+  step_force_.assign(slots, Vec<Dim>::Zero());
+  step_normal_.assign(slots, 0);
+  if (!settings_.force_file.empty()) {
+    const std::filesystem::path file(settings_.force_file);
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+    csv_.open(file);
+    if (!csv_) throw std::runtime_error("contact: cannot write the force file " + settings_.force_file);
+    csv_ << "time,body,other,normal_force,tangential_force";
+    const char* axis[] = {"x", "y", "z"};
+    for (int d = 0; d < Dim; ++d) csv_ << ",force_" << axis[d];
+    csv_ << '\n';
+    csv_.precision(10);
+  }
+}
+
+template <int Dim>
+MultiVelocityContact<Dim>::~MultiVelocityContact() {
+  for (auto& b : bodies_) b.own_grid = nullptr;
+}
+
+template <int Dim>
+Vec<Dim> MultiVelocityContact<Dim>::rigid_velocity(int r, Real t) const {
+  return evaluate<Dim>(rigid_velocity_[r], t);
+}
+template <int Dim>
+Vec<Dim> MultiVelocityContact<Dim>::plane_velocity(int k, Real t) const {
+  return evaluate<Dim>(plane_velocity_[k], t);
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::after_p2g(StepContext<Dim>& ctx) {
+  // The shared grid holds the sum of the bodies' fields (for grid output and any reader of the system).
+  auto& shared = ctx.grid;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, shared.size(), 1 << 12), [&](const auto& r) {
+    for (Index i = r.begin(); i != r.end(); ++i) {
+      NodeRecord<Dim>& s = shared.node[i];
+      for (int k = 0; k < n_; ++k) {
+        const NodeRecord<Dim>& o = own_[k].node[i];
+        s.mass += o.mass;
+        s.momentum += o.momentum;
+        s.force += o.force;
+      }
+    }
+  });
+  find_candidates(ctx);
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
+  const auto& g = ctx.grid.geometry;
+  const Real cutoff = ctx.settings.mass_cutoff;
+  for (const Index I : candidates_) is_candidate_[I] = 0;
+  candidates_.clear();
+  const Index nodes = g.node_count();
+  for (Index I = 0; I < nodes; ++I) {
+    int present = 0, deformable = 0;
+    for (int k = 0; k < n_; ++k)
+      if (own_[k].node[I].mass > cutoff) {
+        ++present;
+        deformable += rigid_of_[k] < 0;
+      }
+    std::uint8_t flag = present >= 2 && deformable >= 1 ? body_pair : 0;
+    if (deformable > 0 && !plane_point_.empty()) {
+      const Vec<Dim> x = g.node_position(g.node_indices(I));
+      for (std::size_t P = 0; P < plane_point_.size(); ++P)
+        if ((x - plane_point_[P]).dot(settings_.planes[P].normal) <= 0) flag |= behind_plane;
+    }
+    if (flag) {
+      is_candidate_[I] = flag;
+      candidates_.push_back(I);
+    }
+  }
+  bool pairs = false;
+  for (const Index I : candidates_) pairs |= (is_candidate_[I] & body_pair) != 0;
+  if (!pairs) return;
+  // Normals of every body (eq. 5.12 or 5.9-5.11), then the pair normal at two-body nodes.
+  std::vector<Real> density;
+  for (int k = 0; k < n_; ++k) {
+    auto& grad = gradient_[k];
+    if (settings_.normals == NormalMethod::mass_gradient) {
+      std::memset(static_cast<void*>(grad.data()), 0, grad.size() * sizeof(VecU<Dim>));
+      passes_->mass_gradient(bodies_[k], g, grad);
+    } else {
+      density_normals<Dim>(bodies_[k], g, candidates_, grad, density);
+    }
+  }
+  for (const Index I : candidates_) {
+    if (!(is_candidate_[I] & body_pair)) continue;
+    int a = -1, b = -1, count = 0;
+    for (int k = 0; k < n_; ++k)
+      if (own_[k].node[I].mass > cutoff) {
+        (count == 0 ? a : b) = k;
+        ++count;
+      }
+    if (count != 2) continue;  // three or more bodies: each uses its own normal
+    const Vec<Dim> na = unit_or_zero<Dim>(gradient_[a][I]), nb = unit_or_zero<Dim>(gradient_[b][I]);
+    // Equal and opposite normals (momentum is then conserved exactly, Bardenhagen et al. 2001); a rigid
+    // body imposes its own (review §5.1.5).
+    Vec<Dim> n;
+    if (rigid_of_[a] >= 0)
+      n = na;
+    else if (rigid_of_[b] >= 0)
+      n = -nb;
+    else
+      n = unit_or_zero<Dim>(na - nb);
+    if (n.squaredNorm() == 0) n = na.squaredNorm() > 0 ? na : Vec<Dim>(-nb);
+    pair_normal_[I] = n;
+  }
+  if (settings_.onset != Onset::particle_gap) return;
+  for (int k = 0; k < n_; ++k)
+    for (const Index I : candidates_) extent_[k][I] = -std::numeric_limits<Real>::infinity();
+  // Extents along the pair normal: of the lower-numbered body along +n, of the other along -n. Each body
+  // is scanned with both signs; at a node only the one matching its place in the pair is read.
+  for (int k = 0; k < n_; ++k)
+    passes_->extents(bodies_[k], g, is_candidate_.data(), pair_normal_.data(), 1, extent_[k]);
+  // A second array per body would double the memory; instead the upper body's extent is recomputed with
+  // sign -1 into a scratch copy.
+  gap_upper_.resize(n_);
+  for (int k = 0; k < n_; ++k) {
+    gap_upper_[k].assign(extent_[k].size(), -std::numeric_limits<Real>::infinity());
+    passes_->extents(bodies_[k], g, is_candidate_.data(), pair_normal_.data(), -1, gap_upper_[k]);
+  }
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage stage) {
+  const Real cutoff = ctx.settings.mass_cutoff, dt = ctx.dt;
+  const Vec<Dim> gravity = ctx.settings.gravity;
+  const Real t = stage == GridStage::mapped ? ctx.time : ctx.time + ctx.dt;
+  auto member = stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped;
+  for (int k = 0; k < n_; ++k) {
+    Grid<Dim>& own = own_[k];
+    if (rigid_of_[k] >= 0) {  // rigid: the prescribed velocity on every node it touches (Alg. 4)
+      const VecU<Dim> v = rigid_velocity(rigid_of_[k], t);
+      tbb::parallel_for(tbb::blocked_range<Index>(0, own.size(), 1 << 12), [&](const auto& r) {
+        for (Index i = r.begin(); i != r.end(); ++i)
+          own.velocity[i].*member = own.node[i].mass > cutoff ? v : VecU<Dim>::Zero();
+      });
+      continue;
+    }
+    tbb::parallel_for(tbb::blocked_range<Index>(0, own.size(), 1 << 12), [&](const auto& r) {
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        const NodeRecord<Dim>& n = own.node[i];
+        NodeVelocity<Dim>& v = own.velocity[i];
+        if (!(n.mass > cutoff)) {
+          v.*member = VecU<Dim>::Zero();
+          continue;
+        }
+        const Real inv_m = 1 / n.mass;
+        if (stage == GridStage::updated)  // eq. 5.1: v~ = (mv + dt (f + m g)) / m
+          v.updated = (n.momentum + dt * (n.force + n.mass * gravity)) * inv_m;
+        else
+          v.mapped = n.momentum * inv_m;
+      }
+    });
+    if (!ctx.boundary.empty()) ctx.boundary.apply(own.velocity, member, t);
+  }
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) {
+  body_velocities(ctx, stage);
+  // v^t is left as mapped: the FLIP increment v~ - v^t carries the contact impulse to the particles.
+  if (stage == GridStage::mapped) return;
+  const bool record = stage == GridStage::updated;
+  correct(ctx, stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped, record);
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVelocity<Dim>::*member, bool record) {
+  const Real cutoff = ctx.settings.mass_cutoff;
+  const Real t = ctx.time + ctx.dt;
+  const int slots = n_ + static_cast<int>(settings_.planes.size());
+  if (record)
+    for (std::size_t s = 0; s < step_force_.size(); ++s) {
+      step_force_[s].setZero();
+      step_normal_[s] = 0;
+    }
+  Index corrected_nodes = 0;
+  std::vector<int> present;
+  std::vector<Vec<Dim>> plane_v(settings_.planes.size());
+  for (std::size_t P = 0; P < plane_v.size(); ++P) plane_v[P] = plane_velocity(static_cast<int>(P), t);
+  const auto& g = ctx.grid.geometry;
+  for (const Index I : candidates_) {
+    const std::uint8_t flag = is_candidate_[I];
+    present.clear();
+    for (int k = 0; k < n_; ++k)
+      if (own_[k].node[I].mass > cutoff) present.push_back(k);
+    bool corrected = false;
+    auto apply = [&](int k, int other, const Vec<Dim>& v_cm, const Vec<Dim>& n, Real mu) {
+      Vec<Dim> v = own_[k].velocity[I].*member;
+      const Vec<Dim> before = v;
+      if (!correct_velocity<Dim>(v, v_cm, n, mu)) return;
+      own_[k].velocity[I].*member = v;
+      corrected = true;
+      if (!record) return;
+      const Vec<Dim> f = own_[k].node[I].mass * (v - before) / ctx.dt;
+      step_force_[k * slots + other] += f;
+      step_normal_[k * slots + other] -= f.dot(n);
+    };
+    if ((flag & body_pair) && present.size() >= 2) {
+      int rigid = -1;
+      for (const int k : present)
+        if (rigid_of_[k] >= 0 && rigid < 0) rigid = k;
+      Vec<Dim> v_cm = Vec<Dim>::Zero();
+      if (rigid >= 0) {  // infinite mass: the centre of mass moves with the rigid body (review §5.1.5)
+        v_cm = own_[rigid].velocity[I].*member;
+      } else {  // eq. 5.3
+        Real m = 0;
+        for (const int k : present) {
+          v_cm += own_[k].node[I].mass * Vec<Dim>(own_[k].velocity[I].*member);
+          m += own_[k].node[I].mass;
+        }
+        v_cm /= m;
+      }
+      if (present.size() == 2) {
+        const int a = present[0], b = present[1];
+        bool touching = true;
+        if (settings_.onset == Onset::particle_gap)  // gap between the particles' surfaces along n
+          touching = -(extent_[a][I] + gap_upper_[b][I]) <= 0;
+        if (touching) {
+          const Vec<Dim> n = pair_normal_[I];
+          const Real mu = settings_.friction[a * n_ + b];
+          if (rigid_of_[a] < 0) apply(a, b, v_cm, n, mu);
+          if (rigid_of_[b] < 0) apply(b, a, v_cm, -n, mu);
+        }
+      } else {
+        // Three or more bodies: each against the system (or the rigid body), with its own normal and
+        // the friction of its pair with the heaviest other body at the node.
+        const Vec<Dim> rigid_n = rigid >= 0 ? unit_or_zero<Dim>(gradient_[rigid][I]) : Vec<Dim>::Zero();
+        for (const int k : present) {
+          if (rigid_of_[k] >= 0) continue;
+          int other = rigid;
+          if (other < 0) {
+            Real heaviest = -1;
+            for (const int j : present)
+              if (j != k && own_[j].node[I].mass > heaviest) heaviest = own_[j].node[I].mass, other = j;
+          }
+          const Vec<Dim> n = rigid >= 0 ? Vec<Dim>(-rigid_n) : unit_or_zero<Dim>(gradient_[k][I]);
+          apply(k, other, v_cm, n, settings_.friction[k * n_ + other]);
+        }
+      }
+    }
+    if (flag & behind_plane) {
+      const Vec<Dim> x = g.node_position(g.node_indices(I));
+      for (std::size_t P = 0; P < settings_.planes.size(); ++P) {
+        const auto& plane = settings_.planes[P];
+        if ((x - plane_point_[P]).dot(plane.normal) > 0) continue;
+        for (const int k : present)
+          if (rigid_of_[k] < 0) apply(k, n_ + static_cast<int>(P), plane_v[P], -plane.normal, plane.friction);
+      }
+    }
+    corrected_nodes += corrected;
+  }
+  if (!record) return;
+  contact_nodes_last_ = corrected_nodes;
+  if (corrected_nodes > 0 && onset_time_ < 0) onset_time_ = t;
+  for (std::size_t s = 0; s < step_force_.size(); ++s) {
+    impulse_[s] += ctx.dt * step_force_[s];
+    impulse_n_[s] += ctx.dt * step_normal_[s];
+  }
+  last_forces_.clear();
+  for (int k = 0; k < n_; ++k)
+    for (int o = 0; o < slots; ++o) {
+      const int s = k * slots + o;
+      if (step_force_[s].squaredNorm() == 0) continue;
+      PairForce<Dim> f;
+      f.body = k;
+      f.other = o < n_ ? o : -1 - (o - n_);
+      f.force = step_force_[s];
+      f.normal = step_normal_[s];
+      f.tangential = std::sqrt(std::max<Real>(0, f.force.squaredNorm() - f.normal * f.normal));
+      last_forces_.push_back(f);
+    }
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::end_of_step(StepContext<Dim>& ctx) {
+  const Real t = ctx.time + ctx.dt;
+  // Rigid particles keep exactly the prescribed velocity (the grid gives it up to round-off).
+  for (std::size_t r = 0; r < settings_.rigid_bodies.size(); ++r) {
+    const VecU<Dim> v = rigid_velocity(static_cast<int>(r), t);
+    for (auto& vp : bodies_[settings_.rigid_bodies[r].body].particles.v) vp = v;
+  }
+  for (std::size_t P = 0; P < plane_point_.size(); ++P)  // midpoint rule for the plane's position
+    plane_point_[P] += ctx.dt * plane_velocity(static_cast<int>(P), ctx.time + 0.5 * ctx.dt);
+  if (csv_.is_open() && t - last_row_time_ >= settings_.force_interval * (1 - 1e-9)) write_forces(t);
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::write_forces(Real time) {
+  const Real span = time - last_row_time_;
+  last_row_time_ = time;
+  if (!(span > 0)) return;
+  const int slots = n_ + static_cast<int>(settings_.planes.size());
+  auto name_of = [&](int o) { return o < n_ ? bodies_[o].name : settings_.planes[o - n_].name; };
+  auto row = [&](const std::string& body, const std::string& other, const Vec<Dim>& impulse, Real normal) {
+    const Vec<Dim> f = impulse / span;
+    const Real fn = normal / span;
+    const Real ft = std::sqrt(std::max<Real>(0, f.squaredNorm() - fn * fn));
+    csv_ << time << ',' << body << ',' << other << ',' << fn << ',' << ft;
+    for (int d = 0; d < Dim; ++d) csv_ << ',' << f[d];
+    csv_ << '\n';
+  };
+  // Force on every deformable body from each partner, then the reaction on every rigid body and plane
+  // (minus the sum of what it gave), which is what a platen's load cell would read.
+  std::vector<Vec<Dim>> reaction(slots, Vec<Dim>::Zero());
+  std::vector<Real> reaction_n(slots, 0);
+  std::vector<bool> touched(slots, false);
+  for (int k = 0; k < n_; ++k)
+    for (int o = 0; o < slots; ++o) {
+      const int s = k * slots + o;
+      if (impulse_[s].squaredNorm() == 0) continue;
+      row(bodies_[k].name, name_of(o), impulse_[s], impulse_n_[s]);
+      reaction[o] -= impulse_[s];
+      reaction_n[o] += impulse_n_[s];
+      touched[o] = true;
+      impulse_[s].setZero();
+      impulse_n_[s] = 0;
+    }
+  for (int o = 0; o < slots; ++o) {
+    const bool rigid = o >= n_ || rigid_of_[o] >= 0;
+    if (rigid) row(name_of(o), "all", reaction[o], touched[o] ? reaction_n[o] : 0);
+  }
+  csv_.flush();
+}
+
+template class MultiVelocityContact<1>;
+template class MultiVelocityContact<2>;
+template class MultiVelocityContact<3>;
+
+}  // namespace mpm::contact

@@ -1,0 +1,80 @@
+#include "shape_passes.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "mpm/shape/bernstein_quadratic.hpp"
+#include "mpm/shape/cubic_bspline.hpp"
+#include "mpm/shape/gimp.hpp"
+#include "mpm/shape/linear_hat.hpp"
+#include "mpm/shape/quadratic_bspline.hpp"
+#include "mpm/shape/stencil.hpp"
+#include "mpm/slab_binning.hpp"
+
+namespace mpm::contact {
+namespace {
+
+template <int Dim, class Shape>
+class Passes final : public ShapePasses<Dim> {
+ public:
+  void mass_gradient(const Body<Dim>& body, const GridGeometry<Dim>& g, std::vector<VecU<Dim>>& out) const override {
+    const auto& p = body.particles;
+    VecU<Dim>* n = out.data();
+    // Same slab colouring as the P2G scatter: race-free and deterministic.
+    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+      Stencil<Dim, Shape> st;
+      const ParticleDomain<Dim, Shape> domain(p);
+      for (Index k = 0; k < count; ++k) {
+        const Index i = index[k];
+        st.compute(p.x[i], g, domain(i));
+        const Real m = p.mass[i];
+        for (int a = 0; a < st.count; ++a)
+          for (int d = 0; d < Dim; ++d) n[st.node[a]][d] += m * st.grad[a][d];
+      }
+    });
+  }
+
+  void extents(const Body<Dim>& body, const GridGeometry<Dim>& g, const std::uint8_t* flag, const VecU<Dim>* normal,
+               Real sign, std::vector<Real>& out) const override {
+    const auto& p = body.particles;
+    Real* e = out.data();
+    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+      Stencil<Dim, Shape> st;
+      const ParticleDomain<Dim, Shape> domain(p);
+      for (Index k = 0; k < count; ++k) {
+        const Index i = index[k];
+        st.compute(p.x[i], g, domain(i));
+        bool any = false;
+        for (int a = 0; a < st.count; ++a) any |= (flag[st.node[a]] & 1) != 0 && st.w[a] > 0;
+        if (!any) continue;
+        const Real half = 0.5 * std::pow(p.volume0[i] * MatU<Dim>(p.F[i]).determinant(), 1.0 / Dim);
+        for (int a = 0; a < st.count; ++a) {
+          const Index I = st.node[a];
+          if (!(flag[I] & 1) || !(st.w[a] > 0)) continue;
+          const Real s = sign * Vec<Dim>(p.x[i]).dot(Vec<Dim>(normal[I])) + half;
+          if (s > e[I]) e[I] = s;
+        }
+      }
+    });
+  }
+};
+
+}  // namespace
+
+template <int Dim>
+std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape) {
+  if (shape == LinearHat::name) return std::make_unique<Passes<Dim, LinearHat>>();
+  if (shape == CubicBSpline::name) return std::make_unique<Passes<Dim, CubicBSpline>>();
+  if (shape == QuadraticBSpline::name) return std::make_unique<Passes<Dim, QuadraticBSpline>>();
+  if (shape == BernsteinQuadratic::name) return std::make_unique<Passes<Dim, BernsteinQuadratic>>();
+  if (shape == UGimp::name) return std::make_unique<Passes<Dim, UGimp>>();
+  if (shape == CpGimp::name) return std::make_unique<Passes<Dim, CpGimp>>();
+  throw std::invalid_argument("contact is not available with the shape function '" + shape +
+                              "' (valid: linear, cubic_bspline, quadratic_bspline, bernstein, gimp, cpgimp)");
+}
+
+template std::unique_ptr<ShapePasses<1>> make_shape_passes<1>(const std::string&);
+template std::unique_ptr<ShapePasses<2>> make_shape_passes<2>(const std::string&);
+template std::unique_ptr<ShapePasses<3>> make_shape_passes<3>(const std::string&);
+
+}  // namespace mpm::contact

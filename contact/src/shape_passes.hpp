@@ -1,0 +1,29 @@
+#pragma once
+// The contact module's particle passes that need the scene's shape function (private to contact/):
+// the mass gradient of eq. 5.12 and the particle extents of the gap criterion. One virtual call per body
+// per step; the loops inside are templated on the shape like the schemes' transfers.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mpm/body.hpp"
+
+namespace mpm::contact {
+
+template <int Dim>
+class ShapePasses {
+ public:
+  virtual ~ShapePasses() = default;
+  /// out[I] += sum_p m_p grad phi_I(x_p) (eq. 5.12, not normalised); `out` has one entry per node.
+  virtual void mass_gradient(const Body<Dim>& body, const GridGeometry<Dim>& g, std::vector<VecU<Dim>>& out) const = 0;
+  /// At the nodes flagged in `flag` (bit 1): out[I] = max(out[I], sign x_p.n_I + s_p) over the particles
+  /// whose support contains I, with n_I = normal[I] and s_p half the particle's size (V_p^(1/Dim) / 2).
+  virtual void extents(const Body<Dim>& body, const GridGeometry<Dim>& g, const std::uint8_t* flag,
+                       const VecU<Dim>* normal, Real sign, std::vector<Real>& out) const = 0;
+};
+
+/// Throws std::invalid_argument for a shape function the contact module does not support (CPDI).
+template <int Dim>
+std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape_function);
+
+}  // namespace mpm::contact

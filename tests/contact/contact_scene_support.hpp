@@ -1,0 +1,69 @@
+#pragma once
+// Helpers of the contact tests: scenes from YAML text with @KEY@ placeholders, the contact module of a
+// built simulation, and centre-of-mass quantities of a body.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "../libmpm/scene_fixture.hpp"
+#include "mpm/contact/multi_velocity_contact.hpp"
+
+namespace mpm::test {
+
+inline std::string fill(std::string text, const std::map<std::string, std::string>& values) {
+  for (const auto& [key, value] : values) {
+    const std::string marker = "@" + key + "@";
+    for (auto at = text.find(marker); at != std::string::npos; at = text.find(marker, at + value.size()))
+      text.replace(at, marker.size(), value);
+  }
+  return text;
+}
+
+template <int Dim>
+contact::MultiVelocityContact<Dim>* contact_module(Simulation<Dim>& sim) {
+  for (const auto& m : sim.modules())
+    if (auto* c = dynamic_cast<contact::MultiVelocityContact<Dim>*>(m.get())) return c;
+  return nullptr;
+}
+
+/// Mass-weighted mean velocity of a body.
+template <int Dim>
+Vec<Dim> body_velocity(const Body<Dim>& body) {
+  Vec<Dim> mv = Vec<Dim>::Zero();
+  Real m = 0;
+  for (Index i = 0; i < body.particles.size(); ++i) {
+    mv += body.particles.mass[i] * Vec<Dim>(body.particles.v[i]);
+    m += body.particles.mass[i];
+  }
+  return mv / m;
+}
+
+/// Total linear momentum of all bodies.
+template <int Dim>
+Vec<Dim> total_momentum(const Simulation<Dim>& sim) {
+  Vec<Dim> p = Vec<Dim>::Zero();
+  for (const auto& b : sim.bodies())
+    for (Index i = 0; i < b.particles.size(); ++i) p += b.particles.mass[i] * Vec<Dim>(b.particles.v[i]);
+  return p;
+}
+
+/// Angular momentum about the origin, sum m_p x_p x v_p (2D: the z component).
+inline Real angular_momentum(const Simulation<2>& sim) {
+  Real L = 0;
+  for (const auto& b : sim.bodies())
+    for (Index i = 0; i < b.particles.size(); ++i)
+      L +=
+          b.particles.mass[i] * (b.particles.x[i][0] * b.particles.v[i][1] - b.particles.x[i][1] * b.particles.v[i][0]);
+  return L;
+}
+
+/// Least-squares slope of y(t).
+inline double slope(const std::vector<double>& t, const std::vector<double>& y) {
+  double st = 0, sy = 0, stt = 0, sty = 0;
+  const double n = static_cast<double>(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) st += t[i], sy += y[i], stt += t[i] * t[i], sty += t[i] * y[i];
+  return (n * sty - st * sy) / (n * stt - st * st);
+}
+
+}  // namespace mpm::test
