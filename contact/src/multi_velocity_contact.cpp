@@ -142,17 +142,6 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
   impulse_n_.assign(slots, 0);
   step_force_.assign(slots, Vec<Dim>::Zero());
   step_normal_.assign(slots, 0);
-  if (!settings_.force_file.empty()) {
-    const std::filesystem::path file(settings_.force_file);
-    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-    csv_.open(file);
-    if (!csv_) throw std::runtime_error("contact: cannot write the force file " + settings_.force_file);
-    csv_ << "time,body,other,normal_force,tangential_force";
-    const char* axis[] = {"x", "y", "z"};
-    for (int d = 0; d < Dim; ++d) csv_ << ",force_" << axis[d];
-    csv_ << '\n';
-    csv_.precision(10);
-  }
 }
 
 template <int Dim>
@@ -426,11 +415,22 @@ void MultiVelocityContact<Dim>::end_of_step(StepContext<Dim>& ctx) {
   }
   for (std::size_t P = 0; P < plane_point_.size(); ++P)  // midpoint rule for the plane's position
     plane_point_[P] += ctx.dt * plane_velocity(static_cast<int>(P), ctx.time + 0.5 * ctx.dt);
-  if (csv_.is_open() && t - last_row_time_ >= settings_.force_interval * (1 - 1e-9)) write_forces(t);
+  if (!settings_.force_file.empty() && t - last_row_time_ >= settings_.force_interval * (1 - 1e-9)) write_forces(t);
 }
 
 template <int Dim>
 void MultiVelocityContact<Dim>::write_forces(Real time) {
+  if (!csv_.is_open()) {  // opened at the first row: building a simulation (mpm check) writes nothing
+    const std::filesystem::path file(settings_.force_file);
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+    csv_.open(file);
+    if (!csv_) throw std::runtime_error("contact: cannot write the force file " + settings_.force_file);
+    csv_ << "time,body,other,normal_force,tangential_force";
+    const char* axis[] = {"x", "y", "z"};
+    for (int d = 0; d < Dim; ++d) csv_ << ",force_" << axis[d];
+    csv_ << '\n';
+    csv_.precision(10);
+  }
   const Real span = time - last_row_time_;
   last_row_time_ = time;
   if (!(span > 0)) return;

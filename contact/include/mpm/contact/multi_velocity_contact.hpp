@@ -113,7 +113,7 @@ class MultiVelocityContact final : public Module<Dim> {
   Real onset_time_ = -1;
   Index contact_nodes_last_ = 0;
   Real last_row_time_ = 0;
-  std::ofstream csv_;
+  std::ofstream csv_;  ///< opened at the first row
 };
 
 }  // namespace mpm::contact
