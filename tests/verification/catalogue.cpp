@@ -77,13 +77,6 @@ CaseRun bar_mode1(const std::string& scheme, const std::string& shape, int cells
   return run;
 }
 
-void add(std::vector<VerificationCase>& list, const std::string& family, int dimension, std::string reference,
-         std::string measure, const std::string& scheme, const std::string& shape, std::vector<int> resolutions,
-         std::function<CaseRun(int)> run) {
-  list.push_back({family + "/" + scheme + "/" + shape, family, dimension, std::move(reference), std::move(measure),
-                  scheme, shape, std::move(resolutions), std::move(run)});
-}
-
 /// The elastic cases of the core engine (review §6.1-6.2, the 000 paper).
 void add_elastic_cases(std::vector<VerificationCase>& list, bool quick, int refinements) {
   const auto ladder = [&](std::vector<int> full, std::size_t keep) {
@@ -97,8 +90,8 @@ void add_elastic_cases(std::vector<VerificationCase>& list, bool quick, int refi
 
   // Bar vibration (review §6.1.1): every method of 1D.
   for (const auto& [scheme, shape] : methods(1))
-    add(list, "bar_mode1", 1, "exact modal solution, review eq. 6.4", "max |v_cm error| / amplitude (-)", scheme, shape,
-        ladder({8, 16, 32, 64}, 3), [scheme, shape](int n) { return bar_mode1(scheme, shape, n); });
+    add_case(list, "bar_mode1", 1, "exact modal solution, review eq. 6.4", "max |v_cm error| / amplitude (-)", scheme,
+             shape, ladder({8, 16, 32, 64}, 3), [scheme, shape](int n) { return bar_mode1(scheme, shape, n); });
 
   // Manufactured solutions (review §6.2.1-6.2.2, App. A): every method in 1D and 2D, linear and cubic
   // B-spline functions with every scheme in 3D.
@@ -117,66 +110,73 @@ void add_elastic_cases(std::vector<VerificationCase>& list, bool quick, int refi
     if (shape == "linear" || shape == "cubic_bspline") mms.push_back({3, 0.05, scheme, shape, {4, 8, 16}, 2});
   for (const auto& m : mms) {
     const std::string name = "mms_" + std::to_string(m.dimension) + "d_" + (m.G < 1e-3 ? "small" : "large");
-    add(list, name, m.dimension, "manufactured solution, review §6.2 and App. A (G = " + std::to_string(m.G) + ")",
-        "e1 (m)", m.scheme, m.shape, ladder(m.cells, m.quick_keep), [m](int n) {
-          MmsSpec s{m.dimension, m.scheme, m.shape, n, 2, m.G, 1.0};
-          const MmsResult r = run_mms(s);
-          CaseRun c = from(r, r.e1);
-          c.particles = r.particles;
-          c.h = r.h;
-          return c;
-        });
+    add_case(list, name, m.dimension, "manufactured solution, review §6.2 and App. A (G = " + std::to_string(m.G) + ")",
+             "e1 (m)", m.scheme, m.shape, ladder(m.cells, m.quick_keep), [m](int n) {
+               MmsSpec s{m.dimension, m.scheme, m.shape, n, 2, m.G, 1.0};
+               const MmsResult r = run_mms(s);
+               CaseRun c = from(r, r.e1);
+               c.particles = r.particles;
+               c.h = r.h;
+               return c;
+             });
   }
 
   // Generalized vortex (review §6.2.3).
   for (const auto& [scheme, shape] : std::vector<std::pair<const char*, const char*>>{
            {"tlmpm", "linear"}, {"tlmpm", "bernstein"}, {"musl", "linear"}, {"musl", "cpdi_r4"}})
-    add(list, "vortex", 2, "manufactured solution, review §6.2.3", "e1 (m)", scheme, shape, ladder({40, 60, 80}, 2),
-        [=](int n) {
-          VortexSpec s;
-          s.scheme = scheme;
-          s.shape_function = shape;
-          s.cells_across = n;
-          s.particles_per_cell_per_axis = 2;
-          s.flip_fraction = 1;
-          const VortexResult r = run_vortex(s);
-          CaseRun c = from(r, r.e1);
-          c.particles = r.particles;
-          c.h = r.h;
-          return c;
-        });
+    add_case(list, "vortex", 2, "manufactured solution, review §6.2.3", "e1 (m)", scheme, shape,
+             ladder({40, 60, 80}, 2), [=](int n) {
+               VortexSpec s;
+               s.scheme = scheme;
+               s.shape_function = shape;
+               s.cells_across = n;
+               s.particles_per_cell_per_axis = 2;
+               s.flip_fraction = 1;
+               const VortexResult r = run_vortex(s);
+               CaseRun c = from(r, r.e1);
+               c.particles = r.particles;
+               c.h = r.h;
+               return c;
+             });
 
   // The 000 paper's 1D TLMPM cases.
   for (const char* shape : {"lagrange_quadratic", "linear"}) {
-    add(list, "tlmpm_column", 1, "exact static Neo-Hookean column (000 paper, case a)",
-        "max nodal |u - u_exact| / |u(L)| (-)", "tlmpm", shape, ladder({10, 20, 40}, 2), [=](int n) {
-          ColumnSpec s;
-          s.shape_function = shape;
-          s.elements = n;
-          s.ramp = "smooth";
-          s.ramp_gravity = true;
-          const ColumnResult r = run_column(s);
-          CaseRun c = from(r, r.max_nodal_error);
-          c.particles = r.particles;
-          c.h = 0.1 / (2 * n);
-          return c;
-        });
-    add(list, "tlmpm_step_load", 1, "series solution, 000 paper eq. 70 (load 1.27e4 Pa)",
-        "RMS tip error / (2|tau|L/E) (-)", "tlmpm", shape, ladder({8, 16, 32, 64}, 3), [=](int n) {
-          StepLoadSpec s;
-          s.shape_function = shape;
-          s.elements = n;
-          s.traction = -1.27e4;
-          const StepLoadResult r = run_step_load(s);
-          CaseRun c = from(r, r.rms_relative);
-          c.particles = static_cast<long long>(n) * s.particles_per_element;
-          c.h = r.element_length / 2;
-          return c;
-        });
+    add_case(list, "tlmpm_column", 1, "exact static Neo-Hookean column (000 paper, case a)",
+             "max nodal |u - u_exact| / |u(L)| (-)", "tlmpm", shape, ladder({10, 20, 40}, 2), [=](int n) {
+               ColumnSpec s;
+               s.shape_function = shape;
+               s.elements = n;
+               s.ramp = "smooth";
+               s.ramp_gravity = true;
+               const ColumnResult r = run_column(s);
+               CaseRun c = from(r, r.max_nodal_error);
+               c.particles = r.particles;
+               c.h = 0.1 / (2 * n);
+               return c;
+             });
+    add_case(list, "tlmpm_step_load", 1, "series solution, 000 paper eq. 70 (load 1.27e4 Pa)",
+             "RMS tip error / (2|tau|L/E) (-)", "tlmpm", shape, ladder({8, 16, 32, 64}, 3), [=](int n) {
+               StepLoadSpec s;
+               s.shape_function = shape;
+               s.elements = n;
+               s.traction = -1.27e4;
+               const StepLoadResult r = run_step_load(s);
+               CaseRun c = from(r, r.rms_relative);
+               c.particles = static_cast<long long>(n) * s.particles_per_element;
+               c.h = r.element_length / 2;
+               return c;
+             });
   }
 }
 
 }  // namespace
+
+void add_case(std::vector<VerificationCase>& list, const std::string& family, int dimension, std::string reference,
+              std::string measure, const std::string& scheme, const std::string& shape, std::vector<int> resolutions,
+              std::function<CaseRun(int)> run) {
+  list.push_back({family + "/" + scheme + "/" + shape, family, dimension, std::move(reference), std::move(measure),
+                  scheme, shape, std::move(resolutions), std::move(run)});
+}
 
 std::vector<std::pair<std::string, std::string>> methods(int dimension) {
   std::vector<std::pair<std::string, std::string>> out;

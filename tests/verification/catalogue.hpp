@@ -38,6 +38,11 @@ struct VerificationCase {
   std::function<CaseRun(int resolution)> run;
 };
 
+/// Appends the case family/scheme/shape (the name the report and the tests use) to `list`.
+void add_case(std::vector<VerificationCase>& list, const std::string& family, int dimension, std::string reference,
+              std::string measure, const std::string& scheme, const std::string& shape, std::vector<int> resolutions,
+              std::function<CaseRun(int)> run);
+
 /// Every registered case. `quick`: shorter ladders (smoke runs: the tests run the first resolution of each).
 /// `refinements` (ignored when quick): continue every ladder by that many geometric steps (the full report).
 std::vector<VerificationCase> catalogue(bool quick = false, int refinements = 0);

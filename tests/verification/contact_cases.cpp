@@ -70,19 +70,12 @@ void add_contact_cases(std::vector<VerificationCase>& list, bool quick, int refi
   for (int r = 0; !quick && r < refinements; ++r) ladder.push_back(2 * ladder.back());
   for (const auto& [scheme, shape] :
        {std::pair<const char*, const char*>{"musl", "linear"}, {"usf", "linear"}, {"musl", "cubic_bspline"}}) {
-    VerificationCase c;
-    c.family = "incline_block";
-    c.name = c.family + "/" + scheme + "/" + shape;
-    c.dimension = 2;
-    c.reference = "rigid-body mechanics: a = g (sin 30 - 0.2 cos 30) = 3.2059 m/s^2 (contact/README.md)";
-    c.error_measure = "relative error of the sliding acceleration (-)";
-    c.scheme = scheme;
-    c.shape_function = shape;
-    c.resolutions = ladder;
-    c.run = [scheme = std::string(scheme), shape = std::string(shape)](int n) {
-      return run_incline_block(scheme, shape, n);
-    };
-    list.push_back(std::move(c));
+    add_case(list, "incline_block", 2,
+             "rigid-body mechanics: a = g (sin 30 - 0.2 cos 30) = 3.2059 m/s^2 (contact/README.md)",
+             "relative error of the sliding acceleration (-)", scheme, shape, ladder,
+             [scheme = std::string(scheme), shape = std::string(shape)](int n) {
+               return run_incline_block(scheme, shape, n);
+             });
   }
 }
 

@@ -23,34 +23,25 @@ void add_thermal_cases(std::vector<VerificationCase>& list, bool quick, int refi
     if (quick) ladder.resize(1);
     for (int r = 0; !quick && r < refinements; ++r) ladder.push_back(2 * ladder.back());
     for (const char* shape : {"linear", "cubic_bspline"}) {
-      VerificationCase c;
-      c.family = f.name;
-      c.scheme = "musl";
-      c.shape_function = shape;
-      c.name = c.family + "/musl/" + shape;
-      c.dimension = f.dimension;
-      c.reference = f.reference;
-      c.error_measure = "max nodal |T - T_exact| / (T1 - T0) at t = 0.05 (-)";
-      c.resolutions = ladder;
       const int dim = f.dimension, ppc = f.particles_per_cell;
       const std::string shape_name = shape;
-      c.run = [dim, ppc, shape_name](int n) {
-        HeatSpec s;
-        s.dimension = dim;
-        s.cells = n;
-        s.particles_per_cell = ppc;
-        s.shape_function = shape_name;
-        const HeatResult r = run_heat(s);
-        CaseRun run;
-        run.error = r.failure.empty() ? r.max_error : std::numeric_limits<double>::infinity();
-        run.failure = r.failure;
-        run.wall_seconds = r.wall_seconds;
-        run.steps = r.steps;
-        run.particles = r.particles;
-        run.h = r.h;
-        return run;
-      };
-      list.push_back(std::move(c));
+      add_case(list, f.name, f.dimension, f.reference, "max nodal |T - T_exact| / (T1 - T0) at t = 0.05 (-)", "musl",
+               shape, ladder, [dim, ppc, shape_name](int n) {
+                 HeatSpec s;
+                 s.dimension = dim;
+                 s.cells = n;
+                 s.particles_per_cell = ppc;
+                 s.shape_function = shape_name;
+                 const HeatResult r = run_heat(s);
+                 CaseRun run;
+                 run.error = r.failure.empty() ? r.max_error : std::numeric_limits<double>::infinity();
+                 run.failure = r.failure;
+                 run.wall_seconds = r.wall_seconds;
+                 run.steps = r.steps;
+                 run.particles = r.particles;
+                 run.h = r.h;
+                 return run;
+               });
     }
   }
 }
