@@ -142,8 +142,9 @@ void Simulation<Dim>::run(const std::function<void(const Simulation&)>& after_st
 
 template <int Dim>
 void Simulation<Dim>::take_snapshot() {
-  snapshot_.particles.clear();
-  for (const auto& b : bodies_) snapshot_.particles.push_back(b.particles);
+  // Copied into the buffers of the previous snapshot: no allocation (and no page faults) after the first.
+  snapshot_.particles.resize(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) snapshot_.particles[b] = bodies_[b].particles;
   snapshot_.time = time_;
   snapshot_.step = step_;
   snapshot_.wave_speed = wave_speed_;

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "mpm/shape/cubic_bspline.hpp"
+#include "mpm/shape/factored_stencil.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/quadratic_bspline.hpp"
 #include "mpm/shape/stencil.hpp"
@@ -152,6 +153,46 @@ TEST(ShapeFunctions, CpGimpDomainFollowsF) {
   EXPECT_NEAR(cp(0)[0], 0.075, 1e-15);
   EXPECT_NEAR(cp(0)[1], 0.04, 1e-15);
   EXPECT_NEAR(u(0)[0], 0.05, 1e-15);
+}
+
+// The factored stencil TLMPM caches (factored_stencil.hpp) visits the same nodes, in the same order, with
+// the same weights and gradients as the full stencil, at random points including the boundary cells.
+template <int Dim, class Shape>
+void check_factored_matches_full(int cells, Real half_cells = 0) {
+  std::array<int, Dim> n;
+  n.fill(cells);
+  const GridGeometry<Dim> g(Vec<Dim>::Constant(-0.3), Vec<Dim>::Constant(0.25), n);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<Real> u(0, 1);
+  for (int trial = 0; trial < 200; ++trial) {
+    VecU<Dim> x;
+    for (int d = 0; d < Dim; ++d) x[d] = g.origin[d] + u(rng) * g.h[d] * cells;
+    const Vec<Dim> half = Vec<Dim>::Constant(half_cells * 0.25);
+    Stencil<Dim, Shape> full;
+    FactoredStencil<Dim, Shape> factored;
+    full.compute(x, g, half);
+    factored.compute(x, g, half);
+    int a = 0;
+    factored.for_each(g, [&](Index node, Real w, const Vec<Dim>& grad) {
+      ASSERT_LT(a, full.count);
+      EXPECT_EQ(node, full.node[a]);
+      EXPECT_NEAR(w, full.w[a], 1e-15);
+      for (int d = 0; d < Dim; ++d) EXPECT_NEAR(grad[d], full.grad[a][d], 1e-13);
+      ++a;
+    });
+    EXPECT_EQ(a, full.count);
+  }
+}
+
+TEST(ShapeFunctions, FactoredStencilMatchesFull) {
+  check_factored_matches_full<1, LinearHat>(6);
+  check_factored_matches_full<2, LinearHat>(5);
+  check_factored_matches_full<3, LinearHat>(4);
+  check_factored_matches_full<2, CubicBSpline>(6);
+  check_factored_matches_full<3, CubicBSpline>(5);
+  check_factored_matches_full<3, QuadraticBSpline>(4);
+  check_factored_matches_full<2, UGimp>(5, 0.5);
+  check_factored_matches_full<3, UGimp>(4, 0.5);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 /// looked up per particle. Every field follows reordering (sort by cell) and snapshots.
 
 #include <cstdint>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -34,6 +35,9 @@ struct FieldBase {
   virtual void gather(const std::vector<Index>& order) = 0;  ///< new[i] = old[order[i]]
   virtual void resize(std::size_t n) = 0;
   virtual std::unique_ptr<FieldBase> clone() const = 0;
+  /// Copies `o` (a field of the same type) into this one, reusing the storage: no allocation when the
+  /// sizes agree (snapshots are taken every few steps into the same buffers).
+  virtual bool assign(const FieldBase& o) = 0;
   virtual std::size_t bytes_per_particle() const = 0;
 };
 template <class T>
@@ -43,6 +47,13 @@ struct TypedField final : FieldBase {
   void gather(const std::vector<Index>& order) override { gather_vector(data, order); }
   void resize(std::size_t n) override { data.resize(n, initial); }
   std::unique_ptr<FieldBase> clone() const override { return std::make_unique<TypedField>(*this); }
+  bool assign(const FieldBase& o) override {
+    const auto* t = dynamic_cast<const TypedField*>(&o);
+    if (!t) return false;
+    data = t->data;
+    initial = t->initial;
+    return true;
+  }
   std::size_t bytes_per_particle() const override { return sizeof(T); }
 };
 }  // namespace detail
@@ -71,8 +82,13 @@ class ParticleSet {
     F = o.F;
     stress = o.stress;
     id = o.id;
-    extra_.clear();
-    for (const auto& [name, f] : o.extra_) extra_[name] = f->clone();
+    // Fields present on both sides are copied in place; the rest are cloned or dropped.
+    for (auto it = extra_.begin(); it != extra_.end();)
+      it = o.extra_.count(it->first) ? std::next(it) : extra_.erase(it);
+    for (const auto& [name, f] : o.extra_) {
+      auto it = extra_.find(name);
+      if (it == extra_.end() || !it->second->assign(*f)) extra_[name] = f->clone();
+    }
     return *this;
   }
   ParticleSet(ParticleSet&&) noexcept = default;

@@ -10,12 +10,15 @@
 ///   only; with the same velocity as F, so that x_p - X_p stays the displacement whose gradient is F - I).
 /// The grid only needs to cover the reference shape: current positions may leave it. Particles are
 /// never reordered (the cache is in particle order). There is no automatic contact between bodies.
+/// The cache holds tensor-product stencils in factored form (factored_stencil.hpp): the three particle
+/// passes per step read it, and at 104 B per particle (hats, 3D) instead of 368 B it stays in cache.
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "mpm/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
+#include "mpm/shape/factored_stencil.hpp"
 
 namespace mpm {
 
@@ -42,7 +45,8 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index i = 0; i < p.size(); ++i) {
         cache[i].compute(X[i], grid.geometry, domain(i));
-        for (int a = 0; a < cache[i].count; ++a) nodal_mass_[cache[i].node[a]] += cache[i].w[a] * p.mass[i];
+        for_each_node(cache[i], grid.geometry,
+                      [&](Index n, Real w, const Vec<Dim>&) { nodal_mass_[n] += w * p.mass[i]; });
       }
     }
   }
@@ -104,38 +108,35 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
   }
 
  private:
-  using Cache = std::vector<Stencil<Dim, Shape>>;
+  using Cache = std::vector<ReferenceStencil<Dim, Shape>>;
 
   /// (mv)_I and f_I = -sum V0 P grad_0 phi, scattered with the slab colouring of the reference positions.
   static void map_momentum_and_force(Body<Dim>& body, const Cache& cache, Grid<Dim>& grid) {
     const auto& p = body.particles;
+    const auto& geometry = grid.geometry;
     NodeRecord<Dim>* node = grid.node.data();
     const VecU<Dim>* body_force = kernels::body_force_of(p);
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
-        const auto& st = cache[i];
         const Mat<Dim> F = p.F[i];
         const Real J = F.determinant();
         // First Piola-Kirchhoff stress P = J sigma F^-T (review Table 4), times V0.
         const Mat<Dim> vP = (p.volume0[i] * J) * p.stress[i].block() * F.inverse().transpose();
         const Vec<Dim> mv = p.mass[i] * p.v[i];
-        for (int a = 0; a < st.count; ++a) {
-          NodeRecord<Dim>& n = node[st.node[a]];
-          for (int r = 0; r < Dim; ++r) {
-            Real f = 0;
-            for (int c = 0; c < Dim; ++c) f += vP(r, c) * st.grad[a][c];
-            n.momentum[r] += st.w[a] * mv[r];
-            n.force[r] -= f;
-            if (body_force) n.force[r] += st.w[a] * p.mass[i] * body_force[i][r];
-          }
-        }
+        const Vec<Dim> mb = body_force ? Vec<Dim>(p.mass[i] * body_force[i]) : Vec<Dim>::Zero();
+        for_each_node(cache[i], geometry, [&](Index a, Real w, const Vec<Dim>& grad) {
+          NodeRecord<Dim>& n = node[a];
+          n.momentum += w * mv;
+          n.force += w * mb - vP * grad;
+        });
       }
     });
   }
 
   static void update_velocity_and_remap(Body<Dim>& body, const Cache& cache, StepContext<Dim>& ctx) {
     auto& p = body.particles;
+    const auto& geometry = ctx.grid.geometry;
     NodeRecord<Dim>* node = ctx.grid.node.data();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction;
@@ -144,16 +145,15 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
         const Index i = index[k];
         const auto& st = cache[i];
         Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
-        for (int a = 0; a < st.count; ++a) {
-          const NodeVelocity<Dim>& nv = vel[st.node[a]];
-          v_pic += st.w[a] * nv.updated;
-          dv += st.w[a] * (nv.updated - nv.mapped);
-        }
+        for_each_node(st, geometry, [&](Index a, Real w, const Vec<Dim>&) {
+          const NodeVelocity<Dim>& nv = vel[a];
+          v_pic += w * nv.updated;
+          dv += w * (nv.updated - nv.mapped);
+        });
         const Vec<Dim> v = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
         p.v[i] = v;
         const Vec<Dim> mv = p.mass[i] * v;
-        for (int a = 0; a < st.count; ++a)
-          for (int r = 0; r < Dim; ++r) node[st.node[a]].momentum[r] += st.w[a] * mv[r];
+        for_each_node(st, geometry, [&](Index a, Real w, const Vec<Dim>&) { node[a].momentum += w * mv; });
       }
     });
   }
@@ -165,14 +165,13 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
-      const auto& st = cache[i];
       Mat<Dim> Fdot = Mat<Dim>::Zero();
       Vec<Dim> v_move = Vec<Dim>::Zero();
-      for (int a = 0; a < st.count; ++a) {
-        const NodeVelocity<Dim>& nv = vel[st.node[a]];
-        v_move += st.w[a] * nv.mapped;  // the re-mapped v^{t+dt}, like F (Alg. 3): positions stay consistent with F
-        for (int c = 0; c < Dim; ++c) Fdot.col(c) += nv.mapped * st.grad[a][c];
-      }
+      for_each_node(cache[i], ctx.grid.geometry, [&](Index a, Real w, const Vec<Dim>& grad) {
+        const Vec<Dim> v = vel[a].mapped;
+        v_move += w * v;  // the re-mapped v^{t+dt}, like F (Alg. 3): positions stay consistent with F
+        Fdot.noalias() += v * grad.transpose();
+      });
       p.x[i] += ctx.dt * v_move;
       const Mat<Dim> F = Mat<Dim>(p.F[i]) + ctx.dt * Fdot;
       p.F[i] = F;
