@@ -98,17 +98,35 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     // The grid is the reference configuration: a wave moving at c in the current configuration moves at
     // most at c |row_a(F^-1)| along reference axis a, so the CFL speeds are scaled by the largest of those
     // row norms (a compressed foot shortens the stable step; found by the Taylor anvil).
-    tbb::enumerable_thread_specific<Vec<Dim>> row_norm(Vec<Dim>::Zero());
+    tbb::enumerable_thread_specific<Vec<Dim>> row_norm2(Vec<Dim>::Zero());
     kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) {
-      return deform(body, stencils_[static_cast<std::size_t>(body.index)], ctx, begin, end, L, row_norm.local());
+      return deform(body, stencils_[static_cast<std::size_t>(body.index)], ctx, begin, end, L, row_norm2.local());
     });
-    Vec<Dim> scale = Vec<Dim>::Zero();
-    for (const auto& r : row_norm) scale = scale.cwiseMax(r);
+    Vec<Dim> scale2 = Vec<Dim>::Zero();
+    for (const auto& r : row_norm2) scale2 = scale2.cwiseMax(r);
+    const Vec<Dim> scale = scale2.cwiseSqrt();
     ctx.wave_speed.max_speed = ctx.wave_speed.max_speed.cwiseProduct(scale);
   }
 
  private:
   using Cache = std::vector<ReferenceStencil<Dim, Shape>>;
+
+  /// cof(F) = J F^-T, without a division (the nominal stress needs J F^-T, the inverse cof^T / J).
+  static Mat<Dim> cofactor(const Mat<Dim>& F) {
+    Mat<Dim> c;
+    if constexpr (Dim == 1) {
+      c(0, 0) = 1;
+    } else if constexpr (Dim == 2) {
+      c << F(1, 1), -F(1, 0), -F(0, 1), F(0, 0);
+    } else {
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+          c(i, j) = F(i1, j1) * F(i2, j2) - F(i1, j2) * F(i2, j1);
+        }
+    }
+    return c;
+  }
 
   /// (mv)_I and f_I = -sum V0 P grad_0 phi, scattered with the slab colouring of the reference positions.
   static void map_momentum_and_force(Body<Dim>& body, const Cache& cache, Grid<Dim>& grid) {
@@ -119,10 +137,8 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
-        const Mat<Dim> F = p.F[i];
-        const Real J = F.determinant();
-        // First Piola-Kirchhoff stress P = J sigma F^-T (review Table 4), times V0.
-        const Mat<Dim> vP = (p.volume0[i] * J) * p.stress[i].block() * F.inverse().transpose();
+        // First Piola-Kirchhoff stress P = J sigma F^-T = sigma cof(F) (review Table 4), times V0.
+        const Mat<Dim> vP = p.volume0[i] * (p.stress[i].block() * cofactor(p.F[i]));
         const Vec<Dim> mv = p.mass[i] * p.v[i];
         const Vec<Dim> mb = body_force ? Vec<Dim>(p.mass[i] * body_force[i]) : Vec<Dim>::Zero();
         for_each_node(cache[i], geometry, [&](Index a, Real w, const Vec<Dim>& grad) {
@@ -160,7 +176,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
 
   /// dF/dt = sum v_I^{t+dt} (x) grad_0 phi (eq. 2.67), F += dt dF/dt, L = dF/dt F^-1 (eq. 2.69).
   static bool deform(Body<Dim>& body, const Cache& cache, const StepContext<Dim>& ctx, Index begin, Index end,
-                     MatU<Dim>* L_out, Vec<Dim>& max_row_norm) {
+                     MatU<Dim>* L_out, Vec<Dim>& max_row_norm2) {
     auto& p = body.particles;
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     bool ok = true;
@@ -177,9 +193,9 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
       p.F[i] = F;
       const Real J = F.determinant();
       ok &= J > 0 && std::isfinite(J) && p.x[i].allFinite() && std::isfinite(p.v[i].sum());
-      const Mat<Dim> F_inv = F.inverse();
+      const Mat<Dim> F_inv = cofactor(F).transpose() * (1 / J);
       L_out[i - begin] = Fdot * F_inv;
-      max_row_norm = max_row_norm.cwiseMax(F_inv.rowwise().norm());
+      max_row_norm2 = max_row_norm2.cwiseMax(F_inv.rowwise().squaredNorm());
     }
     return ok;
   }

@@ -16,6 +16,8 @@
 ///   6. Adiabatic heating dT = chi sigma_f d eps_p / (rho c) (eq. B.13), when temperature is tracked.
 /// rate* = max(eps_p_rate / rate0, 1) uses the plastic strain rate of the previous step (explicit, as the
 /// flow stress), T* = (T - T_r)/(T_m - T_r) clamped to [0, 1].
+/// The law is written once for one point (Real) and for lane_count points side by side (Pack, lanes.hpp):
+/// update_point is the scalar entry, update<Dim, Pack> the one the batched material runs on whole packs.
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +25,7 @@
 #include "mpm/plasticity/equation_of_state.hpp"
 #include "mpm/plasticity/flow_stress.hpp"
 #include "mpm/plasticity/johnson_cook_damage.hpp"
+#include "mpm/plasticity/lanes.hpp"
 #include "mpm/plasticity/polar_decomposition.hpp"
 
 namespace mpm::plasticity {
@@ -52,6 +55,59 @@ struct PlasticState {
   Real plastic_work = 0;                               ///< dissipated energy per reference volume, J/m^3
   Real hardening = -1;  ///< cache of flow.hardening(plastic_strain), Pa (-1: not computed yet)
 };
+
+/// v <- x (T = Real), or lane l of v <- x (T = Pack).
+inline void set_lane(Real& v, int, Real x) { v = x; }
+inline void set_lane(Pack& v, int l, Real x) { v[l] = x; }
+
+/// What the point law reads and writes, for one point (T = Real) or lane_count points (T = Pack): the
+/// kinematics at t + dt, the history of PlasticState, the temperature and the Cauchy stress (SymTensor
+/// layout). q is R_t as a quaternion in 3D, (cos, sin) of its angle in 2D, unused in 1D.
+template <int Dim, class T>
+struct PointLanes {
+  T F[Dim][Dim], L[Dim][Dim];
+  T J, volume;
+  T q[4];
+  T plastic_strain, plastic_strain_rate, damage, damage_initiation, plastic_work, hardening;
+  T temperature;
+  T stress[SymTensor<Dim>::size];
+
+  /// This point's history (T = Real), or lane l's (T = Pack), from `st`.
+  void load_state(const PlasticState<Dim>& st, int l) {
+    if constexpr (Dim == 3)
+      for (int k = 0; k < 4; ++k) set_lane(q[k], l, st.rotation.q[k]);
+    if constexpr (Dim == 2) {
+      set_lane(q[0], l, st.rotation.c);
+      set_lane(q[1], l, st.rotation.s);
+    }
+    set_lane(plastic_strain, l, st.plastic_strain);
+    set_lane(plastic_strain_rate, l, st.plastic_strain_rate);
+    set_lane(damage, l, st.damage);
+    set_lane(damage_initiation, l, st.damage_initiation);
+    set_lane(plastic_work, l, st.plastic_work);
+    set_lane(hardening, l, st.hardening);
+  }
+  void store_state(PlasticState<Dim>& st, int l) const {
+    if constexpr (Dim == 3)
+      for (int k = 0; k < 4; ++k) st.rotation.q[k] = lanes::lane(q[k], l);
+    if constexpr (Dim == 2) {
+      st.rotation.c = lanes::lane(q[0], l);
+      st.rotation.s = lanes::lane(q[1], l);
+    }
+    st.plastic_strain = lanes::lane(plastic_strain, l);
+    st.plastic_strain_rate = lanes::lane(plastic_strain_rate, l);
+    st.damage = lanes::lane(damage, l);
+    st.damage_initiation = lanes::lane(damage_initiation, l);
+    st.plastic_work = lanes::lane(plastic_work, l);
+    st.hardening = lanes::lane(hardening, l);
+  }
+};
+
+/// s : s for a symmetric s stored as (xx, yy, zz, xy, yz, xz).
+template <class T>
+inline T squared_norm(const T s[6]) {
+  return s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+}
 
 /// Constants shared by every flow law and equation of state.
 struct PlasticityConstants {
@@ -90,105 +146,171 @@ struct Elastoplastic {
   template <int Dim>
   static inline void update_point(const Params& c, const Mat<Dim>& F, const Mat<Dim>& L, Real J, Real dt, Real volume,
                                   PlasticState<Dim>& state, Real* temperature, SymTensor<Dim>& stress) {
+    PointLanes<Dim, Real> p;
+    for (int i = 0; i < Dim; ++i)
+      for (int j = 0; j < Dim; ++j) {
+        p.F[i][j] = F(i, j);
+        p.L[i][j] = L(i, j);
+      }
+    p.J = J;
+    p.volume = volume;
+    p.load_state(state, 0);
+    p.temperature = temperature ? *temperature : c.room_temperature;
+    for (int k = 0; k < SymTensor<Dim>::size; ++k) p.stress[k] = stress.c[k];
+    update<Dim>(c, dt, temperature != nullptr, p);
+    p.store_state(state, 0);
+    if (temperature) *temperature = p.temperature;
+    for (int k = 0; k < SymTensor<Dim>::size; ++k) stress.c[k] = p.stress[k];
+  }
+
+  /// The step of update_point for one point (T = Real) or lane_count points at once (T = Pack): every
+  /// branch of the law is a mask and a select (lanes.hpp), so both widths run the same arithmetic.
+  /// `track_temperature`: p.temperature is read (softening, EOS energy, expansion) and heated.
+  template <int Dim, class T>
+  static inline void update(const Params& c, Real dt, bool track_temperature, PointLanes<Dim, T>& p) {
+    using Mask = MaskOf<T>;
+    // s = dev(sigma_t) as (xx, yy, zz, xy, yz, xz)
+    T s[6] = {p.stress[0], p.stress[1], p.stress[2], lanes::splat<T>(0), lanes::splat<T>(0), lanes::splat<T>(0)};
+    if constexpr (Dim >= 2) s[3] = p.stress[3];
+    if constexpr (Dim == 3) {
+      s[4] = p.stress[4];
+      s[5] = p.stress[5];
+    }
+    {
+      const T mean = (s[0] + s[1] + s[2]) * (Real(1) / 3);
+      for (int k = 0; k < 3; ++k) s[k] = s[k] - mean;
+    }
     // Alg. 11 in the current frame: with s' = R_t^T dev(sigma_t) R_t and d' = R^T dev(D) R (R = R_{t+dt}),
     // R (s' + 2 G dt d') R^T = Delta R dev(sigma_t) Delta R^T + 2 G dt dev(D), Delta R = R R_t^T; the radial
     // return only scales, so it commutes with the rotation. One rotation per step instead of three.
-    Mat3 s = stress.full();
-    const Real tr_s = s.trace();
-    s.diagonal().array() -= tr_s / 3;
     if constexpr (Dim == 3) {
-      const Real* q = state.rotation.q;
-      const Real q0[4] = {q[0], -q[1], -q[2], -q[3]};  // R_t^T
-      polar_update_warm(F, state.rotation.q);
-      Real dq[4];  // q_{t+dt} (x) conj(q_t)
-      dq[0] = q[0] * q0[0] - q[1] * q0[1] - q[2] * q0[2] - q[3] * q0[3];
-      dq[1] = q[0] * q0[1] + q[1] * q0[0] + q[2] * q0[3] - q[3] * q0[2];
-      dq[2] = q[0] * q0[2] - q[1] * q0[3] + q[2] * q0[0] + q[3] * q0[1];
-      dq[3] = q[0] * q0[3] + q[1] * q0[2] - q[2] * q0[1] + q[3] * q0[0];
-      s = rotate_symmetric(rotation_of(dq), s);
+      const T q0[4] = {p.q[0], T(-p.q[1]), T(-p.q[2]), T(-p.q[3])};  // R_t^T
+      polar_update_warm(p.F, p.q);
+      const T* q = p.q;
+      const T dq[4] = {q[0] * q0[0] - q[1] * q0[1] - q[2] * q0[2] - q[3] * q0[3],  // q_{t+dt} (x) conj(q_t)
+                       q[0] * q0[1] + q[1] * q0[0] + q[2] * q0[3] - q[3] * q0[2],
+                       q[0] * q0[2] - q[1] * q0[3] + q[2] * q0[0] + q[3] * q0[1],
+                       q[0] * q0[3] + q[1] * q0[2] - q[2] * q0[1] + q[3] * q0[0]};
+      T dR[3][3];
+      rotation_matrix(dq, dR);
+      rotate_symmetric(dR, s);
     } else if constexpr (Dim == 2) {
-      const Real a = F(0, 0) + F(1, 1), b = F(1, 0) - F(0, 1), n = 1 / std::hypot(a, b);
-      const Real c1 = a * n, s1 = b * n;
-      const Real dc = c1 * state.rotation.c + s1 * state.rotation.s, ds = s1 * state.rotation.c - c1 * state.rotation.s;
-      state.rotation.c = c1;
-      state.rotation.s = s1;
+      // R about z by atan2(F_yx - F_xy, F_xx + F_yy); p.q = (cos, sin) of R_t
+      const T a = p.F[0][0] + p.F[1][1], b = p.F[1][0] - p.F[0][1];
+      const T n = 1 / lanes::hypot(a, b);
+      const T c1 = a * n, s1 = b * n;
+      const T dc = c1 * p.q[0] + s1 * p.q[1], ds = s1 * p.q[0] - c1 * p.q[1];
+      p.q[0] = c1;
+      p.q[1] = s1;
       // rotate the in-plane block by [[dc, -ds], [ds, dc]]; zz is unchanged
-      const Real xx = s(0, 0), yy = s(1, 1), xy = s(0, 1);
-      s(0, 0) = dc * dc * xx - 2 * dc * ds * xy + ds * ds * yy;
-      s(1, 1) = ds * ds * xx + 2 * dc * ds * xy + dc * dc * yy;
-      s(0, 1) = s(1, 0) = dc * ds * (xx - yy) + (dc * dc - ds * ds) * xy;
+      const T xx = s[0], yy = s[1], xy = s[3];
+      s[0] = dc * dc * xx - 2 * dc * ds * xy + ds * ds * yy;
+      s[1] = ds * ds * xx + 2 * dc * ds * xy + dc * dc * yy;
+      s[3] = dc * ds * (xx - yy) + (dc * dc - ds * ds) * xy;
     }
-    Mat3 d;  // dev(D) in the current frame
-    if constexpr (Dim == 1) {
-      d = Mat3::Zero();
-      d(0, 0) = L(0, 0);
-    } else {
-      const Mat3 L3 = embed<Dim>(L, 0);
-      d = 0.5 * (L3 + L3.transpose());
+    // d = dev(D), D = sym(L), in the current frame
+    T d[6] = {p.L[0][0],          lanes::splat<T>(0), lanes::splat<T>(0),
+              lanes::splat<T>(0), lanes::splat<T>(0), lanes::splat<T>(0)};
+    if constexpr (Dim >= 2) {
+      d[1] = p.L[1][1];
+      d[3] = 0.5 * (p.L[0][1] + p.L[1][0]);
     }
-    const Real tr_d = d.trace();
-    d.diagonal().array() -= tr_d / 3;
+    if constexpr (Dim == 3) {
+      d[2] = p.L[2][2];
+      d[4] = 0.5 * (p.L[1][2] + p.L[2][1]);
+      d[5] = 0.5 * (p.L[0][2] + p.L[2][0]);
+    }
+    const T tr_d = d[0] + d[1] + d[2];
+    {
+      const T mean = tr_d * (Real(1) / 3);
+      for (int k = 0; k < 3; ++k) d[k] = d[k] - mean;
+    }
 
-    const Real T = temperature ? *temperature : c.room_temperature;
-    const Real T_star =
-        c.softening
-            ? std::clamp((T - c.room_temperature) / (c.melting_temperature - c.room_temperature), Real(0), Real(1))
-            : Real(0);
-    const Real D = state.damage;
-    Real d_eps = 0, sigma_f = 0;
-    if (D >= 1) {
-      s.setZero();
-    } else {
-      const Real G = (1 - D) * c.shear_modulus;
-      s += (2 * G * dt) * d;
-      const Real eq = std::sqrt(1.5 * s.squaredNorm());
-      const Real rate_star = std::max(state.plastic_strain_rate / c.reference_strain_rate, Real(1));
-      if (state.hardening < 0) state.hardening = c.flow.hardening(state.plastic_strain);
-      sigma_f = state.hardening * c.flow.factor(rate_star, T_star) * (1 - D);
-      if (eq > sigma_f) {
-        d_eps = (eq - sigma_f) / (3 * G);
-        s *= sigma_f / eq;
+    const T T_now = track_temperature ? p.temperature : lanes::splat<T>(c.room_temperature);
+    const T T_star = c.softening
+                         ? lanes::clamp(T((T_now - c.room_temperature) / (c.melting_temperature - c.room_temperature)),
+                                        Real(0), Real(1))
+                         : lanes::splat<T>(0);
+    // Radial return (Alg. 12). A failed point (D >= 1) keeps no deviatoric stress and does not flow.
+    const T D = p.damage;
+    const Mask broken = D >= 1;
+    const T G = (1 - D) * c.shear_modulus;
+    {
+      const T g2dt = 2 * dt * G;
+      for (int k = 0; k < 6; ++k) s[k] = s[k] + g2dt * d[k];
+    }
+    const T eq = lanes::sqrt(T(1.5 * squared_norm(s)));
+    const T rate_star = lanes::max(T(p.plastic_strain_rate / c.reference_strain_rate), Real(1));
+    const Mask uncached = p.hardening < 0;
+    if (lanes::any(uncached)) p.hardening = lanes::select(uncached, c.flow.hardening(p.plastic_strain), p.hardening);
+    const T flow = p.hardening * c.flow.factor(rate_star, T_star) * (1 - D);
+    const T sigma_f = lanes::select(broken, Real(0), flow);
+    const Mask yielding = lanes::both(eq > sigma_f, lanes::negate(broken));
+    const T d_eps = lanes::select(yielding, T((eq - sigma_f) / (3 * G)), Real(0));
+    {
+      const T to_surface = sigma_f / eq;
+      const T scale = lanes::select(broken, Real(0), lanes::select(yielding, to_surface, Real(1)));
+      for (int k = 0; k < 6; ++k) s[k] = s[k] * scale;
+    }
+
+    // Pressure (eq. B.10; a failed point resists compression only) and artificial bulk viscosity.
+    const T J = p.J;
+    const T e = c.thermal ? T(c.specific_heat * c.density * (T_now - c.room_temperature)) : lanes::splat<T>(0);
+    T J_mech = J;
+    if (c.thermal_expansion != 0) {
+      const T expansion = lanes::exp(T(-3 * c.thermal_expansion * (T_now - c.room_temperature)));
+      J_mech = J * expansion;
+    }
+    T pressure = c.eos.pressure(J_mech, e);
+    pressure = lanes::select(pressure < 0, T(pressure * (1 - D)), pressure);
+    T q_visc = lanes::splat<T>(0);
+    if (c.viscosity_linear > 0 || c.viscosity_quadratic > 0) {
+      const Mask compressing = tr_d < 0;
+      if (lanes::any(compressing)) {
+        const T rho = c.density / J;
+        const T l = lanes::power(p.volume, Real(1) / Dim);
+        const T cb = lanes::sqrt(T(lanes::max(c.eos.tangent_bulk_modulus(J), c.bulk_modulus) / rho));
+        const T q = rho * l * (c.viscosity_quadratic * l * tr_d * tr_d - c.viscosity_linear * cb * tr_d);
+        q_visc = lanes::select(compressing, q, Real(0));
       }
     }
-
-    const Real e = c.thermal ? c.specific_heat * c.density * (T - c.room_temperature) : Real(0);
-    const Real J_mech =
-        c.thermal_expansion != 0 ? J * std::exp(-3 * c.thermal_expansion * (T - c.room_temperature)) : J;
-    Real p = c.eos.pressure(J_mech, e);
-    if (p < 0) p *= 1 - D;
-    Real q = 0;
-    if (tr_d < 0 && (c.viscosity_linear > 0 || c.viscosity_quadratic > 0)) {
-      const Real rho = c.density / J, l = std::pow(volume, Real(1) / Dim);
-      const Real cb = std::sqrt(std::max(c.bulk_modulus, c.eos.tangent_bulk_modulus(J)) / rho);
-      q = rho * l * (c.viscosity_quadratic * l * tr_d * tr_d - c.viscosity_linear * cb * tr_d);
+    const T total_pressure = pressure + q_visc;
+    p.stress[0] = s[0] - total_pressure;
+    p.stress[1] = s[1] - total_pressure;
+    p.stress[2] = s[2] - total_pressure;
+    if constexpr (Dim >= 2) p.stress[3] = s[3];
+    if constexpr (Dim == 3) {
+      p.stress[4] = s[4];
+      p.stress[5] = s[5];
     }
-    Mat3 sigma = s;
-    sigma.diagonal().array() -= p + q;
-    stress = SymTensor<Dim>::from(sigma);
 
-    if (d_eps > 0) {
+    // Damage (Alg. 13), adiabatic heating (eq. B.13), dissipated work; d_eps = 0 leaves them unchanged.
+    const Mask flowing = d_eps > 0;
+    if (lanes::any(flowing)) {
       if (c.damage_enabled) {
-        const Real eq = std::sqrt(1.5 * s.squaredNorm());
-        const Real triaxiality = eq > 0 ? -p / eq : Real(0);
-        const Real rate_star = std::max(d_eps / (dt * c.reference_strain_rate), Real(1));
-        state.damage_initiation += d_eps / c.damage.failure_strain(triaxiality, rate_star, T_star);
-        state.damage = c.damage.damage(state.damage_initiation);
+        const T eq_after = lanes::sqrt(T(1.5 * squared_norm(s)));
+        const T triaxiality = lanes::select(eq_after > 0, T(-pressure / eq_after), Real(0));
+        const T d_rate_star = lanes::max(T(d_eps / (dt * c.reference_strain_rate)), Real(1));
+        const T initiation = p.damage_initiation + d_eps / c.damage.failure_strain(triaxiality, d_rate_star, T_star);
+        p.damage_initiation = lanes::select(flowing, initiation, p.damage_initiation);
+        p.damage = lanes::select(flowing, c.damage.damage(p.damage_initiation), p.damage);
       }
-      if (temperature) *temperature += c.taylor_quinney * sigma_f * d_eps * J / (c.density * c.specific_heat);
-      state.plastic_work += J * sigma_f * d_eps;
+      const T work = J * sigma_f * d_eps;
+      if (track_temperature) p.temperature = p.temperature + (c.taylor_quinney / (c.density * c.specific_heat)) * work;
+      p.plastic_work = p.plastic_work + work;
+      p.plastic_strain = p.plastic_strain + d_eps;
+      // for the next step (one power law per plastic step)
+      p.hardening = lanes::select(flowing, c.flow.hardening(p.plastic_strain), p.hardening);
     }
-    if (d_eps > 0) {
-      state.plastic_strain += d_eps;
-      state.hardening = c.flow.hardening(state.plastic_strain);  // for the next step (one power law per plastic step)
-    }
-    state.plastic_strain_rate = d_eps / dt;
+    p.plastic_strain_rate = d_eps * (1 / dt);
   }
 
   /// Dilatational wave speed sqrt((K_t + 4 G / 3) / rho), rho = rho0 / J, K_t the larger of K and the
   /// EOS tangent modulus (damage ignored: conservative).
-  static inline Real wave_speed_squared(const Params& c, Real J) {
-    const Real K = std::max(c.bulk_modulus, c.eos.tangent_bulk_modulus(J));
-    return (K + 4 * c.shear_modulus / 3) * std::max(J, Real(0)) / c.density;
+  template <class T>
+  static inline T wave_speed_squared(const Params& c, const T& J) {
+    const T K = lanes::max(c.eos.tangent_bulk_modulus(J), c.bulk_modulus);
+    return (K + 4 * c.shear_modulus / 3) * lanes::max(J, Real(0)) * (1 / c.density);
   }
   static inline Real wave_speed(const Params& c, Real J) { return std::sqrt(wave_speed_squared(c, J)); }
 

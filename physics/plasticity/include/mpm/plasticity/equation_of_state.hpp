@@ -11,15 +11,21 @@
 
 #include <algorithm>
 
-#include "mpm/types.hpp"
+#include "mpm/plasticity/lanes.hpp"
 
 namespace mpm::plasticity {
 
 struct LinearEos {
   Real bulk_modulus = 0;  ///< K, Pa
 
-  Real pressure(Real J, Real /*e*/) const { return bulk_modulus * (1 - J); }
-  Real tangent_bulk_modulus(Real J) const { return bulk_modulus * J; }
+  template <class T>
+  T pressure(const T& J, const T& /*e*/) const {
+    return bulk_modulus * (1 - J);
+  }
+  template <class T>
+  T tangent_bulk_modulus(const T& J) const {
+    return bulk_modulus * J;
+  }
   Real energy(Real J) const { return 0.5 * bulk_modulus * (J - 1) * (J - 1); }
 };
 
@@ -29,18 +35,22 @@ struct MieGruneisenEos {
   Real hugoniot_slope = 0;   ///< S, -
   Real gruneisen_gamma = 0;  ///< Gamma0, -
 
-  Real pressure(Real J, Real e) const {
-    const Real mu = 1 / J - 1, den = 1 - (hugoniot_slope - 1) * mu;
+  template <class T>
+  T pressure(const T& J, const T& e) const {
+    const T mu = 1 / J - 1;
+    const T den = 1 - (hugoniot_slope - 1) * mu;
     return density * sound_speed * sound_speed * mu * (1 + (1 - 0.5 * gruneisen_gamma) * mu) / (den * den) +
            gruneisen_gamma * e;
   }
   /// -J dp/dJ = (1 + mu) dp/dmu at e fixed.
-  Real tangent_bulk_modulus(Real J) const {
-    const Real mu = 1 / J - 1, k = hugoniot_slope - 1, g = 1 - 0.5 * gruneisen_gamma;
-    const Real den = 1 - k * mu;
-    const Real num = mu * (1 + g * mu), dnum = 1 + 2 * g * mu;
-    const Real dp = density * sound_speed * sound_speed * (dnum * den + 2 * k * num) / (den * den * den);
-    return std::max(Real(0), (1 + mu) * dp);
+  template <class T>
+  T tangent_bulk_modulus(const T& J) const {
+    const Real k = hugoniot_slope - 1, g = 1 - 0.5 * gruneisen_gamma;
+    const T mu = 1 / J - 1;
+    const T den = 1 - k * mu;
+    const T num = mu * (1 + g * mu), dnum = 1 + 2 * g * mu;
+    const T dp = density * sound_speed * sound_speed * (dnum * den + 2 * k * num) / (den * den * den);
+    return lanes::max(T((1 + mu) * dp), Real(0));
   }
   /// Five-point Gauss-Legendre quadrature of -int_1^J p(J', 0) dJ' (exact to ~1e-9 relative for |J - 1| < 0.3).
   Real energy(Real J) const {
@@ -49,7 +59,7 @@ struct MieGruneisenEos {
                                   0.2369268850561891};
     const Real half = 0.5 * (J - 1), mid = 0.5 * (J + 1);
     Real sum = 0;
-    for (int k = 0; k < 5; ++k) sum += w[k] * pressure(mid + half * x[k], 0);
+    for (int k = 0; k < 5; ++k) sum += w[k] * pressure<Real>(mid + half * x[k], 0);
     return -half * sum;
   }
 };

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/types.hpp"
+#include "mpm/plasticity/lanes.hpp"
 
 namespace mpm::plasticity {
 
@@ -21,15 +21,26 @@ struct JohnsonCookDamage {
   Real evolution_factor = 10;                   ///< k of eq. B.16
 
   /// Equivalent plastic strain at failure for triaxiality sigma*, rate* >= 1, T* in [0, 1].
+  /// One point (Real) or a pack of them (lanes.hpp).
+  template <class T>
+  T failure_strain(const T& triaxiality, const T& rate_star, const T& T_star) const {
+    const T growth = lanes::exp(T(d3 * triaxiality));
+    T eps = d1 + d2 * growth;
+    if (d4 != 0) {
+      const T ln_rate = lanes::log(rate_star);
+      eps = eps * (1 + d4 * ln_rate);
+    }
+    if (d5 != 0) eps = eps * (1 + d5 * T_star);
+    return lanes::max(eps, Real(1e-6));
+  }
   Real failure_strain(Real triaxiality, Real rate_star, Real T_star) const {
-    Real eps = d1 + d2 * std::exp(d3 * triaxiality);
-    if (d4 != 0) eps *= 1 + d4 * std::log(rate_star);
-    if (d5 != 0) eps *= 1 + d5 * T_star;
-    return std::max(eps, Real(1e-6));
+    return failure_strain<Real>(triaxiality, rate_star, T_star);
   }
   /// Damage D for an initiation indicator D_init.
-  Real damage(Real initiation) const {
-    return initiation < 1 ? Real(0) : std::min(Real(1), evolution_factor * (initiation - 1));
+  template <class T>
+  T damage(const T& initiation) const {
+    const T grown = lanes::min(T(evolution_factor * (initiation - 1)), Real(1));
+    return lanes::select(MaskOf<T>(initiation < 1), Real(0), grown);
   }
 };
 

@@ -32,20 +32,27 @@ class PlasticBatch final : public Material<Dim> {
     if (params_.thermal) p.template add_field<Real>("temperature", params_.room_temperature);  // kept if present
   }
 
+  /// Whole packs of lane_count particles run the vector law; the last few particles of a block the
+  /// scalar one (the same arithmetic, lanes.hpp).
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
     State* state = p.template field<State>(state_field).data();
     Real* temperature = params_.thermal ? p.template field<Real>("temperature").data() : nullptr;
-    Real sum = 0;  // finite stresses have a finite sum
-    Vec<Dim> max_v = Vec<Dim>::Zero();
     Real max_c2 = 0;
-    for (Index i = begin; i != end; ++i) {
+    Index i = begin;
+    for (; i + lane_count <= end; i += lane_count)
+      max_c2 = std::max(max_c2, update_pack(p, i, L + (i - begin), dt, state, temperature));
+    for (; i != end; ++i) {
       const Mat<Dim> F = p.F[i];
       const Real J = F.determinant();
       Model::template update_point<Dim>(params_, F, Mat<Dim>(L[i - begin]), J, dt, p.volume0[i] * J, state[i],
                                         temperature ? temperature + i : nullptr, p.stress[i]);
-      for (Real c : p.stress[i].c) sum += c;
       max_c2 = std::max(max_c2, Model::wave_speed_squared(params_, J));
-      max_v = max_v.cwiseMax(VecU<Dim>(p.v[i].cwiseAbs()));
+    }
+    Real sum = 0;  // finite stresses have a finite sum
+    Vec<Dim> max_v = Vec<Dim>::Zero();
+    for (Index k = begin; k != end; ++k) {
+      for (Real c : p.stress[k].c) sum += c;
+      max_v = max_v.cwiseMax(VecU<Dim>(p.v[k].cwiseAbs()));
     }
     // max_a (|v_a| + c) <= max |v_a| + max c: one square root per block (slightly conservative)
     WaveSpeedBound<Dim> bound;
@@ -92,6 +99,35 @@ class PlasticBatch final : public Material<Dim> {
   }
 
  private:
+  /// Particles i .. i + lane_count - 1 (L: their velocity gradients) through the vector law; returns the
+  /// largest squared wave speed among them.
+  Real update_pack(ParticleSet<Dim>& p, Index i, const MatU<Dim>* L, Real dt, State* state, Real* temperature) const {
+    PointLanes<Dim, Pack> lanes;
+    for (int l = 0; l < lane_count; ++l) {
+      const Index k = i + l;
+      const Mat<Dim> F = p.F[k];
+      const Real J = F.determinant();
+      for (int r = 0; r < Dim; ++r)
+        for (int c = 0; c < Dim; ++c) {
+          lanes.F[r][c][l] = F(r, c);
+          lanes.L[r][c][l] = L[l](r, c);
+        }
+      lanes.J[l] = J;
+      lanes.volume[l] = p.volume0[k] * J;
+      lanes.load_state(state[k], l);
+      lanes.temperature[l] = temperature ? temperature[k] : params_.room_temperature;
+      for (int c = 0; c < SymTensor<Dim>::size; ++c) lanes.stress[c][l] = p.stress[k].c[c];
+    }
+    Model::template update<Dim, Pack>(params_, dt, temperature != nullptr, lanes);
+    for (int l = 0; l < lane_count; ++l) {
+      const Index k = i + l;
+      lanes.store_state(state[k], l);
+      if (temperature) temperature[k] = lanes.temperature[l];
+      for (int c = 0; c < SymTensor<Dim>::size; ++c) p.stress[k].c[c] = lanes.stress[c][l];
+    }
+    return Model::wave_speed_squared(params_, lanes.J).maxCoeff();
+  }
+
   std::string key_;
   Params params_;
 };
