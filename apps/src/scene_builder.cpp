@@ -12,7 +12,6 @@
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/material_factory.hpp"
-#include "mpm/module_factory.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
 
@@ -135,9 +134,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   }
   // Optional modules the scene asks for (thermal: heat conduction), built before the first snapshot so that
   // their particle fields are part of it.
-  std::vector<std::shared_ptr<Module<Dim>>> modules;
-  for (const auto& build : scene_module_builders<Dim>())
-    if (auto m = build ? build(scene, bodies, geometry) : nullptr) modules.push_back(std::move(m));
+  std::vector<std::shared_ptr<Module<Dim>>> modules = prepare_scene_extensions<Dim>(scene, bodies, geometry);
   if (wants("temperature") && std::none_of(bodies.begin(), bodies.end(),
                                            [](const Body<Dim>& b) { return b.particles.has_field("temperature"); }))
     throw SceneError(scene.output.where, "output.fields",

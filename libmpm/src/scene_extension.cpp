@@ -36,6 +36,27 @@ std::vector<std::string> scene_extension_keys() {
 }
 
 template <int Dim>
+std::vector<std::shared_ptr<Module<Dim>>> prepare_scene_extensions(const SceneDescription& scene,
+                                                                   std::vector<Body<Dim>>& bodies,
+                                                                   const GridGeometry<Dim>& grid) {
+  std::vector<SceneExtension> extensions;  // copied: a preparer may not hold the registry's lock
+  {
+    std::lock_guard lock(registry_mutex());
+    for (const auto& [key, e] : registry()) extensions.push_back(e);
+  }
+  std::vector<std::shared_ptr<Module<Dim>>> modules;
+  for (const auto& e : extensions) {
+    SectionPreparer<Dim> prepare = nullptr;
+    if constexpr (Dim == 1) prepare = e.prepare_1d;
+    if constexpr (Dim == 2) prepare = e.prepare_2d;
+    if constexpr (Dim == 3) prepare = e.prepare_3d;
+    if (!prepare) continue;
+    if (auto m = prepare(scene, bodies, grid)) modules.push_back(std::move(m));
+  }
+  return modules;
+}
+
+template <int Dim>
 void build_scene_extensions(const SceneDescription& scene, Simulation<Dim>& simulation) {
   for (const auto& [key, section] : scene.extensions) {
     const SceneExtension* e = find_scene_extension(key);
@@ -48,6 +69,15 @@ void build_scene_extensions(const SceneDescription& scene, Simulation<Dim>& simu
   }
 }
 
+template std::vector<std::shared_ptr<Module<1>>> prepare_scene_extensions<1>(const SceneDescription&,
+                                                                             std::vector<Body<1>>&,
+                                                                             const GridGeometry<1>&);
+template std::vector<std::shared_ptr<Module<2>>> prepare_scene_extensions<2>(const SceneDescription&,
+                                                                             std::vector<Body<2>>&,
+                                                                             const GridGeometry<2>&);
+template std::vector<std::shared_ptr<Module<3>>> prepare_scene_extensions<3>(const SceneDescription&,
+                                                                             std::vector<Body<3>>&,
+                                                                             const GridGeometry<3>&);
 template void build_scene_extensions<1>(const SceneDescription&, Simulation<1>&);
 template void build_scene_extensions<2>(const SceneDescription&, Simulation<2>&);
 template void build_scene_extensions<3>(const SceneDescription&, Simulation<3>&);

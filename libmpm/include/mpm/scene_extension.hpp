@@ -1,15 +1,23 @@
 #pragma once
 /// \file scene_extension.hpp
-/// Top-level scene sections owned by optional modules (e.g. `contact:` of contact/). A module registers
-/// the section's key, a parser that turns the YAML node into its own plain description (stored in
-/// SceneDescription::extensions), and builders that add its Module to a built Simulation. The loader
-/// knows no module; a scene without the section never calls them.
+/// How an optional module joins a scene: the one registry through which contact/ (`contact:`) and
+/// physics/thermal (`thermal:`) plug into the loader and the builder, which know no module. A module
+/// registers its top-level section's key, a parser that turns the YAML node into its own plain
+/// description (stored in SceneDescription::extensions), and builders for one or both of two stages:
+///   prepare: before the Simulation exists, i.e. before its first snapshot, on the filled bodies, so that
+///            the module can add particle fields (thermal: temperature, heat flux). Called for every
+///            registered extension, section or not (it may check that nothing asks for it without the
+///            section); returns the Module to add, or nullptr when the scene does not use it.
+///   build:   on the built Simulation, when the module needs its bodies in place (contact: per-body
+///            grids). Called only when the scene has the section.
+/// A scene that uses no module constructs nothing and runs nothing of it.
 
 #include <any>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "mpm/module.hpp"
 #include "mpm/scene.hpp"
 
 namespace YAML {
@@ -27,10 +35,17 @@ using SectionParser = std::any (*)(const YAML::Node& section, const SceneDescrip
 /// Adds the module to a simulation built from `scene`; throws SceneError for what needs the built bodies.
 template <int Dim>
 using SectionBuilder = void (*)(const SceneDescription& scene, Simulation<Dim>& simulation);
+/// The module for these bodies before the simulation is built, or nullptr; throws SceneError.
+template <int Dim>
+using SectionPreparer = std::shared_ptr<Module<Dim>> (*)(const SceneDescription& scene, std::vector<Body<Dim>>& bodies,
+                                                         const GridGeometry<Dim>& grid);
 
 struct SceneExtension {
   std::string key;  ///< top-level YAML key
   SectionParser parse = nullptr;
+  SectionPreparer<1> prepare_1d = nullptr;
+  SectionPreparer<2> prepare_2d = nullptr;
+  SectionPreparer<3> prepare_3d = nullptr;
   SectionBuilder<1> build_1d = nullptr;
   SectionBuilder<2> build_2d = nullptr;
   SectionBuilder<3> build_3d = nullptr;
@@ -43,6 +58,11 @@ const SceneExtension* find_scene_extension(const std::string& key);
 /// Keys of the registered sections, sorted.
 std::vector<std::string> scene_extension_keys();
 
+/// Calls every registered preparer (in key order) on the filled bodies; returns the modules to add.
+template <int Dim>
+std::vector<std::shared_ptr<Module<Dim>>> prepare_scene_extensions(const SceneDescription& scene,
+                                                                   std::vector<Body<Dim>>& bodies,
+                                                                   const GridGeometry<Dim>& grid);
 /// Calls the builders of the scene's extension sections on a freshly built simulation.
 template <int Dim>
 void build_scene_extensions(const SceneDescription& scene, Simulation<Dim>& simulation);

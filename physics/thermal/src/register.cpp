@@ -4,7 +4,6 @@
 #include <mutex>
 
 #include "mpm/material_catalog.hpp"
-#include "mpm/module_factory.hpp"
 #include "mpm/scene_extension.hpp"
 #include "thermal_section.hpp"
 
@@ -55,10 +54,14 @@ void register_module() {
   static std::once_flag once;
   std::call_once(once, [] {
     register_common_material_parameters(thermal_parameters());
-    // the section only: the module is built by the builder below, before the first snapshot (it adds fields)
-    register_scene_extension({"thermal", &parse_thermal_section, nullptr, nullptr, nullptr});
-    register_scene_module(
-        {"heat_conduction", &build_heat_conduction<1>, &build_heat_conduction<2>, &build_heat_conduction<3>});
+    // prepared before the first snapshot: conduction adds particle fields (temperature, heat flux)
+    SceneExtension e;
+    e.key = "thermal";
+    e.parse = &parse_thermal_section;
+    e.prepare_1d = &build_heat_conduction<1>;
+    e.prepare_2d = &build_heat_conduction<2>;
+    e.prepare_3d = &build_heat_conduction<3>;
+    register_scene_extension(e);
   });
 }
 
