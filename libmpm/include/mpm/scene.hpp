@@ -94,8 +94,8 @@ struct BodyDescription {
 };
 
 struct SolverDescription {
-  std::string scheme = "musl";             ///< "usl" or "musl"
-  std::string shape_function = "linear";   ///< "linear" or "cubic_bspline"
+  std::string scheme = "musl";             ///< "usl", "musl", "usf" or "tlmpm" (scheme_names())
+  std::string shape_function = "linear";   ///< a name of the shape-function table (find_shape_function)
   std::string velocity_transfer = "flip";  ///< "flip" (PIC/FLIP blend) or "apic" (affine, review §5.5.1)
   double flip_fraction = 1.0;              ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
   /// CPDI only: "deformation_gradient" (corners x_p + F (X_c - X_p), eq. 3.27) or "corners" (tracked, eq. 3.38)

@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include "mpm/fluids/ideal_gas.hpp"
+#include "mpm/fluids/output_fields.hpp"
 #include "mpm/fluids/tait_fluid.hpp"
 #include "mpm/material_batch.hpp"
 #include "mpm/material_catalog.hpp"
@@ -93,6 +94,7 @@ void register_module() {
                               &make_newtonian_fluid<3>);
     register_material_model(ideal_gas_spec());
     register_material_factory("ideal_gas", &make_ideal_gas<1>, &make_ideal_gas<2>, &make_ideal_gas<3>);
+    register_output_fields();
   });
 }
 

@@ -6,6 +6,7 @@
 
 #include "mpm/material_catalog.hpp"
 #include "mpm/material_factory.hpp"
+#include "mpm/plasticity/output_fields.hpp"
 
 namespace mpm::plasticity {
 namespace {
@@ -146,6 +147,7 @@ void register_module() {
     register_material_factory("johnson_cook", &make_johnson_cook<1>, &make_johnson_cook<2>, &make_johnson_cook<3>);
     register_material_model(j2_spec());
     register_material_factory("j2_plasticity", &make_j2_plasticity<1>, &make_j2_plasticity<2>, &make_j2_plasticity<3>);
+    register_output_fields();
   });
 }
 

@@ -5,6 +5,7 @@
 
 #include "mpm/material_catalog.hpp"
 #include "mpm/scene_extension.hpp"
+#include "mpm/thermal/output_fields.hpp"
 #include "thermal_section.hpp"
 
 namespace mpm::thermal {
@@ -62,6 +63,7 @@ void register_module() {
     e.prepare_2d = &build_heat_conduction<2>;
     e.prepare_3d = &build_heat_conduction<3>;
     register_scene_extension(e);
+    register_output_fields();
   });
 }
 

@@ -16,6 +16,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
 #include "mpm/shape/factored_stencil.hpp"
@@ -37,7 +38,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       auto& p = bodies[b].particles;
       p.gather(order_by_cell(p, grid.geometry));
-      auto& X = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
+      auto& X = p.add_field(keys::reference_position<Dim>, VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) X[i] = p.x[i];
       bin_by_slab(p, grid.geometry, Shape::slab_cells, bodies[b].bins);
       auto& cache = stencils_[b];

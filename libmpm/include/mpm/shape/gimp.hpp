@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/particle_set.hpp"
 
 namespace mpm {
@@ -54,11 +55,11 @@ struct GimpFunctions {
 
 struct UGimp : GimpFunctions {
   static constexpr const char* name = "gimp";
-  /// Half-lengths l_p(0)/2 (m) from the field "domain_half_length0".
+  /// Half-lengths l_p(0)/2 (m) from the field keys::domain_half_length0.
   template <int Dim>
   struct Domain {
     const VecU<Dim>* half0;
-    explicit Domain(const ParticleSet<Dim>& p) : half0(p.template field<VecU<Dim>>("domain_half_length0").data()) {}
+    explicit Domain(const ParticleSet<Dim>& p) : half0(p.field(keys::domain_half_length0<Dim>).data()) {}
     Vec<Dim> operator()(Index i) const { return half0[i]; }
   };
 };
@@ -70,8 +71,7 @@ struct CpGimp : GimpFunctions {
   struct Domain {
     const VecU<Dim>* half0;
     const MatU<Dim>* F;
-    explicit Domain(const ParticleSet<Dim>& p)
-        : half0(p.template field<VecU<Dim>>("domain_half_length0").data()), F(p.F.data()) {}
+    explicit Domain(const ParticleSet<Dim>& p) : half0(p.field(keys::domain_half_length0<Dim>).data()), F(p.F.data()) {}
     Vec<Dim> operator()(Index i) const { return half0[i].cwiseProduct(Vec<Dim>(F[i].diagonal())); }
   };
 };
