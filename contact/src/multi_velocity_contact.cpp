@@ -39,8 +39,8 @@ Vec<Dim> evaluate(const std::array<Expression, Dim>& e, Real t) {
   return v;
 }
 
-/// Cell-centred density of eq. 5.9 with the quadratic B-spline S^2 of eq. 5.10 (bounds as corrected in the
-/// digest, erratum 9: +-h/2, +-3h/2), then the nodal normals of eq. 5.11 with the hat-function gradients at
+/// Cell-centred density of eq. 5.9 with the quadratic B-spline S^2 of eq. 5.10 (bounds as corrected in
+/// docs/errata.md #9: +-h/2, +-3h/2), then the nodal normals of eq. 5.11 with the hat-function gradients at
 /// the centres of the cells around each node. Serial: an alternative to eq. 5.12, selected by the scene.
 template <int Dim>
 void density_normals(const Body<Dim>& body, const GridGeometry<Dim>& g, const std::vector<Index>& nodes,

@@ -6,7 +6,7 @@
 /// 0 below, 1 above), with a = l_p/(2h) the half-length in cells and r = (x_p - x_I)/h:
 ///   phi(r) = [G(r + a) - G(r - a)] / (2a),   dphi/dr = [N(r + a) - N(r - a)] / (2a),
 /// which is eq. 3.12-3.13 for a <= 1/2 and stays exact for longer (stretched) domains. Domains are
-/// limited to a <= 1 (two cells long), so a particle reaches at most 4 nodes per axis (erratum 5).
+/// limited to a <= 1 (two cells long), so a particle reaches at most 4 nodes per axis (docs/errata.md #5).
 /// - uGIMP: l_p fixed at its initial value (cell size / particles per cell).
 /// - cpGIMP: l_p(t) = l_p(0) F_aa per axis (eq. 3.14): stretched, never sheared.
 /// Weights keep partition of unity as long as the domain stays inside the grid box; there are no

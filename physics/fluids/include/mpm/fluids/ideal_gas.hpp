@@ -5,7 +5,7 @@
 /// the output field `internal_energy`) and the
 /// artificial viscosity q = rho L_e (c_2 L_e tr(D)^2 - c_1 a tr(D)) when tr(D) < 0 (eq. 5.35; a = sqrt(gamma p
 /// / rho), coefficients c_1 linear and c_2 quadratic). L_e is the particle's current length V^(1/d).
-/// Energy (eq. 5.33 with D, digest erratum): de/dt = -(p + q) tr(D) / rho, taken implicitly in p so that the
+/// Energy (eq. 5.33 with D, docs/errata.md #11): de/dt = -(p + q) tr(D) / rho, taken implicitly in p so that the
 /// update is exact for the pressure work: e' = (e - dt q tr D / rho) / (1 + dt (gamma - 1) tr D).
 /// The stored energy of the audit is the internal energy sum m e: kinetic + internal is conserved.
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file elastoplastic.hpp
-/// Hypoelastic-plastic-damage law with an equation of state (review App. B.3, Algs 11-13 with the digest's
-/// errata 25-28), for one material point. Per step, with F and L at t + dt:
+/// Hypoelastic-plastic-damage law with an equation of state (review App. B.3, Algs 11-13 with the errata
+/// docs/errata.md #25-28), for one material point. Per step, with F and L at t + dt:
 ///   1. R from F = R U (polar_decomposition.hpp; in 3D warm-started from the last step's rotation);
 ///      un-rotated rate d = R^T sym(L) R, deviator d'. (Implemented in the current frame, see below.)
 ///   2. Radial return (Alg. 12, Leroch et al. 2016), flow stress held at eps_p^t:
@@ -9,9 +9,9 @@
 ///        sigma_f = flow(eps_p, rate*, T*) (1 - D);  if sigma_eq > sigma_f:
 ///        d eps_p = (sigma_eq - sigma_f) / (3 G'),  s' = (sigma_f / sigma_eq) s_trial.   (D >= 1: s' = 0.)
 ///   3. Pressure p = EOS(J, e) with e = c rho0 (T - T_r) (eq. B.10), positive in compression; a tensile
-///      pressure is scaled by (1 - D) (erratum 28: a failed point still resists compression). Optional
+///      pressure is scaled by (1 - D) (docs/errata.md #28: a failed point still resists compression). Optional
 ///      artificial bulk viscosity in compression, q = rho l (c_2 l (tr d)^2 - c_1 c_b tr d), l = V^(1/Dim).
-///   4. sigma = R (s' - (p + q) 1) R^T   (the printed "+ p" of Alg. 11 is erratum 25).
+///   4. sigma = R (s' - (p + q) 1) R^T   (the printed "+ p" of Alg. 11 is docs/errata.md #25).
 ///   5. Damage (Alg. 13, johnson_cook_damage.hpp) from d eps_p and the triaxiality -p / sigma_eq.
 ///   6. Adiabatic heating dT = chi sigma_f d eps_p / (rho c) (eq. B.13), when temperature is tracked.
 /// rate* = max(eps_p_rate / rate0, 1) uses the plastic strain rate of the previous step (explicit, as the
@@ -293,7 +293,7 @@ struct Elastoplastic {
   }
 
   /// Step 3, pressure (eq. B.10, positive in compression) of the mechanical volume ratio (thermal expansion,
-  /// eq. 5.26) and the energy c rho0 (T - T_r); a tensile pressure is scaled by (1 - D) (erratum 28).
+  /// eq. 5.26) and the energy c rho0 (T - T_r); a tensile pressure is scaled by (1 - D) (docs/errata.md #28).
   template <int Dim, class T>
   static inline T eos_pressure(const Params& c, const T& T_now, const PointLanes<Dim, T>& p) {
     const T J = p.J;
@@ -327,7 +327,7 @@ struct Elastoplastic {
     return q_visc;
   }
 
-  /// Step 4, sigma = s' - (p + q) 1 (the printed "+ p" of Alg. 11 is erratum 25), in the SymTensor layout.
+  /// Step 4, sigma = s' - (p + q) 1 (the printed "+ p" of Alg. 11 is docs/errata.md #25), in the SymTensor layout.
   template <int Dim, class T>
   static inline void assemble_stress(const T s[6], const T& total_pressure, PointLanes<Dim, T>& p) {
     p.stress[0] = s[0] - total_pressure;

@@ -78,8 +78,8 @@ class HeatConduction final : public Module<Dim> {
     return "heat conduction (diffusion bound h^2 rho c / (2 dim k))";
   }
 
-  /// min over bodies of h_min^2 rho c / (2 Dim k_max): the explicit diffusion limit (review §5.3.3; with the
-  /// errata: the paper's 1D step 8e-5 exceeds h^2/(2k) = 5e-5 for 100 cells).
+  /// min over bodies of h_min^2 rho c / (2 Dim k_max): the explicit diffusion limit (review §5.3.3;
+  /// docs/errata.md #13: the paper's 1D step 8e-5 exceeds h^2/(2k) = 5e-5 for 100 cells).
   Real stable_time_step(const std::vector<Body<Dim>>&) const override {
     Real dt = std::numeric_limits<Real>::infinity();
     for (const auto& b : setup_.bodies)
