@@ -18,18 +18,6 @@ void push_mat3(std::vector<double>& out, const Mat3& m) {
     for (int c = 0; c < 3; ++c) out.push_back(m(r, c));
 }
 
-/// A core field whose values `append(body, out)` writes for the whole body (resolving any on-demand field once).
-template <class Append>
-OutputField core_field(std::string name, int components, std::string unit, std::string description, Append append) {
-  OutputField f;
-  f.name = std::move(name);
-  f.components = components;
-  f.unit = std::move(unit);
-  f.description = std::move(description);
-  f.append_with(append);
-  return f;
-}
-
 /// Calls f(i) for every particle of the body.
 template <class B, class F>
 void each(const B& body, F f) {
@@ -39,97 +27,94 @@ void each(const B& body, F f) {
 /// The fields of the core, in the order of the scene reference.
 std::deque<OutputField> core_fields() {
   std::deque<OutputField> t;
-  t.push_back(core_field("velocity", 3, "m/s", "particle velocity (m/s)", [](const auto& b, std::vector<double>& out) {
-    constexpr int Dim = body_dimension<decltype(b)>;
-    each(b, [&](Index i) { append_padded<Dim>(out, b.particles.v[i]); });
-  }));
-  t.push_back(core_field("displacement", 3, "m", "displacement from the initial position (m)",
-                         [](const auto& b, std::vector<double>& out) {
-                           constexpr int Dim = body_dimension<decltype(b)>;
-                           const auto& p = b.particles;
-                           const auto& x0 = p.field(keys::reference_position<Dim>);
-                           each(b, [&](Index i) { append_padded<Dim>(out, VecU<Dim>(p.x[i] - x0[i])); });
-                         }));
+  t.push_back(
+      output_field("velocity", 3, "m/s", "particle velocity (m/s)", [](const auto& b, std::vector<double>& out) {
+        constexpr int Dim = body_dimension<decltype(b)>;
+        each(b, [&](Index i) { append_padded<Dim>(out, b.particles.v[i]); });
+      }));
+  t.push_back(output_field("displacement", 3, "m", "displacement from the initial position (m)",
+                           [](const auto& b, std::vector<double>& out) {
+                             constexpr int Dim = body_dimension<decltype(b)>;
+                             const auto& p = b.particles;
+                             const auto& x0 = p.field(keys::reference_position<Dim>);
+                             each(b, [&](Index i) { append_padded<Dim>(out, VecU<Dim>(p.x[i] - x0[i])); });
+                           }));
   t.back().prepare_with([](auto& body) {  // X_p = x_p at the start
     constexpr int Dim = body_dimension<decltype(body)>;
     auto& p = body.particles;
     auto& x0 = p.add_field(keys::reference_position<Dim>, VecU<Dim>::Zero());
     for (Index i = 0; i < p.size(); ++i) x0[i] = p.x[i];
   });
-  t.push_back(core_field("stress", 6, "Pa", "Cauchy stress (Pa)", [](const auto& b, std::vector<double>& out) {
+  t.push_back(output_field("stress", 6, "Pa", "Cauchy stress (Pa)", [](const auto& b, std::vector<double>& out) {
     each(b, [&](Index i) {  // ParaView order XX YY ZZ XY YZ XZ
       const Mat3 s = b.particles.stress[i].full();
       for (double v : {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)}) out.push_back(v);
     });
   }));
-  t.push_back(core_field("deformation_gradient", 9, "-", "deformation gradient F (-)",
-                         [](const auto& b, std::vector<double>& out) {
-                           constexpr int Dim = body_dimension<decltype(b)>;
-                           each(b, [&](Index i) { push_mat3(out, embed<Dim>(b.particles.F[i], 1)); });
-                         }));
-  t.push_back(core_field("mass", 1, "kg", "particle mass (kg)", [](const auto& b, std::vector<double>& out) {
+  t.push_back(output_field("deformation_gradient", 9, "-", "deformation gradient F (-)",
+                           [](const auto& b, std::vector<double>& out) {
+                             constexpr int Dim = body_dimension<decltype(b)>;
+                             each(b, [&](Index i) { push_mat3(out, embed<Dim>(b.particles.F[i], 1)); });
+                           }));
+  t.push_back(output_field("mass", 1, "kg", "particle mass (kg)", [](const auto& b, std::vector<double>& out) {
     each(b, [&](Index i) { out.push_back(b.particles.mass[i]); });
   }));
   t.push_back(
-      core_field("volume", 1, "m^3", "current particle volume (m^3)", [](const auto& b, std::vector<double>& out) {
+      output_field("volume", 1, "m^3", "current particle volume (m^3)", [](const auto& b, std::vector<double>& out) {
         const auto& p = b.particles;
         each(b, [&](Index i) { out.push_back(p.volume0[i] * p.F[i].determinant()); });
       }));
   t.push_back(
-      core_field("density", 1, "kg/m^3", "current density (kg/m^3)", [](const auto& b, std::vector<double>& out) {
+      output_field("density", 1, "kg/m^3", "current density (kg/m^3)", [](const auto& b, std::vector<double>& out) {
         const auto& p = b.particles;
         each(b, [&](Index i) { out.push_back(p.mass[i] / (p.volume0[i] * p.F[i].determinant())); });
       }));
   t.push_back(
-      core_field("body", 1, "-", "index of the particle's body in `bodies`",
-                 [](const auto& b, std::vector<double>& out) { each(b, [&](Index) { out.push_back(b.index); }); }));
-  t.push_back(
-      core_field("velocity_gradient", 9, "1/s", "velocity gradient (1/s)", [](const auto& b, std::vector<double>& out) {
-        constexpr int Dim = body_dimension<decltype(b)>;
-        const auto& L = b.particles.field(keys::velocity_gradient<Dim>);
-        each(b, [&](Index i) { push_mat3(out, embed<Dim>(Mat<Dim>(L[i]), 0)); });
-      }));
+      output_field("body", 1, "-", "index of the particle's body in `bodies`",
+                   [](const auto& b, std::vector<double>& out) { each(b, [&](Index) { out.push_back(b.index); }); }));
+  t.push_back(output_field("velocity_gradient", 9, "1/s", "velocity gradient (1/s)",
+                           [](const auto& b, std::vector<double>& out) {
+                             constexpr int Dim = body_dimension<decltype(b)>;
+                             const auto& L = b.particles.field(keys::velocity_gradient<Dim>);
+                             each(b, [&](Index i) { push_mat3(out, embed<Dim>(Mat<Dim>(L[i]), 0)); });
+                           }));
   t.back().prepare_with([](auto& body) {  // stored by the scheme only when this field exists
     constexpr int Dim = body_dimension<decltype(body)>;
     body.particles.add_field(keys::velocity_gradient<Dim>, MatU<Dim>::Zero());
   });
   t.push_back(
-      core_field("pressure", 1, "Pa", "pressure, -tr(stress)/3 (Pa)", [](const auto& b, std::vector<double>& out) {
+      output_field("pressure", 1, "Pa", "pressure, -tr(stress)/3 (Pa)", [](const auto& b, std::vector<double>& out) {
         each(b, [&](Index i) { out.push_back(-b.particles.stress[i].full().trace() / 3); });
       }));
-  t.push_back(core_field("von_mises_stress", 1, "Pa", "von Mises equivalent stress (Pa)",
-                         [](const auto& b, std::vector<double>& out) {
-                           each(b, [&](Index i) {
-                             const Mat3 s = b.particles.stress[i].full();
-                             const Mat3 dev = s - s.trace() / 3 * Mat3::Identity();
-                             out.push_back(std::sqrt(1.5 * dev.squaredNorm()));
-                           });
-                         }));
+  t.push_back(output_field("von_mises_stress", 1, "Pa", "von Mises equivalent stress (Pa)",
+                           [](const auto& b, std::vector<double>& out) {
+                             each(b, [&](Index i) {
+                               const Mat3 s = b.particles.stress[i].full();
+                               const Mat3 dev = s - s.trace() / 3 * Mat3::Identity();
+                               out.push_back(std::sqrt(1.5 * dev.squaredNorm()));
+                             });
+                           }));
   // GIMP particle domain lengths per axis, l_p = 2 x half-length (cpGIMP: stretched by diag F, eq. 3.14); in
   // ParaView: Glyph filter, glyph type Box, scale array domain_size, scale by components.
-  t.push_back(core_field("domain_size", 3, "m",
-                         "GIMP particle domain lengths per axis (m), stretched by diag F with `cpgimp`; only with "
-                         "`gimp`/`cpgimp`",
-                         [](const auto& b, std::vector<double>& out) {
-                           constexpr int Dim = body_dimension<decltype(b)>;
-                           const auto& p = b.particles;
-                           const auto& half0 = p.field(keys::domain_half_length0<Dim>);
-                           const bool stretched = b.stretched_domain;
-                           each(b, [&](Index i) {
-                             VecU<Dim> l = 2 * half0[i];
-                             if (stretched) l = l.cwiseProduct(VecU<Dim>(p.F[i].diagonal()));
-                             append_padded<Dim>(out, l);
-                           });
-                         }));
-  OutputField domains;  // not a point field: OutputWriter writes the domains as cells to files of their own
-  domains.name = "domains";
-  domains.components = 0;
-  domains.unit = "m";
-  domains.description =
-      "the particle domains as cells, in their own files `PREFIX_domains_NNNNNN.vtu` / `PREFIX_domains.pvd`; only "
-      "with `gimp`, `cpgimp` and the `cpdi_*` functions";
-  t.push_back(std::move(domains));
-  t.push_back(core_field(
+  t.push_back(output_field("domain_size", 3, "m",
+                           "GIMP particle domain lengths per axis (m), stretched by diag F with `cpgimp`; only with "
+                           "`gimp`/`cpgimp`",
+                           [](const auto& b, std::vector<double>& out) {
+                             constexpr int Dim = body_dimension<decltype(b)>;
+                             const auto& p = b.particles;
+                             const auto& half0 = p.field(keys::domain_half_length0<Dim>);
+                             const bool stretched = b.stretched_domain;
+                             each(b, [&](Index i) {
+                               VecU<Dim> l = 2 * half0[i];
+                               if (stretched) l = l.cwiseProduct(VecU<Dim>(p.F[i].diagonal()));
+                               append_padded<Dim>(out, l);
+                             });
+                           }));
+  t.push_back(output_field("domains", 0, "m",
+                           "the particle domains as cells, in their own files `PREFIX_domains_NNNNNN.vtu` / "
+                           "`PREFIX_domains.pvd`; only with `gimp`, `cpgimp` and the `cpdi_*` functions",
+                           nullptr));  // not a point field: OutputWriter writes the cells to files of their own
+  t.push_back(output_field(
       "id", 1, "-", "index of the particle at creation (stable when particles are reordered)",
       [](const auto& b, std::vector<double>& out) { each(b, [&](Index i) { out.push_back(b.particles.id[i]); }); }));
   t.back().selectable = false;  // always written

@@ -127,13 +127,31 @@ void append_vector_field(const ParticleSet<Dim>& p, FieldKey<VecU<Dim>> key, std
   }
   for (const VecU<Dim>& v : p.field(key)) append_padded<Dim>(out, v);
 }
-/// An entry for an on-demand scalar field of the particles: its values, 0 in bodies without it.
-inline OutputField scalar_particle_output(FieldKey<Real> key, std::string unit, std::string description) {
+/// An entry whose values `append(body, out)` (a generic callable, see OutputField::append_with) writes.
+template <class Append>
+OutputField output_field(std::string name, int components, std::string unit, std::string description, Append append) {
   OutputField f;
-  f.name = std::string(key.name);
+  f.name = std::move(name);
+  f.components = components;
   f.unit = std::move(unit);
   f.description = std::move(description);
-  f.append_with([key](const auto& body, std::vector<double>& out) { append_scalar_field(body.particles, key, out); });
+  f.append_with(append);
+  return f;
+}
+/// An entry for an on-demand scalar field of the particles: its values, 0 in bodies without it.
+inline OutputField scalar_particle_output(FieldKey<Real> key, std::string unit, std::string description) {
+  return output_field(
+      std::string(key.name), 1, std::move(unit), std::move(description),
+      [key](const auto& body, std::vector<double>& out) { append_scalar_field(body.particles, key, out); });
+}
+/// The same for a field that at least one body must carry when the scene asks for it: `absent` says why it
+/// would be missing, `remedy` how this registration's module provides it (see OutputField::carrier).
+inline OutputField carried_scalar_output(FieldKey<Real> key, std::string unit, std::string description,
+                                         std::string absent, std::string remedy) {
+  OutputField f = scalar_particle_output(key, std::move(unit), std::move(description));
+  f.carrier = std::string(key.name);
+  f.absent = std::move(absent);
+  f.remedies = {std::move(remedy)};
   return f;
 }
 
