@@ -68,7 +68,8 @@ TEST(Errata, GimpReachesFourNodesPerAxis) {
   }
   EXPECT_EQ(nonzero, 4);
   EXPECT_NEAR(sum, 1, 1e-14);
-  EXPECT_NEAR(w[0], 0.2 * 0.2 / (2 * 1.8), 1e-14);  // the outer node's share: (a - 1/2)^2 / (2 l_p / h)
+  // the outer node (r = 1.5) overlaps the domain over 1 + a - r = 0.4 cells: w = 0.4^2 / 2 / (l_p / h)
+  EXPECT_NEAR(w[0], 0.4 * 0.4 / (2 * 1.8), 1e-14);
 }
 
 // docs/errata.md #35 (Alg. 3, line 17): TLMPM divides by a constant nodal mass m_I = sum phi_I(X_p) m_p; the
