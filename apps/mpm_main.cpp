@@ -51,11 +51,13 @@ int main(int argc, char** argv) {
                             "also write CPDI domains to NAME_domains.vtu: lattice or conforming (INPUT), scene "
                             "(the scene's shape function)");
   particles_cmd->add_option("-o,--output", particles.output, "output .vtu file")->required();
-  std::optional<std::filesystem::path> reference_file;  // `mpm reference`: generated docs tables
+  std::string reference_file;  // `mpm reference`: the generated tables of docs/scene-reference.md
+  bool materials = false;
   auto* reference_cmd = cli.add_subcommand("reference",
                                            "print the material parameter tables, or rewrite them in FILE (the "
                                            "generated blocks of docs/scene-reference.md)");
-  reference_cmd->add_flag("--materials", "the material parameter tables (the only reference so far)")->required();
+  reference_cmd->add_flag("--materials", materials, "the material parameter tables (the only reference so far)")
+      ->required();
   reference_cmd->add_option("file", reference_file, "Markdown file whose generated blocks to rewrite");
   try {
     cli.parse(argc, argv);
@@ -68,7 +70,11 @@ int main(int argc, char** argv) {
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   if (particles_cmd->parsed()) return particles_command(particles, std::cout, std::cerr);
-  if (reference_cmd->parsed()) return reference_command(reference_file, std::cout, std::cerr);
+  if (reference_cmd->parsed()) {
+    std::optional<std::filesystem::path> file;
+    if (!reference_file.empty()) file = reference_file;
+    return reference_command(file, std::cout, std::cerr);
+  }
   try {
     register_modules();  // the optional modules' material models, before the scene is read
     const mpm::SceneDescription scene = mpm::load_scene(scene_file);
