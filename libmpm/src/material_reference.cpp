@@ -26,6 +26,8 @@ std::string cell(const std::string& text) {
 }
 
 std::string default_cell(const ParameterSpec& p) {
+  if (p.default_value && !p.applies_with.empty())
+    return fmt::format("{} (with `{}`)", *p.default_value, p.applies_with);
   if (p.default_value) return fmt::format("{}", *p.default_value);
   if (!p.absent.empty()) return p.absent;
   return "required";

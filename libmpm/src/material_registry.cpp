@@ -31,17 +31,23 @@ bool declares(const std::vector<ParameterSpec>& specs, const std::string& name) 
 }  // namespace
 
 ParameterSpec ParameterSpec::required(std::string name, std::string unit, io::Range range, std::string description) {
-  return {std::move(name), std::move(unit), range, std::nullopt, "", std::move(description)};
+  return {std::move(name), std::move(unit), range, std::nullopt, "", std::move(description), ""};
 }
 
 ParameterSpec ParameterSpec::with_default(std::string name, std::string unit, double value, io::Range range,
                                           std::string description) {
-  return {std::move(name), std::move(unit), range, value, "", std::move(description)};
+  return {std::move(name), std::move(unit), range, value, "", std::move(description), ""};
 }
 
 ParameterSpec ParameterSpec::optional(std::string name, std::string unit, io::Range range, std::string absent,
                                       std::string description) {
-  return {std::move(name), std::move(unit), range, std::nullopt, std::move(absent), std::move(description)};
+  return {std::move(name), std::move(unit), range, std::nullopt, std::move(absent), std::move(description), ""};
+}
+
+ParameterSpec ParameterSpec::only_with(std::string parameter) const {
+  ParameterSpec spec = *this;
+  spec.applies_with = std::move(parameter);
+  return spec;
 }
 
 void register_material_model(MaterialModel model) {
@@ -72,6 +78,15 @@ std::vector<ParameterSpec> material_parameters(const MaterialModel& model) {
   for (const auto& common : common_parameters())
     if (!declares(model.parameters, common.name)) parameters.push_back(common);
   return parameters;
+}
+
+double material_parameter(const MaterialDescription& description, std::string_view name) {
+  if (const auto it = description.parameters.find(std::string(name)); it != description.parameters.end())
+    return it->second;
+  if (const MaterialModel* model = find_material_model(description.model))
+    for (const auto& p : material_parameters(*model))
+      if (p.name == name && p.default_value) return *p.default_value;
+  throw std::out_of_range("material '" + description.name + "' has no parameter '" + std::string(name) + "'");
 }
 
 template <int Dim>

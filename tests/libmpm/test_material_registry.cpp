@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -30,11 +32,12 @@ void register_test_model() {
       ParameterSpec::required("density", "kg/m^3", Range::above(0), "reference density rho0"),
       ParameterSpec::with_default("stiffness", "Pa", 2.5e9, Range::at_least(0), "a modulus | with a bar"),
       ParameterSpec::optional("switch", "-", Range::above_up_to(0, 1), "absent: off", "turns something on"),
+      ParameterSpec::with_default("switch_gain", "-", 4, Range::any(), "belongs to switch").only_with("switch"),
   };
-  model.check = [](const std::map<std::string, double>& values,
-                   const std::set<std::string>& given) -> std::optional<mpm::ParameterError> {
-    if (given.count("stiffness") && values.count("switch") == 0)
-      return mpm::ParameterError{"stiffness", "stiffness needs switch (given: " + std::to_string(given.size()) + ")"};
+  model.check = [](const std::map<std::string, double>& values) -> std::optional<mpm::ParameterError> {
+    if (values.count("switch_gain") && !values.count("switch"))
+      return mpm::ParameterError{"switch_gain",
+                                 "switch_gain needs switch; stiffness is " + std::to_string(values.at("stiffness"))};
     return std::nullopt;
   };
   mpm::register_material_model(model);
@@ -64,20 +67,27 @@ TEST(MaterialRegistry, LoaderFillsDefaultsFromTheSpecAndLeavesOptionalsOut) {
   const auto scene = mpm::parse_scene(scene_with(", density: 3"), "inline.yaml");
   const auto& p = scene.materials.at("m").parameters;
   EXPECT_EQ(p.at("density"), 3);
-  EXPECT_EQ(p.at("stiffness"), 2.5e9);  // the spec's default
-  EXPECT_EQ(p.count("switch"), 0u);     // optional, not given: absent
+  EXPECT_EQ(p.at("stiffness"), 2.5e9);    // the spec's default
+  EXPECT_EQ(p.count("switch"), 0u);       // optional, not given: absent
+  EXPECT_EQ(p.count("switch_gain"), 0u);  // a parameter of a feature: absent unless given
   const auto given = mpm::parse_scene(scene_with(", density: 3, stiffness: 1, switch: 0.5"), "inline.yaml");
-  EXPECT_EQ(given.materials.at("m").parameters.at("switch"), 0.5);
+  const auto& material = given.materials.at("m");
+  EXPECT_EQ(material.parameters.at("switch"), 0.5);
+  EXPECT_EQ(material.parameters.count("switch_gain"), 0u);
+  EXPECT_EQ(mpm::material_parameter(material, "switch_gain"), 4);  // the spec's default
+  EXPECT_EQ(mpm::material_parameter(material, "stiffness"), 1);
+  EXPECT_THROW(mpm::material_parameter(material, "no_such_parameter"), std::out_of_range);
 }
 
-TEST(MaterialRegistry, CheckSeesWhatTheSceneGave) {
+TEST(MaterialRegistry, CheckSeesTheParametersOfAFeatureOnlyWhenGiven) {
   register_test_model();
+  EXPECT_NO_THROW(mpm::parse_scene(scene_with(", density: 3"), "inline.yaml"));
   try {
-    mpm::parse_scene(scene_with(", density: 3, stiffness: 1"), "inline.yaml");
+    mpm::parse_scene(scene_with(", density: 3, switch_gain: 2"), "inline.yaml");
     FAIL() << "accepted";
   } catch (const mpm::SceneError& e) {
-    EXPECT_EQ(e.key, "materials.m.stiffness");
-    EXPECT_EQ(e.message, "stiffness needs switch (given: 2)");  // density and stiffness; not the default
+    EXPECT_EQ(e.key, "materials.m.switch_gain");
+    EXPECT_EQ(e.message, "switch_gain needs switch; stiffness is 2500000000.000000");  // the default, filled in
   }
 }
 
@@ -99,7 +109,8 @@ TEST(MaterialReference, WritesTheSpecAsATable) {
             "|---|---|---|---|---|\n"
             "| `density` | kg/m^3 | required | > 0 | reference density rho0 |\n"
             "| `stiffness` | Pa | 2500000000 | >= 0 | a modulus \\| with a bar |\n"
-            "| `switch` | - | absent: off | in (0, 1] | turns something on |\n");
+            "| `switch` | - | absent: off | in (0, 1] | turns something on |\n"
+            "| `switch_gain` | - | 4 (with `switch`) | any | belongs to switch |\n");
 }
 
 TEST(MaterialReference, SharedAndSpecificParametersOfTwoModels) {

@@ -12,7 +12,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +33,11 @@ struct ParameterSpec {
   /// (e.g. "absent: no damage"). Empty for a required parameter or one with a default.
   std::string absent;
   std::string description;  ///< meaning and symbol; also part of the "missing required parameter" message
+  /// With a default: the optional parameter whose feature this one belongs to (e.g. "bulk_sound_speed" for the
+  /// Mie-Gruneisen constants). The loader then leaves it absent unless the scene gives it (so that the model's
+  /// check can refuse it without its feature), and the maker reads it with material_parameter(), which falls
+  /// back to this default. Empty: the loader fills the default in.
+  std::string applies_with;
 
   /// A parameter the scene must give.
   static ParameterSpec required(std::string name, std::string unit, io::Range range, std::string description);
@@ -43,6 +47,9 @@ struct ParameterSpec {
   /// A parameter that may be omitted, meaning `absent`.
   static ParameterSpec optional(std::string name, std::string unit, io::Range range, std::string absent,
                                 std::string description);
+
+  /// This spec as a part of the feature `parameter` switches on (see applies_with).
+  ParameterSpec only_with(std::string parameter) const;
 
   bool is_required() const { return !default_value && absent.empty(); }
   bool operator==(const ParameterSpec&) const = default;
@@ -55,10 +62,9 @@ struct ParameterError {
   std::string message;
 };
 
-/// Checks the parameters together. `values`: every parameter in its range, defaults filled in (optional ones
-/// only when given); `given`: the names the scene wrote.
-using ParameterCheck = std::function<std::optional<ParameterError>(const std::map<std::string, double>& values,
-                                                                   const std::set<std::string>& given)>;
+/// Checks the parameters together: every one in its range, defaults filled in (optional ones and those of a
+/// feature, ParameterSpec::applies_with, only when given).
+using ParameterCheck = std::function<std::optional<ParameterError>(const std::map<std::string, double>& values)>;
 
 /// Builds the model from a validated description (every parameter with a default present).
 template <int Dim>
@@ -91,6 +97,10 @@ void register_common_material_parameters(const std::vector<ParameterSpec>& specs
 const std::vector<ParameterSpec>& common_material_parameters();
 /// What a scene may give for `model`: its own parameters, then the common ones it does not declare.
 std::vector<ParameterSpec> material_parameters(const MaterialModel& model);
+
+/// Parameter `name` of a validated material: its value, or for a parameter the loader leaves absent
+/// (ParameterSpec::applies_with) its spec's default. Throws std::out_of_range when it has neither.
+double material_parameter(const MaterialDescription& description, std::string_view name);
 
 /// Builds the material of `description` with its model's maker. Throws std::invalid_argument for an unknown
 /// model (the scene loader has normally caught it).

@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <set>
-
 #include "mpm/material_registry.hpp"
 #include "sections.hpp"
 
@@ -30,13 +28,11 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
   std::vector<std::string> keys{"model"};
   for (const auto& p : parameters) keys.push_back(p.name);
   map.allow(keys, "parameter", " for model " + material.model);
-  std::set<std::string> given;
   for (const auto& p : parameters) {
     if (const auto value = map.find(p.name)) {
       material.parameters[p.name] = reader.number(*value, p.range, p.unit);
-      given.insert(p.name);
     } else if (p.default_value) {
-      material.parameters[p.name] = *p.default_value;
+      if (p.applies_with.empty()) material.parameters[p.name] = *p.default_value;  // else material_parameter()
     } else if (p.is_required()) {
       map.required(p.name, "parameter",
                    fmt::format(" of model {} ({}{})", material.model, p.description,
@@ -44,7 +40,7 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
     }
   }
   if (model->check)
-    if (const auto error = model->check(material.parameters, given)) {
+    if (const auto error = model->check(material.parameters)) {
       if (const auto value = map.find(error->key)) reader.fail(*value, error->message);
       reader.fail(entry.key_mark, map.path_of(error->key), error->message);
     }

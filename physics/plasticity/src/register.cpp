@@ -38,17 +38,22 @@ std::vector<ParameterSpec> shared_parameters() {
       optional("bulk_sound_speed", "m/s", Range::above(0), "absent: linear EOS",
                "c0 of the Mie-Gruneisen EOS (eq. B.9); selects it"),
       with_default("hugoniot_slope", "-", 0, Range::at_least(0),
-                   "S of the linear Us-up Hugoniot Us = c0 + S up (Mie-Gruneisen; needs bulk_sound_speed)"),
+                   "S of the linear Us-up Hugoniot Us = c0 + S up (Mie-Gruneisen; needs bulk_sound_speed)")
+          .only_with("bulk_sound_speed"),
       with_default("gruneisen_gamma", "-", 0, Range::at_least(0),
-                   "Gruneisen Gamma0 (Mie-Gruneisen; needs bulk_sound_speed)"),
+                   "Gruneisen Gamma0 (Mie-Gruneisen; needs bulk_sound_speed)")
+          .only_with("bulk_sound_speed"),
       with_default("reference_strain_rate", "1/s", 1, Range::above(0),
                    "rate0 normalising the plastic strain rate of the rate terms"),
       optional("damage_d1", "-", Range::any(), "absent: no damage",
                "Johnson-Cook damage D1 (eq. B.15); enables damage"),
-      with_default("damage_d2", "-", 0, Range::any(), "Johnson-Cook damage D2 (needs damage_d1)"),
+      with_default("damage_d2", "-", 0, Range::any(), "Johnson-Cook damage D2 (needs damage_d1)")
+          .only_with("damage_d1"),
       with_default("damage_d3", "-", 0, Range::any(),
-                   "Johnson-Cook damage D3, the triaxiality exponent (needs damage_d1)"),
-      with_default("damage_d4", "-", 0, Range::any(), "Johnson-Cook damage D4, the strain-rate term (needs damage_d1)"),
+                   "Johnson-Cook damage D3, the triaxiality exponent (needs damage_d1)")
+          .only_with("damage_d1"),
+      with_default("damage_d4", "-", 0, Range::any(), "Johnson-Cook damage D4, the strain-rate term (needs damage_d1)")
+          .only_with("damage_d1"),
       with_default("damage_evolution_factor", "-", 10, Range::above(0), "k of D = k (D_init - 1) (eq. B.16)"),
       optional("specific_heat", "J/(kg K)", Range::above(0), "absent: no temperature",
                "specific heat c; enables the particle field temperature and adiabatic heating (eq. B.13)"),
@@ -57,7 +62,8 @@ std::vector<ParameterSpec> shared_parameters() {
       with_default("room_temperature", "K", 293.15, Range::above(0), "reference (and initial) temperature T_r"),
       with_default("thermal_expansion", "1/K", 0, Range::any(),
                    "linear thermal expansion coefficient alpha: the EOS uses J exp(-3 alpha (T - T_r)) (needs "
-                   "specific_heat)"),
+                   "specific_heat)")
+          .only_with("specific_heat"),
       with_default("artificial_viscosity_linear", "-", 0, Range::at_least(0),
                    "linear artificial bulk viscosity coefficient c_1 (in compression)"),
       with_default("artificial_viscosity_quadratic", "-", 0, Range::at_least(0),
@@ -75,28 +81,26 @@ std::vector<ParameterSpec> parameters(const std::vector<ParameterSpec>& flow, co
   return all;
 }
 
-std::optional<ParameterError> check_shared(const std::map<std::string, double>& values,
-                                           const std::set<std::string>& given) {
-  if (given.count("thermal_expansion") && !values.count("specific_heat"))
+std::optional<ParameterError> check_shared(const std::map<std::string, double>& values) {
+  if (values.count("thermal_expansion") && !values.count("specific_heat"))
     return ParameterError{"thermal_expansion",
                           "thermal expansion needs the temperature, which is only tracked with specific_heat "
                           "(J/(kg K)); give specific_heat too"};
   for (const char* key : {"hugoniot_slope", "gruneisen_gamma"})
-    if (given.count(key) && !values.count("bulk_sound_speed"))
+    if (values.count(key) && !values.count("bulk_sound_speed"))
       return ParameterError{key, fmt::format("{} belongs to the Mie-Gruneisen equation of state, which "
                                              "bulk_sound_speed (m/s) selects; give bulk_sound_speed too",
                                              key)};
   for (const char* key : {"damage_d2", "damage_d3", "damage_d4", "damage_d5"})
-    if (given.count(key) && !values.count("damage_d1"))
+    if (values.count(key) && !values.count("damage_d1"))
       return ParameterError{key, fmt::format("{} is a Johnson-Cook damage constant, but damage is only enabled by "
                                              "damage_d1; give damage_d1 too",
                                              key)};
   return std::nullopt;
 }
 
-std::optional<ParameterError> check_johnson_cook(const std::map<std::string, double>& values,
-                                                 const std::set<std::string>& given) {
-  if (auto error = check_shared(values, given)) return error;
+std::optional<ParameterError> check_johnson_cook(const std::map<std::string, double>& values) {
+  if (auto error = check_shared(values)) return error;
   if (values.count("melting_temperature")) {
     if (!values.count("specific_heat"))
       return ParameterError{"melting_temperature",
@@ -107,7 +111,7 @@ std::optional<ParameterError> check_johnson_cook(const std::map<std::string, dou
                             fmt::format("must exceed room_temperature ({} K), got {} K", values.at("room_temperature"),
                                         values.at("melting_temperature"))};
   }
-  if (given.count("damage_d5") && !values.count("melting_temperature"))
+  if (values.count("damage_d5") && !values.count("melting_temperature"))
     return ParameterError{"damage_d5",
                           "the temperature term D5 needs melting_temperature (T* = (T - T_r)/(T_m - T_r))"};
   return std::nullopt;
@@ -120,17 +124,18 @@ MaterialModel johnson_cook_model() {
       "Johnson-Cook elasto-plasticity (review App. B.3): J2 radial return in the un-rotated frame, flow stress "
       "[A + B eps_p^n][1 + C ln rate*][1 - T*^m], linear or Mie-Gruneisen EOS, optional Johnson-Cook damage and "
       "adiabatic heating";
-  model.parameters = parameters(
-      {required("yield_stress", "Pa", Range::above(0), "Johnson-Cook A"),
-       required("hardening_coefficient", "Pa", Range::at_least(0), "Johnson-Cook B"),
-       required("hardening_exponent", "-", Range::above(0), "Johnson-Cook n"),
-       with_default("strain_rate_coefficient", "-", 0, Range::at_least(0), "Johnson-Cook C"),
-       with_default("thermal_softening_exponent", "-", 1, Range::above(0), "Johnson-Cook m")},
-      {with_default("damage_d5", "-", 0, Range::any(),
-                    "Johnson-Cook damage D5, the temperature term (needs damage_d1 and melting_temperature)"),
-       optional("melting_temperature", "K", Range::above(0), "absent: no thermal softening",
-                "T_m of the thermal softening [1 - T*^m]; enables it (must exceed room_temperature; needs "
-                "specific_heat)")});
+  model.parameters =
+      parameters({required("yield_stress", "Pa", Range::above(0), "Johnson-Cook A"),
+                  required("hardening_coefficient", "Pa", Range::at_least(0), "Johnson-Cook B"),
+                  required("hardening_exponent", "-", Range::above(0), "Johnson-Cook n"),
+                  with_default("strain_rate_coefficient", "-", 0, Range::at_least(0), "Johnson-Cook C"),
+                  with_default("thermal_softening_exponent", "-", 1, Range::above(0), "Johnson-Cook m")},
+                 {with_default("damage_d5", "-", 0, Range::any(),
+                               "Johnson-Cook damage D5, the temperature term (needs damage_d1 and melting_temperature)")
+                      .only_with("damage_d1"),
+                  optional("melting_temperature", "K", Range::above(0), "absent: no thermal softening",
+                           "T_m of the thermal softening [1 - T*^m]; enables it (must exceed room_temperature; needs "
+                           "specific_heat)")});
   model.check = check_johnson_cook;
   model.make_1d = &make_johnson_cook<1>;
   model.make_2d = &make_johnson_cook<2>;
