@@ -16,18 +16,16 @@ std::unique_ptr<Material<Dim>> make_rigid(const MaterialDescription& d) {
 }
 
 MaterialModel rigid_model() {
-  MaterialModel model;
-  model.key = "rigid";
-  model.description =
-      "rigid body (review §4.2.4, Alg. 4): no stress; moves with the velocity given in contact.rigid_bodies "
-      "(needs a contact section)";
-  model.parameters = {ParameterSpec::required(
-      "density", "kg/m^3", io::Range::above(0),
-      "density (only gives the rigid particles a mass, used to find contact nodes and normals)")};
-  model.make_1d = &make_rigid<1>;
-  model.make_2d = &make_rigid<2>;
-  model.make_3d = &make_rigid<3>;
-  return model;
+  return {.key = "rigid",
+          .description =
+              "rigid body (review §4.2.4, Alg. 4): no stress; moves with the velocity given in "
+              "contact.rigid_bodies (needs a contact section)",
+          .parameters = {ParameterSpec::required(
+              "density", "kg/m^3", io::Range::above(0),
+              "density (only gives the rigid particles a mass, used to find contact nodes and normals)")},
+          .make_1d = &make_rigid<1>,
+          .make_2d = &make_rigid<2>,
+          .make_3d = &make_rigid<3>};
 }
 
 }  // namespace
@@ -36,13 +34,11 @@ void register_module() {
   static std::once_flag once;
   std::call_once(once, [] {
     register_material_model(rigid_model());
-    SceneExtension section;
-    section.key = "contact";
-    section.parse = &parse_contact_section;
-    section.build_1d = &build_contact<1>;
-    section.build_2d = &build_contact<2>;
-    section.build_3d = &build_contact<3>;
-    register_scene_extension(section);
+    register_scene_extension({.key = "contact",
+                              .parse = &parse_contact_section,
+                              .build_1d = &build_contact<1>,
+                              .build_2d = &build_contact<2>,
+                              .build_3d = &build_contact<3>});
   });
 }
 

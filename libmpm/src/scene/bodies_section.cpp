@@ -9,10 +9,6 @@
 namespace mpm::sections {
 namespace {
 
-using io::YamlMap;
-using io::YamlReader;
-using io::YamlValue;
-
 /// Fails unless the shape's bounding box (when the description knows it) lies inside the grid.
 void check_inside_grid(const YamlReader& reader, const YamlValue& shape, const BodyDescription& body, int dimension,
                        const GridDescription& grid) {

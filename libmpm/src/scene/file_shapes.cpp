@@ -14,11 +14,6 @@
 namespace mpm::sections {
 namespace {
 
-using io::Range;
-using io::YamlMap;
-using io::YamlReader;
-using io::YamlValue;
-
 std::string lower_case(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
   return text;

@@ -9,11 +9,6 @@
 namespace mpm::sections {
 namespace {
 
-using io::Range;
-using io::YamlMap;
-using io::YamlReader;
-using io::YamlValue;
-
 /// A face given as a map: velocity and/or traction components, each an expression of t ("free": none).
 void read_face_condition(const YamlReader& reader, const YamlMap::Entry& face, int dimension, FaceBoundary& boundary) {
   const YamlMap condition = reader.map(face.value);

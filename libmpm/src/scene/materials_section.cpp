@@ -9,9 +9,6 @@
 namespace mpm::sections {
 namespace {
 
-using io::YamlMap;
-using io::YamlReader;
-
 MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry& entry) {
   MaterialDescription material;
   material.name = entry.key;

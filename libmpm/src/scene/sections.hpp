@@ -12,6 +12,11 @@
 
 namespace mpm::sections {
 
+using io::Range;
+using io::YamlMap;
+using io::YamlReader;
+using io::YamlValue;
+
 /// Axis names for messages, in the order x, y, z.
 inline constexpr const char* axis_names[3] = {"x", "y", "z"};
 /// Relative tolerance of "extent / cell_size is an integer" and of "the body lies inside the grid".

@@ -11,11 +11,6 @@
 namespace mpm::sections {
 namespace {
 
-using io::Range;
-using io::YamlMap;
-using io::YamlReader;
-using io::YamlValue;
-
 /// Shape types per dimension (index 1..3), given with `type:`.
 const std::vector<std::string> shape_types[4] = {
     {}, {"box"}, {"box", "disk", "polygon"}, {"box", "sphere", "cylinder"}};

@@ -8,11 +8,6 @@
 namespace mpm::sections {
 namespace {
 
-using io::Range;
-using io::YamlMap;
-using io::YamlReader;
-using io::YamlValue;
-
 /// Fails unless the shape function exists in this dimension, suits the scheme and fits the grid.
 void check_shape_function(const YamlReader& reader, const YamlValue& key, const SolverDescription& solver,
                           const SceneDescription& scene) {

@@ -42,29 +42,25 @@ std::vector<ParameterSpec> ideal_gas_parameters() {
 }
 
 MaterialModel newtonian_model() {
-  MaterialModel model;
-  model.key = "newtonian_fluid";
-  model.description =
-      "weakly compressible Newtonian fluid (review eqs 5.29-5.31): Tait EOS p = K [(rho/rho0)^gamma - 1], "
-      "sigma = 2 mu dev(D) + zeta tr(D) I - p I, density from det F";
-  model.parameters = newtonian_parameters();
-  model.make_1d = &make_newtonian_fluid<1>;
-  model.make_2d = &make_newtonian_fluid<2>;
-  model.make_3d = &make_newtonian_fluid<3>;
-  return model;
+  return {.key = "newtonian_fluid",
+          .description =
+              "weakly compressible Newtonian fluid (review eqs 5.29-5.31): Tait EOS p = K [(rho/rho0)^gamma "
+              "- 1], sigma = 2 mu dev(D) + zeta tr(D) I - p I, density from det F",
+          .parameters = newtonian_parameters(),
+          .make_1d = &make_newtonian_fluid<1>,
+          .make_2d = &make_newtonian_fluid<2>,
+          .make_3d = &make_newtonian_fluid<3>};
 }
 
 MaterialModel ideal_gas_model() {
-  MaterialModel model;
-  model.key = "ideal_gas";
-  model.description =
-      "ideal gas (review eqs 5.32-5.35): p = (gamma - 1) rho e, internal energy per particle, artificial "
-      "viscosity in compression";
-  model.parameters = ideal_gas_parameters();
-  model.make_1d = &make_ideal_gas<1>;
-  model.make_2d = &make_ideal_gas<2>;
-  model.make_3d = &make_ideal_gas<3>;
-  return model;
+  return {.key = "ideal_gas",
+          .description =
+              "ideal gas (review eqs 5.32-5.35): p = (gamma - 1) rho e, internal energy per particle, "
+              "artificial viscosity in compression",
+          .parameters = ideal_gas_parameters(),
+          .make_1d = &make_ideal_gas<1>,
+          .make_2d = &make_ideal_gas<2>,
+          .make_3d = &make_ideal_gas<3>};
 }
 
 }  // namespace

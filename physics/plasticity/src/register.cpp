@@ -118,49 +118,46 @@ std::optional<ParameterError> check_johnson_cook(const std::map<std::string, dou
 }
 
 MaterialModel johnson_cook_model() {
-  MaterialModel model;
-  model.key = "johnson_cook";
-  model.description =
-      "Johnson-Cook elasto-plasticity (review App. B.3): J2 radial return in the un-rotated frame, flow stress "
-      "[A + B eps_p^n][1 + C ln rate*][1 - T*^m], linear or Mie-Gruneisen EOS, optional Johnson-Cook damage and "
-      "adiabatic heating";
-  model.parameters =
-      parameters({required("yield_stress", "Pa", Range::above(0), "Johnson-Cook A"),
-                  required("hardening_coefficient", "Pa", Range::at_least(0), "Johnson-Cook B"),
-                  required("hardening_exponent", "-", Range::above(0), "Johnson-Cook n"),
-                  with_default("strain_rate_coefficient", "-", 0, Range::at_least(0), "Johnson-Cook C"),
-                  with_default("thermal_softening_exponent", "-", 1, Range::above(0), "Johnson-Cook m")},
-                 {with_default("damage_d5", "-", 0, Range::any(),
-                               "Johnson-Cook damage D5, the temperature term (needs damage_d1 and melting_temperature)")
-                      .only_with("damage_d1"),
-                  optional("melting_temperature", "K", Range::above(0), "absent: no thermal softening",
-                           "T_m of the thermal softening [1 - T*^m]; enables it (must exceed room_temperature; needs "
-                           "specific_heat)")});
-  model.check = check_johnson_cook;
-  model.make_1d = &make_johnson_cook<1>;
-  model.make_2d = &make_johnson_cook<2>;
-  model.make_3d = &make_johnson_cook<3>;
-  return model;
+  return {.key = "johnson_cook",
+          .description =
+              "Johnson-Cook elasto-plasticity (review App. B.3): J2 radial return in the un-rotated frame, "
+              "flow stress [A + B eps_p^n][1 + C ln rate*][1 - T*^m], linear or Mie-Gruneisen EOS, optional "
+              "Johnson-Cook damage and adiabatic heating",
+          .parameters = parameters(
+              {required("yield_stress", "Pa", Range::above(0), "Johnson-Cook A"),
+               required("hardening_coefficient", "Pa", Range::at_least(0), "Johnson-Cook B"),
+               required("hardening_exponent", "-", Range::above(0), "Johnson-Cook n"),
+               with_default("strain_rate_coefficient", "-", 0, Range::at_least(0), "Johnson-Cook C"),
+               with_default("thermal_softening_exponent", "-", 1, Range::above(0), "Johnson-Cook m")},
+              {with_default("damage_d5", "-", 0, Range::any(),
+                            "Johnson-Cook damage D5, the temperature term (needs damage_d1 and melting_temperature)")
+                   .only_with("damage_d1"),
+               optional("melting_temperature", "K", Range::above(0), "absent: no thermal softening",
+                        "T_m of the thermal softening [1 - T*^m]; enables it (must exceed room_temperature; needs "
+                        "specific_heat)")}),
+          .check = check_johnson_cook,
+          .make_1d = &make_johnson_cook<1>,
+          .make_2d = &make_johnson_cook<2>,
+          .make_3d = &make_johnson_cook<3>};
 }
 
 MaterialModel j2_model() {
-  MaterialModel model;
-  model.key = "j2_plasticity";
-  model.description =
-      "J2 (von Mises) elasto-plasticity (review App. B.3, Table 9): radial return in the un-rotated frame, flow "
-      "stress sigma_y + H eps_p + Q (1 - exp(-b eps_p)) (perfectly plastic, linear or Voce hardening), linear or "
-      "Mie-Gruneisen EOS, optional Johnson-Cook damage and adiabatic heating";
-  model.parameters =
-      parameters({required("yield_stress", "Pa", Range::above(0), "initial yield stress sigma_y"),
-                  with_default("hardening_modulus", "Pa", 0, Range::at_least(0), "linear hardening modulus H"),
-                  with_default("voce_saturation_stress", "Pa", 0, Range::at_least(0), "Voce saturation stress Q"),
-                  with_default("voce_exponent", "-", 0, Range::at_least(0), "Voce exponent b")},
-                 {});
-  model.check = check_shared;
-  model.make_1d = &make_j2_plasticity<1>;
-  model.make_2d = &make_j2_plasticity<2>;
-  model.make_3d = &make_j2_plasticity<3>;
-  return model;
+  return {.key = "j2_plasticity",
+          .description =
+              "J2 (von Mises) elasto-plasticity (review App. B.3, Table 9): radial return in the un-rotated "
+              "frame, flow stress sigma_y + H eps_p + Q (1 - exp(-b eps_p)) (perfectly plastic, linear or "
+              "Voce hardening), linear or Mie-Gruneisen EOS, optional Johnson-Cook damage and adiabatic "
+              "heating",
+          .parameters = parameters(
+              {required("yield_stress", "Pa", Range::above(0), "initial yield stress sigma_y"),
+               with_default("hardening_modulus", "Pa", 0, Range::at_least(0), "linear hardening modulus H"),
+               with_default("voce_saturation_stress", "Pa", 0, Range::at_least(0), "Voce saturation stress Q"),
+               with_default("voce_exponent", "-", 0, Range::at_least(0), "Voce exponent b")},
+              {}),
+          .check = check_shared,
+          .make_1d = &make_j2_plasticity<1>,
+          .make_2d = &make_j2_plasticity<2>,
+          .make_3d = &make_j2_plasticity<3>};
 }
 
 }  // namespace

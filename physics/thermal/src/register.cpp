@@ -45,13 +45,11 @@ void register_module() {
   std::call_once(once, [] {
     register_common_material_parameters(thermal_parameters());
     // prepared before the first snapshot: conduction adds particle fields (temperature, heat flux)
-    SceneExtension section;
-    section.key = "thermal";
-    section.parse = &parse_thermal_section;
-    section.prepare_1d = &build_heat_conduction<1>;
-    section.prepare_2d = &build_heat_conduction<2>;
-    section.prepare_3d = &build_heat_conduction<3>;
-    register_scene_extension(section);
+    register_scene_extension({.key = "thermal",
+                              .parse = &parse_thermal_section,
+                              .prepare_1d = &build_heat_conduction<1>,
+                              .prepare_2d = &build_heat_conduction<2>,
+                              .prepare_3d = &build_heat_conduction<3>});
   });
 }
 
