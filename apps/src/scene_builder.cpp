@@ -11,7 +11,7 @@
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
-#include "mpm/material_factory.hpp"
+#include "mpm/material_registry.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
 
@@ -28,7 +28,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
     cells[d] = gd.cells[d];
   }
   const GridGeometry<Dim> geometry(origin, h, cells);
-  auto scheme = make_scheme<Dim>(scene.solver.scheme, scene.solver.shape_function);
+  auto scheme = make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function);
 
   const auto wants = [&](const char* field) {
     return std::find(scene.output.fields.begin(), scene.output.fields.end(), field) != scene.output.fields.end();
@@ -94,7 +94,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       CornerSet<Dim> none;
       none.fill(VecU<Dim>::Zero());
       body.domain_corners = shape.domain_corners;
-      if (scene.solver.cpdi_domain_update == "corners") {  // CPDI2: tracked corners (eq. 3.38)
+      if (scene.solver.cpdi_domain_update == CpdiDomainUpdate::corners) {  // CPDI2: tracked corners (eq. 3.38)
         auto& corners = p.template add_field<CornerSet<Dim>>("cpdi_corners", none);
         for (Index i = 0; i < p.size(); ++i)
           for (int c = 0; c < 4; ++c) corners[i][c] = p.x[i] + elements.offsets[i][c];
@@ -124,7 +124,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       for (int d = 0; d < Dim; ++d) half[d] = 0.5 * h[d] / bd.particles_per_cell[d];
       p.template add_field<VecU<Dim>>("domain_half_length0", half);
     }
-    if (scene.solver.velocity_transfer == "apic")
+    if (scene.solver.velocity_transfer == VelocityTransfer::apic)
       p.template add_field<MatU<Dim>>("affine_velocity", MatU<Dim>::Zero());  // C_p = 0 at the start
     if (wants("velocity_gradient")) p.template add_field<MatU<Dim>>("velocity_gradient", MatU<Dim>::Zero());
     body.material->prepare_particles(p);  // the model's history fields (plasticity), if it has any
