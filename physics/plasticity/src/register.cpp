@@ -1,5 +1,7 @@
 #include "mpm/plasticity/register.hpp"
 
+#include "hencky_j2_registration.hpp"
+
 #include <fmt/format.h>
 
 #include <mutex>
@@ -146,6 +148,7 @@ void register_module() {
     register_material_factory("johnson_cook", &make_johnson_cook<1>, &make_johnson_cook<2>, &make_johnson_cook<3>);
     register_material_model(j2_spec());
     register_material_factory("j2_plasticity", &make_j2_plasticity<1>, &make_j2_plasticity<2>, &make_j2_plasticity<3>);
+    detail::register_hencky_j2();
   });
 }
 
