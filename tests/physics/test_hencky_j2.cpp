@@ -602,6 +602,23 @@ TEST(DiscreteGradient, MixedStressEnergyIdentity) {
   EXPECT_LT(worst, 1e-14);
 }
 
+// Erratum (105), fourth line: "(Delta phi^h(x_n)) F_n" is grad_n[Delta phi^h](x_n) F_n = F_{n+1} - F_n (eq. 91;
+// a vector times F_n cannot be contracted with the tensor F_{n+1/2} S^h). With it, the first lines of (105)
+// hold per point: (F_{n+1} - F_n) : F_{n+1/2} S = 1/2 Delta C : S for every symmetric S.
+TEST(DiscreteGradient, Erratum105IncrementOfTheDeformationGradient) {
+  Random rnd;
+  Real worst = 0;
+  for (int k = 0; k < 100; ++k) {
+    const Mat3 F_n = rnd.deformation(0.3), H = rnd.symmetric(0.05) + 0.05 * rnd.rotation(), S = rnd.symmetric(1);
+    const Mat3 F_n1 = F_n + H * F_n;
+    const Real lhs = contract(H * F_n, 0.5 * (F_n + F_n1) * S);
+    const Real rhs = 0.5 * contract(right_cauchy_green_increment(F_n, H), S);
+    worst = std::max(worst, std::abs(lhs - rhs) / (S.norm() * H.norm() * F_n.squaredNorm()));
+  }
+  std::printf("[ measured ] (105) per point: max |(F_n+1 - F_n) : F_mid S - dC : S / 2| = %.2e (relative)\n", worst);
+  EXPECT_LT(worst, 1e-15);
+}
+
 // ---------------------------------------------------------------------------------------------------
 // The explicit path
 
