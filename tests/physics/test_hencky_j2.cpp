@@ -322,6 +322,13 @@ TEST(HenckyJ2Point, EvaluationIsPureAndCommitStoresIt) {
   EXPECT_LT(again.dissipation, 1e-12 * a.dissipation);
 }
 
+// The per-particle history (README: 40, 48, 64 B in 1D, 2D, 3D): G^p in the SymTensor layout, xi, sum Delta D.
+TEST(HenckyJ2Point, StateSize) {
+  EXPECT_EQ(sizeof(HenckyJ2State<1>), 40u);
+  EXPECT_EQ(sizeof(HenckyJ2State<2>), 48u);
+  EXPECT_EQ(sizeof(HenckyJ2State<3>), 64u);
+}
+
 // ---------------------------------------------------------------------------------------------------
 // Discrete derivatives
 
