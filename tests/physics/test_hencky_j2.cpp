@@ -532,7 +532,7 @@ TEST(DiscreteGradient, AlgorithmicStressConvergesToMidpointStress) {
 }
 
 // The fallback: at Delta C = 0 (a particle at rest) S_algo^dev is S-bar of (82); for a Delta C at round-off
-// size the correction is dropped and the result stays finite and close to S-bar (no 0/0).
+// size the correction is dropped and the result stays finite and equal to S-bar (no 0/0); a NaN passes on.
 TEST(DiscreteGradient, FallbackAtVanishingIncrement) {
   Random rnd;
   const HenckyJ2Params c = copper();
@@ -550,6 +550,9 @@ TEST(DiscreteGradient, FallbackAtVanishingIncrement) {
   const Mat3 D = jacobian_discrete_derivative(s.C_n, zero, s.F_n.determinant(), s.F_n.determinant());
   EXPECT_LT((D - 0.5 * s.F_n.determinant() * s.C_n.inverse()).norm(), 1e-15 * D.norm());
   EXPECT_TRUE(jacobian_discrete_derivative_generic(s.C_n, tiny, 1, 1).allFinite());
+  // a non-finite energy is not hidden by the fallback (the scheme's guard must see it)
+  const Mat3 bad = algorithmic_deviatoric_stress(s.S_n, s.S_n1, s.at_n.stored_energy, std::nan(""), 0, s.C_n, s.dC);
+  EXPECT_FALSE(bad.allFinite());
 }
 
 // Erratum (104): its third line has D_Theta U(Theta_n, Theta_n), which is U'(Theta_n); only the pair

@@ -65,7 +65,7 @@ inline Mat3 discrete_gradient(const Mat3& mean_gradient, const Mat3& dz, Real in
   const Real dz2 = dz.squaredNorm(), g_dz = contract(mean_gradient, dz);
   const Real numerator = increment - g_dz;
   const Real noise = round_off + 16 * eps * (std::abs(increment) + mean_gradient.norm() * std::sqrt(dz2));
-  if (!(dz2 > 0) || !(std::abs(numerator) > noise)) return mean_gradient;
+  if (dz2 == 0 || std::abs(numerator) <= noise) return mean_gradient;  // NaN goes on to the correction
   return mean_gradient + (numerator / dz2) * dz;
 }
 
