@@ -1,5 +1,7 @@
 #include "mpm/plasticity/register.hpp"
 
+#include "hencky_j2_registration.hpp"
+
 #include <fmt/format.h>
 
 #include <mutex>
@@ -167,6 +169,7 @@ void register_module() {
   std::call_once(once, [] {
     register_material_model(johnson_cook_model());
     register_material_model(j2_model());
+    detail::register_hencky_j2();
   });
 }
 
