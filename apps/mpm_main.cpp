@@ -1,14 +1,17 @@
-// The `mpm` command line program: `mpm run SCENE`, `mpm check SCENE`, `mpm particles INPUT`. Exit statuses in
-// run_scene.hpp.
+// The `mpm` command line program: `mpm run SCENE`, `mpm check SCENE`, `mpm particles INPUT`, `mpm reference
+// --materials [FILE]`. Exit statuses in run_scene.hpp.
 #include <tbb/global_control.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "mpm/app/modules.hpp"
 #include "mpm/app/particles_command.hpp"
+#include "mpm/app/reference_command.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_loader.hpp"
@@ -48,6 +51,14 @@ int main(int argc, char** argv) {
                             "also write CPDI domains to NAME_domains.vtu: lattice or conforming (INPUT), scene "
                             "(the scene's shape function)");
   particles_cmd->add_option("-o,--output", particles.output, "output .vtu file")->required();
+  std::string reference_file;  // `mpm reference`: the generated tables of docs/scene-reference.md
+  bool materials = false;
+  auto* reference_cmd = cli.add_subcommand("reference",
+                                           "print the material parameter tables, or rewrite them in FILE (the "
+                                           "generated blocks of docs/scene-reference.md)");
+  reference_cmd->add_flag("--materials", materials, "the material parameter tables (the only reference so far)")
+      ->required();
+  reference_cmd->add_option("file", reference_file, "Markdown file whose generated blocks to rewrite");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -59,6 +70,11 @@ int main(int argc, char** argv) {
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   if (particles_cmd->parsed()) return particles_command(particles, std::cout, std::cerr);
+  if (reference_cmd->parsed()) {
+    std::optional<std::filesystem::path> file;
+    if (!reference_file.empty()) file = reference_file;
+    return reference_command(file, std::cout, std::cerr);
+  }
   try {
     register_modules();  // the optional modules' material models, before the scene is read
     const mpm::SceneDescription scene = mpm::load_scene(scene_file);

@@ -12,7 +12,7 @@
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
-#include "mpm/material_factory.hpp"
+#include "mpm/material_registry.hpp"
 #include "mpm/output_fields.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
@@ -125,7 +125,7 @@ bool add_domain_fields(Body<Dim>& body, const SceneDescription& scene, const Bod
     CornerSet<Dim> none;
     none.fill(VecU<Dim>::Zero());
     body.domain_corners = shape.domain_corners;
-    if (scene.solver.cpdi_domain_update == "corners") {  // CPDI2: tracked corners (eq. 3.38)
+    if (scene.solver.cpdi_domain_update == CpdiDomainUpdate::corners) {  // CPDI2: tracked corners (eq. 3.38)
       auto& corners = p.add_field(keys::cpdi_corners<Dim>, none);
       for (Index i = 0; i < p.size(); ++i)
         for (int c = 0; c < 4; ++c) corners[i][c] = p.x[i] + elements.offsets[i][c];
@@ -158,7 +158,7 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   const geometry::CpdiParticles<Dim> elements = particle_elements<Dim>(scene, bd, index, geometry, shape, warnings);
   add_particles<Dim>(body, bd, elements);
   track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
-  if (scene.solver.velocity_transfer == "apic")
+  if (scene.solver.velocity_transfer == VelocityTransfer::apic)
     body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
   prepare_output_fields<Dim>(scene.output.fields, body);  // what the output reads (displacement: X_p)
   body.material->prepare_particles(body.particles);       // the model's history fields (plasticity), if any
@@ -206,7 +206,7 @@ void check_fixed_time_step(const SceneDescription& scene, const Simulation<Dim>&
 template <int Dim>
 std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
   const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
-  auto scheme = make_scheme<Dim>(scene.solver.scheme, scene.solver.shape_function);
+  auto scheme = make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function);
   const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
   check_output_against_shape_function(scene, shape);
 

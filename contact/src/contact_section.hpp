@@ -3,16 +3,15 @@
 #include <any>
 
 #include "mpm/contact/contact_description.hpp"
+#include "mpm/io/yaml_reader.hpp"
 #include "mpm/simulation.hpp"
-
-namespace YAML {
-class Node;
-}
 
 namespace mpm::contact {
 
-/// Parses and checks the section; throws SceneError naming file, line and key.
-std::any parse_contact_section(const YAML::Node& section, const SceneDescription& scene);
+/// Parses and checks the section (the value of `contact:`) through the scene's reader; returns a
+/// ContactDescription. Throws SceneError naming file, line and key.
+std::any parse_contact_section(const io::YamlReader& reader, const io::YamlValue& section,
+                               const SceneDescription& scene);
 
 /// Adds the contact module to a simulation built from `scene` (which has a `contact` section).
 template <int Dim>

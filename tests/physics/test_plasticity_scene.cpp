@@ -10,7 +10,7 @@
 
 #include "../libmpm/scene_fixture.hpp"
 #include "mpm/app/modules.hpp"
-#include "mpm/material_catalog.hpp"
+#include "mpm/material_registry.hpp"
 #include "mpm/output_writer.hpp"
 
 namespace mpm {

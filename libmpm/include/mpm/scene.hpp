@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/solver_options.hpp"
+
 namespace mpm {
 
 /// Where a value came from in the scene file (1-based line and column; 0 when unknown).
@@ -38,8 +40,11 @@ struct GridDescription {
   std::array<double, 3> extent{0, 0, 0};     ///< m, box lengths
   std::array<double, 3> cell_size{0, 0, 0};  ///< m, per axis
   std::array<int, 3> cells{1, 1, 1};         ///< derived: extent / cell_size (checked to divide evenly)
-  /// Faces in the order x_min, x_max, y_min, y_max, z_min, z_max.
+  /// Faces in the order of face_names.
   std::array<FaceBoundary, 6> boundary;
+
+  /// The scene's names of the box faces (`grid.boundary`, `thermal.boundary`), in the order of `boundary`.
+  static constexpr std::array<const char*, 6> face_names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
 };
 
 /// A named material: its model key (a registry name such as "linear_elastic") and its parameters, in SI
@@ -94,12 +99,12 @@ struct BodyDescription {
 };
 
 struct SolverDescription {
-  std::string scheme = "musl";             ///< "usl", "musl", "usf" or "tlmpm" (scheme_names())
-  std::string shape_function = "linear";   ///< a name of the shape-function table (find_shape_function)
-  std::string velocity_transfer = "flip";  ///< "flip" (PIC/FLIP blend) or "apic" (affine, review §5.5.1)
-  double flip_fraction = 1.0;              ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
-  /// CPDI only: "deformation_gradient" (corners x_p + F (X_c - X_p), eq. 3.27) or "corners" (tracked, eq. 3.38)
-  std::string cpdi_domain_update;
+  SchemeKind scheme = SchemeKind::musl;
+  std::string shape_function = "linear";  ///< a name of shape_function_names() (scheme.hpp)
+  VelocityTransfer velocity_transfer = VelocityTransfer::flip;
+  double flip_fraction = 1.0;  ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
+  /// CPDI shape functions only (empty otherwise): corners from F (eq. 3.27) or tracked (eq. 3.38)
+  std::optional<CpdiDomainUpdate> cpdi_domain_update;
   std::optional<double> dt;                ///< s, fixed time step (exclusive with cfl)
   std::optional<double> cfl;               ///< CFL factor of eq. 2.73, in (0, 1]
   double end_time = 0;                     ///< s

@@ -20,18 +20,21 @@
 #include "mpm/module.hpp"
 #include "mpm/scene.hpp"
 
-namespace YAML {
-class Node;
-}
-
 namespace mpm {
+
+namespace io {
+class YamlReader;
+struct YamlValue;
+}  // namespace io
 
 template <int Dim>
 class Simulation;
 
-/// Reads the section (the scene's other sections are already read); throws SceneError naming file,
-/// line and key. The returned value is stored in SceneDescription::extensions[key].
-using SectionParser = std::any (*)(const YAML::Node& section, const SceneDescription& scene);
+/// Reads the section through `reader` (io/yaml_reader.hpp; `section` is the value of the top-level key, its
+/// path that key), after the scene's other sections; throws SceneError naming file, line and key. The returned
+/// value is stored in SceneDescription::extensions[key].
+using SectionParser = std::any (*)(const io::YamlReader& reader, const io::YamlValue& section,
+                                   const SceneDescription& scene);
 /// Adds the module to a simulation built from `scene`; throws SceneError for what needs the built bodies.
 template <int Dim>
 using SectionBuilder = void (*)(const SceneDescription& scene, Simulation<Dim>& simulation);

@@ -1,67 +1,67 @@
 #include "mpm/fluids/register.hpp"
 
-#include <limits>
 #include <mutex>
 
 #include "mpm/fluids/ideal_gas.hpp"
 #include "mpm/fluids/output_fields.hpp"
 #include "mpm/fluids/tait_fluid.hpp"
 #include "mpm/material_batch.hpp"
-#include "mpm/material_catalog.hpp"
-#include "mpm/material_factory.hpp"
+#include "mpm/material_registry.hpp"
 
 namespace mpm::fluids {
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using io::Range;
 
-ParameterSpec parameter(std::string name, std::string unit, std::string description, std::optional<double> value,
-                        double lower, bool lower_inclusive) {
-  ParameterSpec p;
-  p.name = std::move(name);
-  p.unit = std::move(unit);
-  p.description = std::move(description);
-  p.default_value = value;
-  p.lower = lower;
-  p.lower_inclusive = lower_inclusive;
-  p.upper = inf;
-  return p;
+std::vector<ParameterSpec> newtonian_parameters() {
+  return {
+      ParameterSpec::required("density", "kg/m^3", Range::above(0), "reference density rho0"),
+      ParameterSpec::required("bulk_modulus", "Pa", Range::above(0),
+                              "K of the Tait equation (may be reduced below the physical value to raise the time "
+                              "step: weak compressibility)"),
+      ParameterSpec::with_default("eos_exponent", "-", 7, Range::above(1), "Tait exponent gamma (7 water, 1.4 air)"),
+      ParameterSpec::with_default("viscosity", "Pa s", 0, Range::at_least(0), "dynamic (shear) viscosity mu"),
+      ParameterSpec::with_default("bulk_viscosity", "Pa s", 0, Range::at_least(0),
+                                  "bulk viscosity zeta = lambda + 2 mu/3 (0: Stokes condition)"),
+      ParameterSpec::with_default("density_tolerance", "-", 0.03, Range::above(0),
+                                  "largest abs(rho/rho0 - 1) before `mpm run` warns (once per body) that the bulk "
+                                  "modulus is too small for the flow"),
+  };
 }
 
-MaterialModelSpec newtonian_spec() {
-  MaterialModelSpec s;
-  s.model = "newtonian_fluid";
-  s.description =
-      "weakly compressible Newtonian fluid (review eqs 5.29-5.31): Tait EOS p = K [(rho/rho0)^gamma - 1], "
-      "sigma = 2 mu dev(D) + zeta tr(D) I - p I, density from det F";
-  s.parameters = {
-      parameter("density", "kg/m^3", "reference density rho0", std::nullopt, 0, false),
-      parameter("bulk_modulus", "Pa", "K of the Tait equation (may be reduced: weak compressibility)", std::nullopt, 0,
-                false),
-      parameter("eos_exponent", "-", "Tait exponent gamma (7 water, 1.4 air)", 7.0, 1, false),
-      parameter("viscosity", "Pa s", "dynamic (shear) viscosity mu", 0.0, 0, true),
-      parameter("bulk_viscosity", "Pa s", "bulk viscosity zeta = lambda + 2 mu/3 (0: Stokes condition)", 0.0, 0, true),
-      parameter("density_tolerance", "-",
-                "largest |rho/rho0 - 1| before the run warns that the bulk modulus is too small", 0.03, 0, false),
+std::vector<ParameterSpec> ideal_gas_parameters() {
+  return {
+      ParameterSpec::required("density", "kg/m^3", Range::above(0), "initial density rho0"),
+      ParameterSpec::required("initial_pressure", "Pa", Range::above(0),
+                              "initial pressure p0 (sets e0 = p0 / ((gamma - 1) rho0))"),
+      ParameterSpec::with_default("gamma", "-", 1.4, Range::above(1), "ratio of specific heats"),
+      ParameterSpec::with_default("artificial_viscosity_linear", "-", 0, Range::at_least(0),
+                                  "c_1 of eq. 5.35 (linear in tr D)"),
+      ParameterSpec::with_default("artificial_viscosity_quadratic", "-", 0, Range::at_least(0),
+                                  "c_2 of eq. 5.35 (quadratic in tr D)"),
   };
-  return s;
 }
 
-MaterialModelSpec ideal_gas_spec() {
-  MaterialModelSpec s;
-  s.model = "ideal_gas";
-  s.description =
-      "ideal gas (review eqs 5.32-5.35): p = (gamma - 1) rho e, internal energy per particle, artificial "
-      "viscosity in compression";
-  s.parameters = {
-      parameter("density", "kg/m^3", "initial density rho0", std::nullopt, 0, false),
-      parameter("initial_pressure", "Pa", "initial pressure p0 (sets e0 = p0 / ((gamma - 1) rho0))", std::nullopt, 0,
-                false),
-      parameter("gamma", "-", "ratio of specific heats", 1.4, 1, false),
-      parameter("artificial_viscosity_linear", "-", "c_1 of eq. 5.35 (linear in tr D)", 0.0, 0, true),
-      parameter("artificial_viscosity_quadratic", "-", "c_2 of eq. 5.35 (quadratic in tr D)", 0.0, 0, true),
-  };
-  return s;
+MaterialModel newtonian_model() {
+  return {.key = "newtonian_fluid",
+          .description =
+              "weakly compressible Newtonian fluid (review eqs 5.29-5.31): Tait EOS p = K [(rho/rho0)^gamma "
+              "- 1], sigma = 2 mu dev(D) + zeta tr(D) I - p I, density from det F",
+          .parameters = newtonian_parameters(),
+          .make_1d = &make_newtonian_fluid<1>,
+          .make_2d = &make_newtonian_fluid<2>,
+          .make_3d = &make_newtonian_fluid<3>};
+}
+
+MaterialModel ideal_gas_model() {
+  return {.key = "ideal_gas",
+          .description =
+              "ideal gas (review eqs 5.32-5.35): p = (gamma - 1) rho e, internal energy per particle, "
+              "artificial viscosity in compression",
+          .parameters = ideal_gas_parameters(),
+          .make_1d = &make_ideal_gas<1>,
+          .make_2d = &make_ideal_gas<2>,
+          .make_3d = &make_ideal_gas<3>};
 }
 
 }  // namespace
@@ -89,11 +89,8 @@ std::unique_ptr<Material<Dim>> make_ideal_gas(const MaterialDescription& d) {
 void register_module() {
   static std::once_flag once;
   std::call_once(once, [] {
-    register_material_model(newtonian_spec());
-    register_material_factory("newtonian_fluid", &make_newtonian_fluid<1>, &make_newtonian_fluid<2>,
-                              &make_newtonian_fluid<3>);
-    register_material_model(ideal_gas_spec());
-    register_material_factory("ideal_gas", &make_ideal_gas<1>, &make_ideal_gas<2>, &make_ideal_gas<3>);
+    register_material_model(newtonian_model());
+    register_material_model(ideal_gas_model());
     register_output_fields();
   });
 }

@@ -3,52 +3,54 @@
 // (make_plastic_material_{1,2,3}d.cpp, compiled in parallel).
 #include <memory>
 
+#include "mpm/material_registry.hpp"
 #include "mpm/materials/elastic_constants.hpp"
 #include "mpm/plasticity/plastic_batch.hpp"
 #include "mpm/plasticity/register.hpp"
 
 namespace mpm::plasticity::detail {
 
-inline Real get(const std::map<std::string, double>& p, const char* key, Real fallback) {
-  const auto it = p.find(key);
-  return it == p.end() ? fallback : it->second;
-}
-
-/// The constants every plastic model shares (parameter names: docs/scene-reference.md).
-inline PlasticityConstants constants(const std::map<std::string, double>& p) {
+/// The constants every plastic model shares (parameter names and defaults: register.cpp, filled in by the
+/// scene loader). Optional parameters switch a feature on; the parameters of a feature are read only when it is
+/// on, with material_parameter() (the given value or the spec's default).
+inline PlasticityConstants constants(const MaterialDescription& d) {
+  const auto& p = d.parameters;
   const ElasticConstants e = ElasticConstants::from_parameters(p);
   PlasticityConstants c;
   c.density = e.density;
   c.shear_modulus = e.mu;
   c.bulk_modulus = e.bulk;
-  c.reference_strain_rate = get(p, "reference_strain_rate", 1);
+  c.reference_strain_rate = p.at("reference_strain_rate");
   c.damage_enabled = p.count("damage_d1") != 0;
-  c.damage.d1 = get(p, "damage_d1", 0);
-  c.damage.d2 = get(p, "damage_d2", 0);
-  c.damage.d3 = get(p, "damage_d3", 0);
-  c.damage.d4 = get(p, "damage_d4", 0);
-  c.damage.d5 = get(p, "damage_d5", 0);
-  c.damage.evolution_factor = get(p, "damage_evolution_factor", 10);
+  if (c.damage_enabled) {
+    c.damage.d1 = p.at("damage_d1");
+    c.damage.d2 = material_parameter(d, "damage_d2");
+    c.damage.d3 = material_parameter(d, "damage_d3");
+    c.damage.d4 = material_parameter(d, "damage_d4");
+  }
+  c.damage.evolution_factor = p.at("damage_evolution_factor");
   c.thermal = p.count("specific_heat") != 0;
-  c.specific_heat = get(p, "specific_heat", 0);
-  c.taylor_quinney = get(p, "taylor_quinney_coefficient", 0.9);
-  c.room_temperature = get(p, "room_temperature", 293.15);
-  c.thermal_expansion = get(p, "thermal_expansion", 0);
-  c.softening = p.count("melting_temperature") != 0;
-  c.melting_temperature = get(p, "melting_temperature", 0);
-  c.viscosity_linear = get(p, "artificial_viscosity_linear", 0);
-  c.viscosity_quadratic = get(p, "artificial_viscosity_quadratic", 0);
+  if (c.thermal) {
+    c.specific_heat = p.at("specific_heat");
+    c.thermal_expansion = material_parameter(d, "thermal_expansion");
+  }
+  c.taylor_quinney = p.at("taylor_quinney_coefficient");
+  c.room_temperature = p.at("room_temperature");
+  c.viscosity_linear = p.at("artificial_viscosity_linear");
+  c.viscosity_quadratic = p.at("artificial_viscosity_quadratic");
   return c;
 }
 
 template <int Dim, class Flow>
 std::unique_ptr<Material<Dim>> make_with_eos(const char* key, const PlasticityConstants& c, const Flow& flow,
-                                             const std::map<std::string, double>& p) {
+                                             const MaterialDescription& d) {
+  const auto& p = d.parameters;
   if (p.count("bulk_sound_speed")) {
     ElastoplasticParams<Flow, MieGruneisenEos> params;
     static_cast<PlasticityConstants&>(params) = c;
     params.flow = flow;
-    params.eos = {c.density, p.at("bulk_sound_speed"), get(p, "hugoniot_slope", 0), get(p, "gruneisen_gamma", 0)};
+    params.eos = {c.density, p.at("bulk_sound_speed"), material_parameter(d, "hugoniot_slope"),
+                  material_parameter(d, "gruneisen_gamma")};
     return std::make_unique<PlasticBatch<Dim, Elastoplastic<Flow, MieGruneisenEos>>>(key, params);
   }
   ElastoplasticParams<Flow, LinearEos> params;
@@ -69,9 +71,13 @@ std::unique_ptr<Material<Dim>> make_johnson_cook(const MaterialDescription& d) {
   flow.A = p.at("yield_stress");
   flow.B = p.at("hardening_coefficient");
   flow.n = p.at("hardening_exponent");
-  flow.C = detail::get(p, "strain_rate_coefficient", 0);
-  flow.m = detail::get(p, "thermal_softening_exponent", 1);
-  return detail::make_with_eos<Dim>("johnson_cook", detail::constants(p), flow, p);
+  flow.C = p.at("strain_rate_coefficient");
+  flow.m = p.at("thermal_softening_exponent");
+  PlasticityConstants c = detail::constants(d);
+  if (c.damage_enabled) c.damage.d5 = material_parameter(d, "damage_d5");
+  c.softening = p.count("melting_temperature") != 0;
+  if (c.softening) c.melting_temperature = p.at("melting_temperature");
+  return detail::make_with_eos<Dim>("johnson_cook", c, flow, d);
 }
 
 template <int Dim>
@@ -79,10 +85,10 @@ std::unique_ptr<Material<Dim>> make_j2_plasticity(const MaterialDescription& d) 
   const auto& p = d.parameters;
   HardeningFlow flow;
   flow.yield_stress = p.at("yield_stress");
-  flow.hardening_modulus = detail::get(p, "hardening_modulus", 0);
-  flow.saturation_stress = detail::get(p, "voce_saturation_stress", 0);
-  flow.saturation_rate = detail::get(p, "voce_exponent", 0);
-  return detail::make_with_eos<Dim>("j2_plasticity", detail::constants(p), flow, p);
+  flow.hardening_modulus = p.at("hardening_modulus");
+  flow.saturation_stress = p.at("voce_saturation_stress");
+  flow.saturation_rate = p.at("voce_exponent");
+  return detail::make_with_eos<Dim>("j2_plasticity", detail::constants(d), flow, d);
 }
 
 }  // namespace mpm::plasticity

@@ -119,7 +119,7 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene
   const auto& td = std::any_cast<const ThermalDescription&>(it->second);
   ConductionSetup<Dim> setup;
   setup.source = td.source;
-  setup.total_lagrangian = scene.solver.scheme == "tlmpm";
+  setup.total_lagrangian = is_total_lagrangian(scene.solver.scheme);
   for (int f = 0; f < 2 * Dim; ++f) {
     setup.face_temperature[f] = td.boundary[f].temperature;
     setup.face_flux[f] = td.boundary[f].flux;

@@ -1,9 +1,8 @@
 #include "mpm/thermal/register.hpp"
 
-#include <limits>
 #include <mutex>
 
-#include "mpm/material_catalog.hpp"
+#include "mpm/material_registry.hpp"
 #include "mpm/scene_extension.hpp"
 #include "mpm/thermal/output_fields.hpp"
 #include "thermal_section.hpp"
@@ -16,37 +15,28 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription&, std:
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using io::Range;
 
-ParameterSpec optional(std::string name, std::string unit, std::string description, double lower = -inf,
-                       bool lower_inclusive = true) {
-  ParameterSpec p{
-      std::move(name), std::move(unit), std::move(description), std::nullopt, lower, lower_inclusive, inf, true};
-  p.optional = true;
-  return p;
-}
-
+/// The keys this module adds to every material model (docs/scene-reference.md, thermal).
 std::vector<ParameterSpec> thermal_parameters() {
-  std::vector<ParameterSpec> p = {
-      optional("thermal_conductivity", "W/(m K)", "isotropic thermal conductivity k (eq. 5.19)", 0.0, true),
-      optional("specific_heat", "J/(kg K)", "specific heat c (eq. 5.18)", 0.0, false),
-      optional("thermal_expansion", "1/K", "linear thermal expansion coefficient alpha (eq. 5.26)"),
+  const char* const with_section = "required with `thermal:`";
+  std::vector<ParameterSpec> parameters = {
+      ParameterSpec::optional("thermal_conductivity", "W/(m K)", Range::at_least(0), with_section,
+                              "isotropic thermal conductivity k (eq. 5.19)"),
+      ParameterSpec::optional("specific_heat", "J/(kg K)", Range::above(0), with_section, "specific heat c (eq. 5.18)"),
+      ParameterSpec::optional("thermal_expansion", "1/K", Range::any(), "absent: no expansion",
+                              "linear thermal expansion coefficient alpha (eq. 5.26); linear_elastic, johnson_cook "
+                              "and j2_plasticity only"),
   };
-  for (const char* c : {"xx", "yy", "zz", "xy", "yz", "xz"})
-    p.push_back(optional(std::string("thermal_conductivity_") + c, "W/(m K)",
-                         std::string("component ") + c +
-                             " of an anisotropic conductivity tensor (instead of "
-                             "thermal_conductivity)"));
-  ParameterSpec room{"room_temperature",
-                     "K",
-                     "initial temperature and reference of the thermal energy",
-                     293.15,
-                     0.0,
-                     false,
-                     inf,
-                     true};
-  p.push_back(room);
-  return p;
+  for (const char* component : {"xx", "yy", "zz", "xy", "yz", "xz"})
+    parameters.push_back(ParameterSpec::optional(
+        std::string("thermal_conductivity_") + component, "W/(m K)", Range::any(), "0 (with the other components)",
+        std::string("component ") + component +
+            " of an anisotropic conductivity tensor, instead of thermal_conductivity (symmetric positive "
+            "semi-definite)"));
+  parameters.push_back(ParameterSpec::with_default("room_temperature", "K", 293.15, Range::above(0),
+                                                   "initial temperature and reference of the thermal energy"));
+  return parameters;
 }
 
 }  // namespace
@@ -56,13 +46,11 @@ void register_module() {
   std::call_once(once, [] {
     register_common_material_parameters(thermal_parameters());
     // prepared before the first snapshot: conduction adds particle fields (temperature, heat flux)
-    SceneExtension e;
-    e.key = "thermal";
-    e.parse = &parse_thermal_section;
-    e.prepare_1d = &build_heat_conduction<1>;
-    e.prepare_2d = &build_heat_conduction<2>;
-    e.prepare_3d = &build_heat_conduction<3>;
-    register_scene_extension(e);
+    register_scene_extension({.key = "thermal",
+                              .parse = &parse_thermal_section,
+                              .prepare_1d = &build_heat_conduction<1>,
+                              .prepare_2d = &build_heat_conduction<2>,
+                              .prepare_3d = &build_heat_conduction<3>});
     register_output_fields();
   });
 }

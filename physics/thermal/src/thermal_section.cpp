@@ -1,127 +1,70 @@
 #include "thermal_section.hpp"
 
-#include <fmt/format.h>
-
-#include <charconv>
-#include <cmath>
-
-#include "mpm/expression.hpp"
-#include "mpm/scene_error.hpp"
 #include "mpm/thermal/thermal_description.hpp"
 
 namespace mpm::thermal {
 namespace {
 
-constexpr const char* face_names[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+using io::YamlMap;
+using io::YamlReader;
+using io::YamlValue;
 
-/// Checked access to the section's values, errors at FILE:LINE:COLUMN and the dotted key.
-struct SectionReader {
-  std::string file;
+/// `boundary:` faces, each held at a temperature or given a heat flux.
+void read_boundary(const YamlReader& reader, const YamlValue& value, int dimension, ThermalDescription& thermal) {
+  const YamlMap faces = reader.map(value);
+  const auto& names = GridDescription::face_names;
+  faces.allow(std::vector<std::string>(names.begin(), names.begin() + 2 * dimension));
+  for (int f = 0; f < 2 * dimension; ++f) {
+    const auto face = faces.find(names[f]);
+    if (!face) continue;
+    const YamlMap condition = reader.map(*face);
+    condition.allow({"temperature", "flux"});
+    ThermalFace& thermal_face = thermal.boundary[f];
+    thermal_face.where = reader.location(face->mark);
+    const auto temperature = condition.find("temperature");
+    const auto flux = condition.find("flux");
+    if (temperature && flux) reader.fail(*flux, "give either temperature (K) or flux (W/m^2) on a face, not both");
+    if (!temperature && !flux) reader.fail(*face, "expected temperature: ... (K) or flux: ... (W/m^2)");
+    if (temperature) thermal_face.temperature = reader.expression(*temperature, {"t"});
+    if (flux) thermal_face.flux = reader.expression(*flux, {"t"});
+  }
+}
 
-  SourceLocation at(const YAML::Node& node, const YAML::Mark& fallback = YAML::Mark::null_mark()) const {
-    const YAML::Mark m = node.IsDefined() && !node.IsNull() && !node.Mark().is_null() ? node.Mark() : fallback;
-    if (m.is_null()) return {file, 0, 0};
-    return {file, m.line + 1, m.column + 1};
+/// `fixed_temperature:` boxes whose particles are held at a temperature.
+std::vector<FixedTemperatureRegion> read_fixed_temperature(const YamlReader& reader, const YamlValue& value,
+                                                           int dimension) {
+  std::vector<FixedTemperatureRegion> regions;
+  for (const auto& item : reader.list(value, std::nullopt, "boxes {min, max, temperature}")) {
+    const YamlMap map = reader.map(item);
+    map.allow({"min", "max", "temperature"});
+    const YamlValue min = map.required("min"), max = map.required("max"), temperature = map.required("temperature");
+    FixedTemperatureRegion region;
+    region.where = reader.location(item.mark);
+    region.min = reader.vector(min, dimension, io::Range::any(), "m");
+    region.max = reader.vector(max, dimension, io::Range::any(), "m");
+    for (int d = 0; d < dimension; ++d)
+      if (!(region.max[d] > region.min[d])) reader.fail(max, "must exceed min on every axis");
+    region.temperature = reader.expression(temperature, {"t"});
+    regions.push_back(std::move(region));
   }
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
-    throw SceneError(at(node), key, message);
-  }
-  /// A map whose keys are all in `allowed`.
-  void map(const YAML::Node& node, const std::string& key, const std::vector<std::string>& allowed) const {
-    if (!node.IsMap()) fail(node, key, "expected a map");
-    for (auto it = node.begin(); it != node.end(); ++it) {
-      const std::string k = it->first.Scalar();
-      bool ok = false;
-      for (const auto& a : allowed) ok = ok || a == k;
-      if (!ok) {
-        std::string list;
-        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        throw SceneError(at(it->first), key + "." + k, fmt::format("unknown key '{}'; valid keys: {}", k, list));
-      }
-    }
-  }
-  double number(const YAML::Node& node, const std::string& key) const {
-    double v = 0;
-    if (node.IsScalar()) {
-      std::string_view t = node.Scalar();
-      if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-      const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), v);
-      if (error == std::errc() && end == t.data() + t.size() && std::isfinite(v)) return v;
-    }
-    fail(node, key, "expected a number");
-  }
-  /// A number or a muparser expression of `variables`, as text.
-  std::string expression(const YAML::Node& node, const std::string& key, const std::vector<std::string>& variables,
-                         const std::string& unit) const {
-    if (!node.IsScalar() || node.Scalar().empty())
-      fail(node, key, fmt::format("expected a number ({}) or an expression of {}", unit, fmt::join(variables, ", ")));
-    try {
-      const Expression e(node.Scalar(), variables);
-      if (e.is_constant() && !std::isfinite(e.constant_value()))
-        fail(node, key, fmt::format("\"{}\" is not finite", node.Scalar()));
-    } catch (const std::invalid_argument& e) {
-      fail(node, key, fmt::format("{} (variables allowed here: {})", e.what(), fmt::join(variables, ", ")));
-    }
-    return node.Scalar();
-  }
-  std::array<double, 3> vector(const YAML::Node& node, const std::string& key, int dimension) const {
-    if (!node.IsSequence() || static_cast<int>(node.size()) != dimension)
-      fail(node, key, fmt::format("expected a list of {} numbers (m)", dimension));
-    std::array<double, 3> v{0, 0, 0};
-    for (int d = 0; d < dimension; ++d) v[d] = number(node[d], fmt::format("{}[{}]", key, d));
-    return v;
-  }
-};
+  return regions;
+}
 
 }  // namespace
 
-std::any parse_thermal_section(const YAML::Node& node, const SceneDescription& scene) {
-  const SectionReader r{scene.file};
-  const std::string key = section_key;
-  const int dim = scene.dimension;
-  ThermalDescription t;
-  t.where = r.at(node);
-  if (node.IsNull()) return t;  // `thermal:` alone: conduction with insulated boundaries
-  r.map(node, key, {"initial_temperature", "source", "boundary", "fixed_temperature"});
-  if (const auto v = node["initial_temperature"])
-    t.initial_temperature = r.expression(v, key + ".initial_temperature", {"x", "y", "z"}, "K");
-  if (const auto v = node["source"]) t.source = r.expression(v, key + ".source", {"x", "y", "z", "t"}, "W/m^3");
-  if (const auto b = node["boundary"]) {
-    const std::vector<std::string> faces(face_names, face_names + 2 * dim);
-    r.map(b, key + ".boundary", faces);
-    for (int f = 0; f < 2 * dim; ++f) {
-      const auto face = b[face_names[f]];
-      if (!face) continue;
-      const std::string fkey = key + ".boundary." + face_names[f];
-      r.map(face, fkey, {"temperature", "flux"});
-      ThermalFace& tf = t.boundary[f];
-      tf.where = r.at(face);
-      if (face["temperature"] && face["flux"])
-        r.fail(face["flux"], fkey + ".flux", "give either temperature (K) or flux (W/m^2) on a face, not both");
-      if (const auto v = face["temperature"]) tf.temperature = r.expression(v, fkey + ".temperature", {"t"}, "K");
-      if (const auto v = face["flux"]) tf.flux = r.expression(v, fkey + ".flux", {"t"}, "W/m^2");
-      if (!tf.temperature && !tf.flux) r.fail(face, fkey, "expected temperature: ... (K) or flux: ... (W/m^2)");
-    }
-  }
-  if (const auto list = node["fixed_temperature"]) {
-    if (!list.IsSequence()) r.fail(list, key + ".fixed_temperature", "expected a list of {min, max, temperature}");
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const auto item = list[i];
-      const std::string ikey = fmt::format("{}.fixed_temperature[{}]", key, i);
-      r.map(item, ikey, {"min", "max", "temperature"});
-      FixedTemperatureRegion region;
-      region.where = r.at(item);
-      for (const char* k : {"min", "max", "temperature"})
-        if (!item[k]) r.fail(item, ikey + "." + k, fmt::format("missing required key '{}'", k));
-      region.min = r.vector(item["min"], ikey + ".min", dim);
-      region.max = r.vector(item["max"], ikey + ".max", dim);
-      for (int d = 0; d < dim; ++d)
-        if (!(region.max[d] > region.min[d])) r.fail(item["max"], ikey + ".max", "must exceed min on every axis");
-      region.temperature = r.expression(item["temperature"], ikey + ".temperature", {"t"}, "K");
-      t.fixed_temperature.push_back(std::move(region));
-    }
-  }
-  return t;
+std::any parse_thermal_section(const YamlReader& reader, const YamlValue& section, const SceneDescription& scene) {
+  ThermalDescription thermal;
+  thermal.where = reader.location(section.mark);
+  if (section.node.IsNull()) return thermal;  // `thermal:` alone: conduction with insulated boundaries
+  const YamlMap map = reader.map(section);
+  map.allow({"initial_temperature", "source", "boundary", "fixed_temperature"});
+  if (const auto initial = map.find("initial_temperature"))
+    thermal.initial_temperature = reader.expression(*initial, {"x", "y", "z"});
+  if (const auto source = map.find("source")) thermal.source = reader.expression(*source, {"x", "y", "z", "t"});
+  if (const auto boundary = map.find("boundary")) read_boundary(reader, *boundary, scene.dimension, thermal);
+  if (const auto fixed = map.find("fixed_temperature"))
+    thermal.fixed_temperature = read_fixed_temperature(reader, *fixed, scene.dimension);
+  return thermal;
 }
 
 }  // namespace mpm::thermal

@@ -1,14 +1,15 @@
 #pragma once
 // The parser of the `thermal:` scene section (registered by register.cpp).
-#include <yaml-cpp/yaml.h>
-
 #include <any>
 
+#include "mpm/io/yaml_reader.hpp"
 #include "mpm/scene.hpp"
 
 namespace mpm::thermal {
 
-/// Reads and checks `node` (the value of `thermal:`); returns a ThermalDescription. Throws SceneError.
-std::any parse_thermal_section(const YAML::Node& node, const SceneDescription& scene);
+/// Reads and checks `section` (the value of `thermal:`) through the scene's reader; returns a
+/// ThermalDescription. Throws SceneError.
+std::any parse_thermal_section(const io::YamlReader& reader, const io::YamlValue& section,
+                               const SceneDescription& scene);
 
 }  // namespace mpm::thermal

@@ -1,6 +1,6 @@
 #pragma once
 /// \file register.hpp
-/// Registration of the plasticity module: the material models johnson_cook and j2_plasticity with their
+/// Registration of the plasticity module: the material models johnson_cook, j2_plasticity and hencky_j2 with their
 /// parameters (for the scene loader) and builders (for the simulation builder). Called by the generated
 /// mpm::app::register_modules() when the module is compiled in (CMake option MPM_WITH_PLASTICITY).
 
@@ -11,7 +11,7 @@
 
 namespace mpm::plasticity {
 
-/// Adds johnson_cook and j2_plasticity to the material catalog and factory (idempotent).
+/// Adds johnson_cook, j2_plasticity and hencky_j2 to the material catalog and factory (idempotent).
 void register_module();
 
 /// The builders behind the registry (also used directly by tests).

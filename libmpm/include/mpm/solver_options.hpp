@@ -1,0 +1,45 @@
+#pragma once
+/// \file solver_options.hpp
+/// The choices of the scene's `solver:` section as enums (docs/scene-reference.md, solver), each with its
+/// names written once (enum_names.hpp). The loader validates the names; everything after it compares enums.
+
+#include <array>
+#include <string_view>
+#include <utility>
+
+#include "mpm/enum_names.hpp"
+
+namespace mpm {
+
+/// Time-integration scheme (review Alg. 1-3; USF: Bardenhagen 2002).
+enum class SchemeKind { musl, tlmpm, usf, usl };
+
+template <>
+struct EnumNames<SchemeKind> {
+  static constexpr std::array<std::pair<SchemeKind, std::string_view>, 4> table{
+      {{SchemeKind::musl, "musl"}, {SchemeKind::tlmpm, "tlmpm"}, {SchemeKind::usf, "usf"}, {SchemeKind::usl, "usl"}}};
+};
+
+/// True for the total-Lagrangian scheme: weights and gradients at the reference positions, which never change
+/// (no contact between bodies, no APIC, CPDI domains follow F).
+constexpr bool is_total_lagrangian(SchemeKind scheme) { return scheme == SchemeKind::tlmpm; }
+
+/// Grid-to-particle velocity transfer: the PIC/FLIP blend (eq. 2.53) or APIC (review §5.5.1).
+enum class VelocityTransfer { flip, apic };
+
+template <>
+struct EnumNames<VelocityTransfer> {
+  static constexpr std::array<std::pair<VelocityTransfer, std::string_view>, 2> table{
+      {{VelocityTransfer::flip, "flip"}, {VelocityTransfer::apic, "apic"}}};
+};
+
+/// How CPDI particle domains move: corners x_p + F (X_c - X_p) (eq. 3.27) or tracked corners (CPDI2, eq. 3.38).
+enum class CpdiDomainUpdate { deformation_gradient, corners };
+
+template <>
+struct EnumNames<CpdiDomainUpdate> {
+  static constexpr std::array<std::pair<CpdiDomainUpdate, std::string_view>, 2> table{
+      {{CpdiDomainUpdate::deformation_gradient, "deformation_gradient"}, {CpdiDomainUpdate::corners, "corners"}}};
+};
+
+}  // namespace mpm

@@ -1,0 +1,48 @@
+#include "elastic_models.hpp"
+
+#include "mpm/material_batch.hpp"
+#include "mpm/materials/linear_elastic.hpp"
+#include "mpm/materials/neo_hookean.hpp"
+
+namespace mpm {
+namespace {
+
+using io::Range;
+
+// Elastic constants shared by the core models (review App. B.1-B.2). Poisson's ratio is restricted to
+// (-1, 0.5): 0.5 is incompressible and has no finite bulk modulus in these explicit models.
+std::vector<ParameterSpec> elastic_parameters() {
+  return {
+      ParameterSpec::required("density", "kg/m^3", Range::above(0), "reference mass density rho0"),
+      ParameterSpec::required("youngs_modulus", "Pa", Range::above(0), "Young's modulus E"),
+      ParameterSpec::required("poisson_ratio", "-", Range::open(-1, 0.5), "Poisson's ratio nu"),
+  };
+}
+
+template <int Dim, class Law>
+std::unique_ptr<Material<Dim>> make_elastic(const MaterialDescription& d) {
+  return std::make_unique<MaterialBatch<Dim, Law>>(ElasticConstants::from_parameters(d.parameters));
+}
+
+template <class Law>
+MaterialModel elastic_model(std::string description) {
+  return {Law::key,
+          std::move(description),
+          elastic_parameters(),
+          {},
+          &make_elastic<1, Law>,
+          &make_elastic<2, Law>,
+          &make_elastic<3, Law>};
+}
+
+}  // namespace
+
+std::vector<MaterialModel> elastic_material_models() {
+  return {
+      elastic_model<LinearElastic>(
+          "Isotropic linear elasticity, incremental (hypoelastic) form B.5 with the Jaumann rate"),
+      elastic_model<NeoHookean>("Compressible Neo-Hookean hyperelasticity, eq. B.6-B.7 (Bonet & Wood)"),
+  };
+}
+
+}  // namespace mpm

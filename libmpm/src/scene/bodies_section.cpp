@@ -1,0 +1,101 @@
+// `bodies:` (docs/scene-reference.md, bodies): material, shape (shapes.hpp), particles per cell, initial
+// velocity; an image with `labels:` becomes one body per label.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "sections.hpp"
+#include "shapes.hpp"
+
+namespace mpm::sections {
+namespace {
+
+/// Fails unless the shape's bounding box (when the description knows it) lies inside the grid.
+void check_inside_grid(const YamlReader& reader, const YamlValue& shape, const BodyDescription& body, int dimension,
+                       const GridDescription& grid) {
+  const auto box = bounding_box(body.shape, dimension);
+  for (int d = 0; box && d < dimension; ++d) {
+    const auto& [lo, hi] = *box;
+    const double grid_lo = grid.origin[d], grid_hi = grid.origin[d] + grid.extent[d];
+    const double tolerance = geometric_tolerance * grid.extent[d];
+    if (lo[d] < grid_lo - tolerance || hi[d] > grid_hi + tolerance)
+      reader.fail(shape, fmt::format("body '{}' lies outside the grid: on axis {} it spans [{:.6g}, {:.6g}] m, the "
+                                     "grid [{:.6g}, {:.6g}] m",
+                                     body.name, axis_names[d], lo[d], hi[d], grid_lo, grid_hi));
+  }
+}
+
+/// `labels` receives the values of an image shape's `labels:` list (the body is then one body per label).
+BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std::size_t index,
+                          const SceneDescription& scene, std::vector<double>& labels) {
+  const int dimension = scene.dimension;
+  const YamlMap map = reader.map(value);
+  map.allow({"name", "material", "shape", "particles_per_cell", "velocity", "domains"});
+  BodyDescription body;
+  body.where = reader.location(value.mark);
+  body.name = fmt::format("body{}", index);
+  if (const auto name = map.find("name")) body.name = reader.name(*name);
+
+  const YamlValue material = map.required("material");
+  body.material = reader.string(material);
+  if (!scene.materials.count(body.material)) {
+    std::vector<std::string> defined;
+    for (const auto& [name, description] : scene.materials) defined.push_back(name);
+    reader.fail(material,
+                fmt::format("unknown material '{}'; defined materials: {}", body.material, fmt::join(defined, ", ")));
+  }
+
+  const YamlValue shape = map.required("shape");
+  body.shape = read_shape(reader, shape, dimension, scene.file, true, &labels);
+  check_inside_grid(reader, shape, body, dimension, scene.grid);
+
+  body.particles_per_cell = {1, 1, 1};
+  if (const auto ppc = map.find("particles_per_cell")) {
+    const auto counts = reader.per_axis(*ppc, dimension, "integers");
+    for (int d = 0; d < dimension; ++d) body.particles_per_cell[d] = reader.integer(counts[d], 1);
+  } else {
+    for (int d = 0; d < dimension; ++d) body.particles_per_cell[d] = 2;
+  }
+
+  if (const auto velocity = map.find("velocity")) {
+    const auto components = reader.list(*velocity, dimension, "components");
+    for (int d = 0; d < dimension; ++d) body.velocity[d] = reader.expression(components[d], {"x", "y", "z"});
+  }
+  if (const auto domains = map.find("domains")) body.domains = reader.choice(*domains, {"lattice", "conforming"});
+  return body;
+}
+
+}  // namespace
+
+std::vector<BodyDescription> read_bodies(const YamlReader& reader, const YamlValue& value,
+                                         const SceneDescription& scene) {
+  const auto items = reader.list(value, std::nullopt, "bodies");
+  if (items.empty()) reader.fail(value, "at least one body is required");
+  std::vector<BodyDescription> bodies;
+  std::map<std::string, int> first_line;  // body name -> line of its definition
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    std::vector<double> labels;
+    const BodyDescription read = read_body(reader, items[i], i, scene, labels);
+    std::vector<BodyDescription> expanded{read};
+    if (!labels.empty()) {  // an image with `labels:`: one body per label, named <name>_<label>
+      expanded.clear();
+      for (const double label : labels) {
+        BodyDescription body = read;
+        body.name = fmt::format("{}_{}", read.name, label);
+        body.shape.label = label;
+        expanded.push_back(std::move(body));
+      }
+    }
+    for (auto& body : expanded) {
+      if (const auto it = first_line.find(body.name); it != first_line.end()) {
+        const auto name = reader.map(items[i]).find("name");
+        reader.fail(name ? *name : items[i],
+                    fmt::format("duplicate body name '{}' (first used at line {})", body.name, it->second));
+      }
+      first_line[body.name] = body.where.line;
+      bodies.push_back(std::move(body));
+    }
+  }
+  return bodies;
+}
+
+}  // namespace mpm::sections

@@ -1,0 +1,57 @@
+// `materials:` (docs/scene-reference.md, materials): each material's parameters checked against its model's
+// spec (material_registry.hpp), defaults filled in.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "mpm/material_registry.hpp"
+#include "sections.hpp"
+
+namespace mpm::sections {
+namespace {
+
+MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry& entry) {
+  MaterialDescription material;
+  material.name = entry.key;
+  material.where = reader.location(entry.key_mark);
+  if (material.name.empty()) reader.fail(entry.key_mark, entry.value.path, "material name must not be empty");
+  const YamlMap map = reader.map(entry.value);
+  const io::YamlValue model_key = map.required("model");
+  material.model = reader.string(model_key);
+  const MaterialModel* model = find_material_model(material.model);
+  if (!model)
+    reader.fail(model_key, fmt::format("unknown material model '{}'; valid models: {}", material.model,
+                                       fmt::join(material_model_names(), ", ")));
+  const std::vector<ParameterSpec> parameters = material_parameters(*model);
+  std::vector<std::string> keys{"model"};
+  for (const auto& p : parameters) keys.push_back(p.name);
+  map.allow(keys, "parameter", " for model " + material.model);
+  for (const auto& p : parameters) {
+    if (const auto value = map.find(p.name)) {
+      material.parameters[p.name] = reader.number(*value, p.range, p.unit);
+    } else if (p.default_value) {
+      if (p.applies_with.empty()) material.parameters[p.name] = *p.default_value;  // else material_parameter()
+    } else if (p.is_required()) {
+      map.required(p.name, "parameter",
+                   fmt::format(" of model {} ({}{})", material.model, p.description,
+                               p.unit.empty() || p.unit == "-" ? "" : ", " + p.unit));
+    }
+  }
+  if (model->check)
+    if (const auto error = model->check(material.parameters)) {
+      if (const auto value = map.find(error->key)) reader.fail(*value, error->message);
+      reader.fail(entry.key_mark, map.path_of(error->key), error->message);
+    }
+  return material;
+}
+
+}  // namespace
+
+std::map<std::string, MaterialDescription> read_materials(const YamlReader& reader, const io::YamlValue& value) {
+  const YamlMap map = reader.map(value);
+  if (map.entries().empty()) reader.fail(value, "at least one material is required");
+  std::map<std::string, MaterialDescription> materials;
+  for (const auto& entry : map.entries()) materials[entry.key] = read_material(reader, entry);
+  return materials;
+}
+
+}  // namespace mpm::sections

@@ -1,0 +1,112 @@
+// `solver:` (docs/scene-reference.md, solver): scheme, shape function (checked against the grid), velocity
+// transfer, CPDI domain update, time step and the intervals of the guard and the sorting.
+#include <fmt/format.h>
+
+#include "mpm/scheme.hpp"
+#include "sections.hpp"
+
+namespace mpm::sections {
+namespace {
+
+/// Fails unless the shape function exists in this dimension, suits the scheme and fits the grid.
+void check_shape_function(const YamlReader& reader, const YamlValue& key, const SolverDescription& solver,
+                          const SceneDescription& scene) {
+  const int dimension = scene.dimension;
+  const ShapeFunctionInfo& info = *find_shape_function(solver.shape_function);
+  if (info.dimension != 0 && info.dimension != dimension)
+    reader.fail(key, fmt::format("{} is a {}D shape function; this scene is {}D (CPDI elements: cpdi_l2 in 1D, "
+                                 "cpdi_r4, cpdi_q4 and cpdi_t3 in 2D, cpdi_tet4 in 3D)",
+                                 info.name, info.dimension, dimension));
+  if (info.tlmpm_only && !is_total_lagrangian(solver.scheme))
+    reader.fail(key, fmt::format("{} has negative weights and is only valid with scheme: tlmpm (particles at "
+                                 "fixed reference positions); the scheme is {}",
+                                 info.name, enum_name(solver.scheme)));
+  for (int d = 0; d < dimension; ++d) {
+    if (scene.grid.cells[d] < info.min_cells)
+      reader.fail(key, fmt::format("{} needs at least {} cells per axis; the grid has {} on axis {}", info.name,
+                                   info.min_cells, scene.grid.cells[d], axis_names[d]));
+    if (info.even_cells && scene.grid.cells[d] % 2 != 0)
+      reader.fail(key, fmt::format("{} needs an even number of cells per axis (two per element); the "
+                                   "grid has {} on axis {}",
+                                   info.name, scene.grid.cells[d], axis_names[d]));
+  }
+}
+
+// CPDI domain update (review §3.6): with F by default for cpdi_l2/cpdi_r4 and with the TLMPM (whose weights
+// never change), with the tracked corners (CPDI2) for cpdi_q4, cpdi_t3 and cpdi_tet4.
+void read_cpdi_domain_update(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {
+  const ShapeFunctionInfo& info = *find_shape_function(solver.shape_function);
+  const auto key = map.find("cpdi_domain_update");
+  if (info.domain_corners == 0) {
+    if (key)
+      reader.fail(*key, "cpdi_domain_update applies to the CPDI shape functions only, not " + solver.shape_function);
+    return;
+  }
+  const bool total_lagrangian = is_total_lagrangian(solver.scheme);
+  solver.cpdi_domain_update =
+      info.domain_follows_F || total_lagrangian ? CpdiDomainUpdate::deformation_gradient : CpdiDomainUpdate::corners;
+  if (!key) return;
+  solver.cpdi_domain_update = reader.choice<CpdiDomainUpdate>(*key);
+  if (solver.cpdi_domain_update != CpdiDomainUpdate::corners) return;
+  if (total_lagrangian)
+    reader.fail(*key,
+                "corners: the TLMPM keeps its reference weights, so its domains follow F; use deformation_gradient");
+  if (solver.shape_function == "cpdi_r4")
+    reader.fail(*key,
+                "cpdi_r4 is the parallelogram domain convected with F (eq. 3.27); use cpdi_q4 to track the corners");
+}
+
+void read_velocity_transfer(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {
+  if (const auto flip = map.find("flip_fraction")) solver.flip_fraction = reader.number(*flip, Range::closed(0, 1), "");
+  const auto transfer = map.find("velocity_transfer");
+  if (!transfer) return;
+  solver.velocity_transfer = reader.choice<VelocityTransfer>(*transfer);
+  if (solver.velocity_transfer != VelocityTransfer::apic) return;
+  if (is_total_lagrangian(solver.scheme))
+    reader.fail(*transfer, "apic is not available with tlmpm (review Remark 35: it does not work well with the TLMPM)");
+  if (const auto flip = map.find("flip_fraction"))
+    reader.fail(*flip, "flip_fraction applies to velocity_transfer: flip, not to apic");
+}
+
+/// Exactly one of dt (fixed) and cfl (adaptive).
+void read_time_step(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {
+  const auto dt = map.find("dt");
+  const auto cfl = map.find("cfl");
+  if (dt && cfl) reader.fail(*cfl, "give either dt (fixed time step) or cfl (adaptive time step), not both");
+  if (!dt && !cfl)
+    reader.fail(map.self().mark, map.path_of("dt"),
+                "one of dt (fixed time step, s) or cfl (adaptive time step) is required");
+  if (dt) {
+    solver.dt = reader.number(*dt, Range::above(0), "s");
+    solver.dt_where = reader.location(dt->mark);
+  } else {
+    solver.cfl = reader.number(*cfl, Range::above_up_to(0, 1), "");
+    solver.dt_where = reader.location(cfl->mark);
+  }
+}
+
+}  // namespace
+
+SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
+  const YamlMap map = reader.map(value);
+  map.allow({"scheme", "shape_function", "velocity_transfer", "flip_fraction", "dt", "cfl", "end_time", "mass_cutoff",
+             "gravity", "snapshot_interval", "sort_interval", "cpdi_domain_update"});
+  SolverDescription solver;
+  if (const auto scheme = map.find("scheme")) solver.scheme = reader.choice<SchemeKind>(*scheme);
+  if (const auto shape_function = map.find("shape_function")) {
+    solver.shape_function = reader.choice(*shape_function, shape_function_names());
+    check_shape_function(reader, *shape_function, solver, scene);
+  }
+  read_cpdi_domain_update(reader, map, solver);
+  read_velocity_transfer(reader, map, solver);
+  read_time_step(reader, map, solver);
+  solver.end_time = reader.number(map.required("end_time"), Range::above(0), "s");
+  if (const auto cutoff = map.find("mass_cutoff")) solver.mass_cutoff = reader.number(*cutoff, Range::at_least(0), "");
+  if (const auto gravity = map.find("gravity"))
+    solver.gravity = reader.vector(*gravity, scene.dimension, Range::any(), "m/s^2");
+  if (const auto interval = map.find("snapshot_interval")) solver.snapshot_interval = reader.integer(*interval, 1);
+  if (const auto interval = map.find("sort_interval")) solver.sort_interval = reader.integer(*interval, 1);
+  return solver;
+}
+
+}  // namespace mpm::sections

@@ -1,0 +1,183 @@
+/// Tests of the one material registration (material_registry.hpp), of the reference tables generated from it
+/// (material_reference.hpp, docs/scene-reference.md) and of the option enums (solver_options.hpp).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "mpm/app/modules.hpp"
+#include "mpm/material_reference.hpp"
+#include "mpm/material_registry.hpp"
+#include "mpm/scene_loader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using mpm::ParameterSpec;
+using mpm::io::Range;
+
+/// A model with one parameter of each kind, registered only in this test's process.
+const char* const test_model = "registry_test_model";
+void register_test_model() {
+  mpm::MaterialModel model;
+  model.key = test_model;
+  model.description = "a model of the registry tests";
+  model.parameters = {
+      ParameterSpec::required("density", "kg/m^3", Range::above(0), "reference density rho0"),
+      ParameterSpec::with_default("stiffness", "Pa", 2.5e9, Range::at_least(0), "a modulus | with a bar"),
+      ParameterSpec::optional("switch", "-", Range::above_up_to(0, 1), "absent: off", "turns something on"),
+      ParameterSpec::with_default("switch_gain", "-", 4, Range::any(), "belongs to switch").only_with("switch"),
+  };
+  model.check = [](const std::map<std::string, double>& values) -> std::optional<mpm::ParameterError> {
+    if (values.count("switch_gain") && !values.count("switch"))
+      return mpm::ParameterError{"switch_gain",
+                                 "switch_gain needs switch; stiffness is " + std::to_string(values.at("stiffness"))};
+    return std::nullopt;
+  };
+  mpm::register_material_model(model);
+}
+
+std::string scene_with(const std::string& material) {
+  return "dimension: 1\ngrid: {extent: [1], cell_size: 0.1}\nmaterials:\n  m: {model: " + std::string(test_model) +
+         material +
+         "}\nbodies: [{material: m, shape: {type: box, min: [0], max: [1]}}]\nsolver: {cfl: 0.5, end_time: 1}\n";
+}
+
+TEST(MaterialRegistry, CoreModelsAreRegisteredWithTheirMakers) {
+  for (const char* key : {"linear_elastic", "neo_hookean"}) {
+    const mpm::MaterialModel* model = mpm::find_material_model(key);
+    ASSERT_NE(model, nullptr) << key;
+    EXPECT_EQ(model->parameters.size(), 3u);
+    EXPECT_TRUE(model->make_1d && model->make_2d && model->make_3d) << key;
+    mpm::MaterialDescription d{"m", key, {{"density", 1000}, {"youngs_modulus", 1e6}, {"poisson_ratio", 0.3}}, {}};
+    EXPECT_EQ(mpm::make_material<2>(d)->model(), key);
+    EXPECT_EQ(mpm::make_material<3>(d)->density(), 1000);
+  }
+  EXPECT_THROW(mpm::make_material<2>(mpm::MaterialDescription{"m", "no_such_model", {}, {}}), std::invalid_argument);
+}
+
+TEST(MaterialRegistry, LoaderFillsDefaultsFromTheSpecAndLeavesOptionalsOut) {
+  register_test_model();
+  const auto scene = mpm::parse_scene(scene_with(", density: 3"), "inline.yaml");
+  const auto& p = scene.materials.at("m").parameters;
+  EXPECT_EQ(p.at("density"), 3);
+  EXPECT_EQ(p.at("stiffness"), 2.5e9);    // the spec's default
+  EXPECT_EQ(p.count("switch"), 0u);       // optional, not given: absent
+  EXPECT_EQ(p.count("switch_gain"), 0u);  // a parameter of a feature: absent unless given
+  const auto given = mpm::parse_scene(scene_with(", density: 3, stiffness: 1, switch: 0.5"), "inline.yaml");
+  const auto& material = given.materials.at("m");
+  EXPECT_EQ(material.parameters.at("switch"), 0.5);
+  EXPECT_EQ(material.parameters.count("switch_gain"), 0u);
+  EXPECT_EQ(mpm::material_parameter(material, "switch_gain"), 4);  // the spec's default
+  EXPECT_EQ(mpm::material_parameter(material, "stiffness"), 1);
+  EXPECT_THROW(mpm::material_parameter(material, "no_such_parameter"), std::out_of_range);
+}
+
+TEST(MaterialRegistry, CheckSeesTheParametersOfAFeatureOnlyWhenGiven) {
+  register_test_model();
+  EXPECT_NO_THROW(mpm::parse_scene(scene_with(", density: 3"), "inline.yaml"));
+  try {
+    mpm::parse_scene(scene_with(", density: 3, switch_gain: 2"), "inline.yaml");
+    FAIL() << "accepted";
+  } catch (const mpm::SceneError& e) {
+    EXPECT_EQ(e.key, "materials.m.switch_gain");
+    EXPECT_EQ(e.message, "switch_gain needs switch; stiffness is 2500000000.000000");  // the default, filled in
+  }
+}
+
+TEST(MaterialRegistry, RangeOfTheSpecIsTheReaderRange) {
+  register_test_model();
+  try {
+    mpm::parse_scene(scene_with(", density: 3, switch: 0"), "inline.yaml");
+    FAIL() << "accepted";
+  } catch (const mpm::SceneError& e) {
+    EXPECT_EQ(e.message, "out of range: must be in (0, 1], got 0");
+  }
+}
+
+TEST(MaterialReference, WritesTheSpecAsATable) {
+  register_test_model();
+  const std::string table = mpm::material_reference_block(std::string("parameters of ") + test_model);
+  EXPECT_EQ(table,
+            "| Parameter | Unit | Default | Allowed values | Description |\n"
+            "|---|---|---|---|---|\n"
+            "| `density` | kg/m^3 | required | > 0 | reference density rho0 |\n"
+            "| `stiffness` | Pa | 2500000000 | >= 0 | a modulus \\| with a bar |\n"
+            "| `switch` | - | absent: off | in (0, 1] | turns something on |\n"
+            "| `switch_gain` | - | 4 (with `switch`) | any | belongs to switch |\n");
+}
+
+TEST(MaterialReference, SharedAndSpecificParametersOfTwoModels) {
+  register_test_model();
+  // The two core models declare the same parameters: all shared, none specific.
+  const std::string shared = mpm::material_reference_block(std::string("parameters of linear_elastic, neo_hookean"));
+  EXPECT_NE(shared.find("| `youngs_modulus` | Pa | required | > 0 | Young's modulus E |"), std::string::npos);
+  const std::string specific =
+      mpm::material_reference_block(std::string("parameters specific to linear_elastic, neo_hookean"));
+  EXPECT_EQ(specific,
+            "| Model | Parameter | Unit | Default | Allowed values | Description |\n|---|---|---|---|---|---|\n");
+}
+
+TEST(MaterialReference, LeavesBlocksOfUnknownModelsAndRejectsBrokenOnes) {
+  const std::string begin = "<!-- generated by `mpm reference --materials`: parameters of no_such_model -->\n";
+  const std::string document = "text\n" + begin + "| old |\n<!-- end of generated text -->\nafter\n";
+  const auto update = mpm::update_material_reference(document);
+  EXPECT_EQ(update.text, document);
+  EXPECT_EQ(update.blocks, 0);
+  ASSERT_EQ(update.skipped.size(), 1u);
+  EXPECT_EQ(update.skipped[0], "parameters of no_such_model");
+  EXPECT_THROW(mpm::update_material_reference("x\n" + begin + "| old |\n"), std::invalid_argument);
+  EXPECT_THROW(
+      mpm::update_material_reference("<!-- generated by `mpm reference --materials`: tables -->\n<!-- end of generated "
+                                     "text -->\n"),
+      std::invalid_argument);
+}
+
+// The material tables of docs/scene-reference.md are generated from the registered specs: the file must be what
+// the generator writes.
+TEST(MaterialReference, SceneReferenceIsCurrent) {
+  mpm::app::register_modules();
+  const fs::path file = fs::path(MPM_SOURCE_DIR) / "docs" / "scene-reference.md";
+  std::ifstream in(file, std::ios::binary);
+  ASSERT_TRUE(in) << file;
+  std::ostringstream text;
+  text << in.rdbuf();
+  const auto update = mpm::update_material_reference(text.str());
+  EXPECT_GE(update.blocks, 1);
+  EXPECT_TRUE(update.text == text.str())
+      << file.string() << " is not current with the material specs; rewrite its generated tables with\n"
+      << "  ./build/apps/mpm reference --materials docs/scene-reference.md\n"
+      << "(or: cmake --build build --target scene_reference)";
+#if defined(MPM_WITH_PLASTICITY) && defined(MPM_WITH_FLUIDS) && defined(MPM_WITH_THERMAL) && defined(MPM_WITH_CONTACT)
+  EXPECT_TRUE(update.skipped.empty()) << "a block names a model no module registers: " << update.skipped.front();
+#endif
+}
+
+TEST(SolverOptions, NamesAreWrittenOnce) {
+  EXPECT_EQ(mpm::enum_names<mpm::SchemeKind>(), (std::vector<std::string>{"musl", "tlmpm", "usf", "usl"}));
+  for (const auto& name : mpm::enum_names<mpm::SchemeKind>())
+    EXPECT_EQ(mpm::enum_name(*mpm::enum_from_name<mpm::SchemeKind>(name)), name);
+  EXPECT_FALSE(mpm::enum_from_name<mpm::SchemeKind>("flip"));
+  EXPECT_TRUE(mpm::is_total_lagrangian(mpm::SchemeKind::tlmpm));
+  EXPECT_FALSE(mpm::is_total_lagrangian(mpm::SchemeKind::musl));
+  EXPECT_EQ(mpm::enum_names<mpm::VelocityTransfer>(), (std::vector<std::string>{"flip", "apic"}));
+  EXPECT_EQ(mpm::enum_names<mpm::CpdiDomainUpdate>(), (std::vector<std::string>{"deformation_gradient", "corners"}));
+}
+
+TEST(Range, DescribesItsBounds) {
+  EXPECT_EQ(Range::above(0).describe("Pa"), "> 0 Pa");
+  EXPECT_EQ(Range::at_least(1).describe("-"), ">= 1");
+  EXPECT_EQ(Range::open(-1, 0.5).describe(""), "in (-1, 0.5)");
+  EXPECT_EQ(Range::closed(0, 1).describe(""), "in [0, 1]");
+  EXPECT_EQ(Range::any().describe("m"), "any");
+  EXPECT_TRUE(Range::above_up_to(0, 1).contains(1));
+  EXPECT_FALSE(Range::above_up_to(0, 1).contains(0));
+}
+
+}  // namespace
