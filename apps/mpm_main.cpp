@@ -19,7 +19,7 @@
 
 int main(int argc, char** argv) {
   using namespace mpm::app;
-  CLI::App cli{"mpm: explicit material point method (USL/MUSL) with YAML scenes and ParaView output"};
+  CLI::App cli{"mpm: explicit material point method (USL, MUSL, USF, TLMPM) with YAML scenes and ParaView output"};
   cli.set_version_flag("--version", std::string("mpm ") + MPM_VERSION);
   cli.require_subcommand(1);
   std::string scene_file;

@@ -7,19 +7,28 @@
 
 #include "mpm/cpdi_corner_tracking.hpp"
 #include "mpm/expression.hpp"
+#include "mpm/field_keys.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/material_registry.hpp"
+#include "mpm/output_fields.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
 
 namespace mpm::app {
+namespace {
+
+std::string body_key(int index, const char* key) { return "bodies[" + std::to_string(index) + "]." + key; }
+
+bool wants_output(const SceneDescription& scene, const char* field) {
+  const auto& fields = scene.output.fields;
+  return std::find(fields.begin(), fields.end(), field) != fields.end();
+}
 
 template <int Dim>
-std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
-  const auto& gd = scene.grid;
+GridGeometry<Dim> grid_geometry(const GridDescription& gd) {
   Vec<Dim> origin, h;
   std::array<int, Dim> cells{};
   for (int d = 0; d < Dim; ++d) {
@@ -27,150 +36,197 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
     h[d] = gd.cell_size[d];
     cells[d] = gd.cells[d];
   }
-  const GridGeometry<Dim> geometry(origin, h, cells);
-  auto scheme = make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function);
+  return GridGeometry<Dim>(origin, h, cells);
+}
 
-  const auto wants = [&](const char* field) {
-    return std::find(scene.output.fields.begin(), scene.output.fields.end(), field) != scene.output.fields.end();
-  };
-  std::vector<Body<Dim>> bodies;
-  Real max_particle_mass = 0;
-  bool track_corners = false;
-  for (const auto& bd : scene.bodies) {
-    const MaterialDescription& md = scene.materials.at(bd.material);
-    Body<Dim> body;
-    body.name = bd.name;
-    body.index = static_cast<int>(bodies.size());
-    body.material = make_material<Dim>(md);
-    const std::string shape_key = "bodies[" + std::to_string(body.index) + "].shape";
-    std::vector<std::string> warnings;  // repairs of mesh files (printed, the run goes on)
-    geometry::ParticleSeeds<Dim> seeds;
+/// The output fields that only shape functions with particle domains define (checked before any body is built).
+void check_output_against_shape_function(const SceneDescription& scene, const ShapeFunctionInfo& shape) {
+  if (wants_output(scene, "domains") && !shape.particle_domain && shape.domain_corners == 0)
+    throw SceneError(scene.output.where, "output.fields",
+                     "domains are only defined for shape functions with particle domains (gimp, cpgimp, cpdi_*), "
+                     "not " +
+                         scene.solver.shape_function);
+  if (wants_output(scene, "domain_size") && !shape.particle_domain)
+    throw SceneError(scene.output.where, "output.fields",
+                     "domain_size is only defined for shape functions with particle domains (gimp, cpgimp), not " +
+                         scene.solver.shape_function);
+}
+
+/// The particles of one body as elements (position, volume; CPDI: corner offsets): the shape filled on the
+/// grid's lattice, split into CPDI elements or meshed conformingly when the shape function asks for it.
+template <int Dim>
+geometry::CpdiParticles<Dim> particle_elements(const SceneDescription& scene, const BodyDescription& bd, int index,
+                                               const GridGeometry<Dim>& geometry, const ShapeFunctionInfo& shape,
+                                               std::vector<std::string>& warnings) {
+  const std::string shape_key = body_key(index, "shape");
+  geometry::ParticleSeeds<Dim> seeds;
+  try {
+    seeds = geometry::fill_shape<Dim>(bd.shape, geometry, bd.particles_per_cell, &warnings);
+  } catch (const geometry::GeometryError& e) {
+    throw SceneError(bd.shape.where, shape_key, "body '" + bd.name + "': " + e.what());
+  }
+  if (seeds.positions.empty())
+    throw SceneError(bd.where, shape_key,
+                     "body '" + bd.name + "' contains no particle: the shape is smaller than a particle spacing");
+  // CPDI: every sub-cell becomes one or more particle elements (segments, quads, triangles, tets).
+  geometry::CpdiParticles<Dim> elements;
+  const bool conforming = bd.domains == "conforming";
+  if (conforming && !((Dim == 2 && scene.solver.shape_function == "cpdi_t3") ||
+                      (Dim == 3 && scene.solver.shape_function == "cpdi_tet4")))
+    throw SceneError(bd.where, body_key(index, "domains"),
+                     "domains: conforming needs shape_function cpdi_t3 (2D) or cpdi_tet4 (3D); the solver uses " +
+                         scene.solver.shape_function);
+  const Vec<Dim>& h = geometry.h;
+  if (conforming) {  // CGAL triangle / tetrahedron mesh of the shape (geometry/conforming_domains.hpp)
+    Real spacing = h[0] / bd.particles_per_cell[0];
+    for (int d = 1; d < Dim; ++d) spacing = std::min<Real>(spacing, h[d] / bd.particles_per_cell[d]);
     try {
-      seeds = geometry::fill_shape<Dim>(bd.shape, geometry, bd.particles_per_cell, &warnings);
+      elements = geometry::conforming_cpdi_particles<Dim>(bd.shape, spacing, &warnings);
     } catch (const geometry::GeometryError& e) {
       throw SceneError(bd.shape.where, shape_key, "body '" + bd.name + "': " + e.what());
     }
-    if (seeds.positions.empty())
-      throw SceneError(bd.where, "bodies[" + std::to_string(body.index) + "].shape",
-                       "body '" + bd.name + "' contains no particle: the shape is smaller than a particle spacing");
-    std::array<Expression, 3> velocity{Expression(bd.velocity[0], {"x", "y", "z"}),
-                                       Expression(bd.velocity[1], {"x", "y", "z"}),
-                                       Expression(bd.velocity[2], {"x", "y", "z"})};
-    auto& p = body.particles;
-    const Real rho = body.material->density();
-    const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
-    // CPDI: every sub-cell becomes one or more particle elements (segments, quads, triangles, tets).
-    geometry::CpdiParticles<Dim> elements;
-    const bool conforming = bd.domains == "conforming";
-    if (conforming && !((Dim == 2 && scene.solver.shape_function == "cpdi_t3") ||
-                        (Dim == 3 && scene.solver.shape_function == "cpdi_tet4")))
-      throw SceneError(bd.where, "bodies[" + std::to_string(body.index) + "].domains",
-                       "domains: conforming needs shape_function cpdi_t3 (2D) or cpdi_tet4 (3D); the solver uses " +
-                           scene.solver.shape_function);
-    if (conforming) {  // CGAL triangle / tetrahedron mesh of the shape (geometry/conforming_domains.hpp)
-      Real spacing = h[0] / bd.particles_per_cell[0];
-      for (int d = 1; d < Dim; ++d) spacing = std::min<Real>(spacing, h[d] / bd.particles_per_cell[d]);
-      try {
-        elements = geometry::conforming_cpdi_particles<Dim>(bd.shape, spacing, &warnings);
-      } catch (const geometry::GeometryError& e) {
-        throw SceneError(bd.shape.where, shape_key, "body '" + bd.name + "': " + e.what());
-      }
-    } else if (shape.domain_corners > 0) {
-      Vec<Dim> spacing;
-      for (int d = 0; d < Dim; ++d) spacing[d] = h[d] / bd.particles_per_cell[d];
-      elements = geometry::cpdi_particles<Dim>(seeds, spacing, shape.domain_corners);
-    } else {
-      elements.positions = seeds.positions;
-      elements.volumes.assign(seeds.positions.size(), seeds.volume);
-    }
-    for (std::size_t k = 0; k < elements.positions.size(); ++k) {
-      const Vec<Dim>& x = elements.positions[k];
-      p.add(x, rho * elements.volumes[k], elements.volumes[k]);
-      double xyz[3] = {0, 0, 0};
-      for (int d = 0; d < Dim; ++d) xyz[d] = x[d];
-      for (int d = 0; d < Dim; ++d) p.v.back()[d] = velocity[d].evaluate(xyz, 0);
-    }
-    if (shape.domain_corners > 0) {
-      CornerSet<Dim> none;
-      none.fill(VecU<Dim>::Zero());
-      body.domain_corners = shape.domain_corners;
-      if (scene.solver.cpdi_domain_update == CpdiDomainUpdate::corners) {  // CPDI2: tracked corners (eq. 3.38)
-        auto& corners = p.template add_field<CornerSet<Dim>>("cpdi_corners", none);
-        for (Index i = 0; i < p.size(); ++i)
-          for (int c = 0; c < 4; ++c) corners[i][c] = p.x[i] + elements.offsets[i][c];
-        track_corners = true;
-      } else {  // original CPDI: corners convect with F (eq. 3.27)
-        p.template add_field<CornerSet<Dim>>("cpdi_corner_offsets0", none) = elements.offsets;
-      }
-    }
-    // On-demand fields, allocated only when the output asks for them.
-    if (wants("displacement")) {
-      auto& x0 = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
-      for (Index i = 0; i < p.size(); ++i) x0[i] = p.x[i];
-    }
-    if (wants("domains") && !shape.particle_domain && shape.domain_corners == 0)
-      throw SceneError(scene.output.where, "output.fields",
-                       "domains are only defined for shape functions with particle domains (gimp, cpgimp, cpdi_*), "
-                       "not " +
-                           scene.solver.shape_function);
-    if (wants("domain_size") && !shape.particle_domain)
-      throw SceneError(scene.output.where, "output.fields",
-                       "domain_size is only defined for shape functions with particle domains (gimp, cpgimp), not " +
-                           scene.solver.shape_function);
-    body.stretched_domain = scene.solver.shape_function == "cpgimp";
-    if (shape.particle_domain) {
-      // GIMP: the initial particle domain is the sub-cell the particle was placed in (review §3.3).
-      VecU<Dim> half;
-      for (int d = 0; d < Dim; ++d) half[d] = 0.5 * h[d] / bd.particles_per_cell[d];
-      p.template add_field<VecU<Dim>>("domain_half_length0", half);
-    }
-    if (scene.solver.velocity_transfer == VelocityTransfer::apic)
-      p.template add_field<MatU<Dim>>("affine_velocity", MatU<Dim>::Zero());  // C_p = 0 at the start
-    if (wants("velocity_gradient")) p.template add_field<MatU<Dim>>("velocity_gradient", MatU<Dim>::Zero());
-    body.material->prepare_particles(p);  // the model's history fields (plasticity), if it has any
-    for (const Real v : elements.volumes) max_particle_mass = std::max(max_particle_mass, rho * v);
-    for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
-    bodies.push_back(std::move(body));
+  } else if (shape.domain_corners > 0) {
+    Vec<Dim> spacing;
+    for (int d = 0; d < Dim; ++d) spacing[d] = h[d] / bd.particles_per_cell[d];
+    elements = geometry::cpdi_particles<Dim>(seeds, spacing, shape.domain_corners);
+  } else {
+    elements.positions = seeds.positions;
+    elements.volumes.assign(seeds.positions.size(), seeds.volume);
   }
+  return elements;
+}
+
+/// One particle per element, with the material's density and the body's initial velocity (expressions of x).
+template <int Dim>
+void add_particles(Body<Dim>& body, const BodyDescription& bd, const geometry::CpdiParticles<Dim>& elements) {
+  const std::array<Expression, 3> velocity{Expression(bd.velocity[0], {"x", "y", "z"}),
+                                           Expression(bd.velocity[1], {"x", "y", "z"}),
+                                           Expression(bd.velocity[2], {"x", "y", "z"})};
+  auto& p = body.particles;
+  const Real rho = body.material->density();
+  for (std::size_t k = 0; k < elements.positions.size(); ++k) {
+    const Vec<Dim>& x = elements.positions[k];
+    p.add(x, rho * elements.volumes[k], elements.volumes[k]);
+    double xyz[3] = {0, 0, 0};
+    for (int d = 0; d < Dim; ++d) xyz[d] = x[d];
+    for (int d = 0; d < Dim; ++d) p.v.back()[d] = velocity[d].evaluate(xyz, 0);
+  }
+}
+
+/// The particle-domain fields the shape function reads: CPDI corners (tracked, or offsets convected with
+/// F) or GIMP half-lengths. Returns true when the corners are tracked (a module then moves them).
+template <int Dim>
+bool add_domain_fields(Body<Dim>& body, const SceneDescription& scene, const BodyDescription& bd,
+                       const GridGeometry<Dim>& geometry, const ShapeFunctionInfo& shape,
+                       const geometry::CpdiParticles<Dim>& elements) {
+  auto& p = body.particles;
+  bool track_corners = false;
+  if (shape.domain_corners > 0) {
+    CornerSet<Dim> none;
+    none.fill(VecU<Dim>::Zero());
+    body.domain_corners = shape.domain_corners;
+    if (scene.solver.cpdi_domain_update == CpdiDomainUpdate::corners) {  // CPDI2: tracked corners (eq. 3.38)
+      auto& corners = p.add_field(keys::cpdi_corners<Dim>, none);
+      for (Index i = 0; i < p.size(); ++i)
+        for (int c = 0; c < 4; ++c) corners[i][c] = p.x[i] + elements.offsets[i][c];
+      track_corners = true;
+    } else {  // original CPDI: corners convect with F (eq. 3.27)
+      p.add_field(keys::cpdi_corner_offsets0<Dim>, none) = elements.offsets;
+    }
+  }
+  body.stretched_domain = scene.solver.shape_function == "cpgimp";
+  if (shape.particle_domain) {
+    // GIMP: the initial particle domain is the sub-cell the particle was placed in (review §3.3).
+    VecU<Dim> half;
+    for (int d = 0; d < Dim; ++d) half[d] = 0.5 * geometry.h[d] / bd.particles_per_cell[d];
+    p.add_field(keys::domain_half_length0<Dim>, half);
+  }
+  return track_corners;
+}
+
+/// Body `index` of the scene: material, particles, and every on-demand field its run needs (domains, APIC,
+/// the output's, the material's history); `track_corners` is set when its CPDI corners are tracked.
+template <int Dim>
+Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometry<Dim>& geometry,
+                     const ShapeFunctionInfo& shape, bool& track_corners) {
+  const BodyDescription& bd = scene.bodies[index];
+  Body<Dim> body;
+  body.name = bd.name;
+  body.index = index;
+  body.material = make_material<Dim>(scene.materials.at(bd.material));
+  std::vector<std::string> warnings;  // repairs of mesh files (printed, the run goes on)
+  const geometry::CpdiParticles<Dim> elements = particle_elements<Dim>(scene, bd, index, geometry, shape, warnings);
+  add_particles<Dim>(body, bd, elements);
+  track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
+  if (scene.solver.velocity_transfer == VelocityTransfer::apic)
+    body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
+  prepare_output_fields<Dim>(scene.output.fields, body);  // what the output reads (displacement: X_p)
+  body.material->prepare_particles(body.particles);       // the model's history fields (plasticity), if any
+  for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
+  return body;
+}
+
+template <int Dim>
+SimulationSettings<Dim> simulation_settings(const SolverDescription& solver, Real max_particle_mass) {
+  SimulationSettings<Dim> settings;
+  settings.transfer.flip_fraction = solver.flip_fraction;
+  settings.transfer.mass_cutoff = solver.mass_cutoff * max_particle_mass;
+  for (int d = 0; d < Dim; ++d) settings.transfer.gravity[d] = solver.gravity[d];
+  settings.fixed_dt = solver.dt;
+  settings.cfl = solver.cfl.value_or(0.5);
+  settings.end_time = solver.end_time;
+  settings.snapshot_interval = solver.snapshot_interval;
+  settings.sort_interval = solver.sort_interval;
+  return settings;
+}
+
+template <int Dim>
+Real max_particle_mass(const std::vector<Body<Dim>>& bodies) {
+  Real m = 0;
+  for (const auto& b : bodies)
+    for (const Real mp : b.particles.mass) m = std::max(m, mp);
+  return m;
+}
+
+/// Refuses a fixed dt above the stable time step of the initial state.
+template <int Dim>
+void check_fixed_time_step(const SceneDescription& scene, const Simulation<Dim>& sim) {
+  const auto& fixed_dt = sim.settings().fixed_dt;
+  if (!fixed_dt) return;
+  const Real bound = sim.stable_time_step();
+  if (*fixed_dt > bound)
+    throw SceneError(scene.solver.dt_where, "solver.dt",
+                     fmt::format("dt = {:.6g} s is larger than the stable time step {:.6g} s of the initial state "
+                                 "({}); use dt <= {:.6g} or `cfl` instead",
+                                 *fixed_dt, bound, sim.time_step_limiter(), bound));
+}
+
+}  // namespace
+
+template <int Dim>
+std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
+  const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
+  auto scheme = make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function);
+  const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
+  check_output_against_shape_function(scene, shape);
+
+  std::vector<Body<Dim>> bodies;
+  bool track_corners = false;
+  for (int k = 0; k < static_cast<int>(scene.bodies.size()); ++k)
+    bodies.push_back(build_body<Dim>(scene, k, geometry, shape, track_corners));
   // Optional modules the scene asks for (thermal: heat conduction), built before the first snapshot so that
   // their particle fields are part of it.
   std::vector<std::shared_ptr<Module<Dim>>> modules = prepare_scene_extensions<Dim>(scene, bodies, geometry);
-  if (wants("temperature") && std::none_of(bodies.begin(), bodies.end(),
-                                           [](const Body<Dim>& b) { return b.particles.has_field("temperature"); }))
-    throw SceneError(scene.output.where, "output.fields",
-                     "temperature: no body tracks temperature; give a material specific_heat (johnson_cook, "
-                     "j2_plasticity), add a thermal: section, or remove temperature from the fields");
-  if (wants("heat_flux") &&
-      std::none_of(bodies.begin(), bodies.end(), [](const Body<Dim>& b) { return b.particles.has_field("heat_flux"); }))
-    throw SceneError(scene.output.where, "output.fields",
-                     "heat_flux: no body conducts heat; add a thermal: section (and thermal_conductivity to the "
-                     "materials) or remove heat_flux from the fields");
+  if (const auto message = unavailable_output_field<Dim>(scene.output.fields, bodies))
+    throw SceneError(scene.output.where, "output.fields", *message);
 
-  SimulationSettings<Dim> settings;
-  settings.transfer.flip_fraction = scene.solver.flip_fraction;
-  settings.transfer.mass_cutoff = scene.solver.mass_cutoff * max_particle_mass;
-  for (int d = 0; d < Dim; ++d) settings.transfer.gravity[d] = scene.solver.gravity[d];
-  settings.fixed_dt = scene.solver.dt;
-  settings.cfl = scene.solver.cfl.value_or(0.5);
-  settings.end_time = scene.solver.end_time;
-  settings.snapshot_interval = scene.solver.snapshot_interval;
-  settings.sort_interval = scene.solver.sort_interval;
-
+  const SimulationSettings<Dim> settings = simulation_settings<Dim>(scene.solver, max_particle_mass(bodies));
   auto sim = std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme),
-                                               GridBoundary<Dim>(geometry, gd.boundary), settings);
+                                               GridBoundary<Dim>(geometry, scene.grid.boundary), settings);
   for (auto& m : modules) sim->add_module(std::move(m));
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
-  if (track_corners)
-    sim->add_module(
-        std::make_shared<CpdiCornerTracking<Dim>>(find_shape_function(scene.solver.shape_function)->domain_corners));
-  if (settings.fixed_dt) {
-    const Real bound = sim->stable_time_step();
-    if (*settings.fixed_dt > bound)
-      throw SceneError(scene.solver.dt_where, "solver.dt",
-                       fmt::format("dt = {:.6g} s is larger than the stable time step {:.6g} s of the initial state "
-                                   "({}); use dt <= {:.6g} or `cfl` instead",
-                                   *settings.fixed_dt, bound, sim->time_step_limiter(), bound));
-  }
+  if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));
+  check_fixed_time_step<Dim>(scene, *sim);
   return sim;
 }
 

@@ -39,8 +39,8 @@ Vec<Dim> evaluate(const std::array<Expression, Dim>& e, Real t) {
   return v;
 }
 
-/// Cell-centred density of eq. 5.9 with the quadratic B-spline S^2 of eq. 5.10 (bounds as corrected in the
-/// digest, erratum 9: +-h/2, +-3h/2), then the nodal normals of eq. 5.11 with the hat-function gradients at
+/// Cell-centred density of eq. 5.9 with the quadratic B-spline S^2 of eq. 5.10 (bounds as corrected in
+/// docs/errata.md #9: +-h/2, +-3h/2), then the nodal normals of eq. 5.11 with the hat-function gradients at
 /// the centres of the cells around each node. Serial: an alternative to eq. 5.12, selected by the scene.
 template <int Dim>
 void density_normals(const Body<Dim>& body, const GridGeometry<Dim>& g, const std::vector<Index>& nodes,
@@ -110,15 +110,16 @@ void density_normals(const Body<Dim>& body, const GridGeometry<Dim>& g, const st
 template <int Dim>
 MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, std::vector<Body<Dim>>& bodies,
                                                 const std::string& shape_function, ContactSettings<Dim> settings)
-    : bodies_(bodies), settings_(std::move(settings)), n_(static_cast<int>(bodies.size())) {
+    : bodies_(bodies), settings_(std::move(settings)), body_count_(static_cast<int>(bodies.size())) {
   passes_ = make_shape_passes<Dim>(shape_function);
-  own_.reserve(n_);  // Body::own_grid points into own_: no reallocation after this
-  for (int k = 0; k < n_; ++k) {
-    own_.emplace_back(grid);
-    bodies_[k].own_grid = &own_[k];
+  body_grids_.reserve(body_count_);  // Body::own_grid points into body_grids_: no reallocation after this
+  for (int k = 0; k < body_count_; ++k) {
+    body_grids_.emplace_back(grid);
+    bodies_[k].own_grid = &body_grids_[k];
   }
-  if (settings_.friction.size() != static_cast<std::size_t>(n_ * n_)) settings_.friction.assign(n_ * n_, 0);
-  rigid_of_.assign(n_, -1);
+  if (settings_.friction.size() != static_cast<std::size_t>(body_count_ * body_count_))
+    settings_.friction.assign(body_count_ * body_count_, 0);
+  rigid_of_.assign(body_count_, -1);
   for (std::size_t r = 0; r < settings_.rigid_bodies.size(); ++r) {
     const auto& rb = settings_.rigid_bodies[r];
     rigid_of_[rb.body] = static_cast<int>(r);
@@ -133,11 +134,11 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
   }
   const Index nodes = grid.node_count();
   is_candidate_.assign(nodes, 0);
-  gradient_.assign(n_, std::vector<VecU<Dim>>(nodes, VecU<Dim>::Zero()));
+  gradient_.assign(body_count_, std::vector<VecU<Dim>>(nodes, VecU<Dim>::Zero()));
   if (settings_.onset == Onset::particle_gap)
-    extent_.assign(n_, std::vector<Real>(nodes, -std::numeric_limits<Real>::infinity()));
+    extent_.assign(body_count_, std::vector<Real>(nodes, -std::numeric_limits<Real>::infinity()));
   pair_normal_.assign(nodes, VecU<Dim>::Zero());
-  const std::size_t slots = n_ * (n_ + settings_.planes.size());
+  const std::size_t slots = body_count_ * (body_count_ + settings_.planes.size());
   impulse_.assign(slots, Vec<Dim>::Zero());
   impulse_n_.assign(slots, 0);
   step_force_.assign(slots, Vec<Dim>::Zero());
@@ -165,8 +166,8 @@ void MultiVelocityContact<Dim>::after_p2g(StepContext<Dim>& ctx) {
   tbb::parallel_for(tbb::blocked_range<Index>(0, shared.size(), 1 << 12), [&](const auto& r) {
     for (Index i = r.begin(); i != r.end(); ++i) {
       NodeRecord<Dim>& s = shared.node[i];
-      for (int k = 0; k < n_; ++k) {
-        const NodeRecord<Dim>& o = own_[k].node[i];
+      for (int k = 0; k < body_count_; ++k) {
+        const NodeRecord<Dim>& o = body_grids_[k].node[i];
         s.mass += o.mass;
         s.momentum += o.momentum;
         s.force += o.force;
@@ -185,8 +186,8 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
   const Index nodes = g.node_count();
   for (Index I = 0; I < nodes; ++I) {
     int present = 0, deformable = 0;
-    for (int k = 0; k < n_; ++k)
-      if (own_[k].node[I].mass > cutoff) {
+    for (int k = 0; k < body_count_; ++k)
+      if (body_grids_[k].node[I].mass > cutoff) {
         ++present;
         deformable += rigid_of_[k] < 0;
       }
@@ -206,7 +207,7 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
   if (!pairs) return;
   // Normals of every body (eq. 5.12 or 5.9-5.11), then the pair normal at two-body nodes.
   std::vector<Real> density;
-  for (int k = 0; k < n_; ++k) {
+  for (int k = 0; k < body_count_; ++k) {
     auto& grad = gradient_[k];
     if (settings_.normals == NormalMethod::mass_gradient) {
       std::memset(static_cast<void*>(grad.data()), 0, grad.size() * sizeof(VecU<Dim>));
@@ -218,8 +219,8 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
   for (const Index I : candidates_) {
     if (!(is_candidate_[I] & body_pair)) continue;
     int a = -1, b = -1, count = 0;
-    for (int k = 0; k < n_; ++k)
-      if (own_[k].node[I].mass > cutoff) {
+    for (int k = 0; k < body_count_; ++k)
+      if (body_grids_[k].node[I].mass > cutoff) {
         (count == 0 ? a : b) = k;
         ++count;
       }
@@ -238,16 +239,16 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
     pair_normal_[I] = n;
   }
   if (settings_.onset != Onset::particle_gap) return;
-  for (int k = 0; k < n_; ++k)
+  for (int k = 0; k < body_count_; ++k)
     for (const Index I : candidates_) extent_[k][I] = -std::numeric_limits<Real>::infinity();
   // Extents along the pair normal: of the lower-numbered body along +n, of the other along -n. Each body
   // is scanned with both signs; at a node only the one matching its place in the pair is read.
-  for (int k = 0; k < n_; ++k)
+  for (int k = 0; k < body_count_; ++k)
     passes_->extents(bodies_[k], g, is_candidate_.data(), pair_normal_.data(), 1, extent_[k]);
   // A second array per body would double the memory; instead the upper body's extent is recomputed with
   // sign -1 into a scratch copy.
-  gap_upper_.resize(n_);
-  for (int k = 0; k < n_; ++k) {
+  gap_upper_.resize(body_count_);
+  for (int k = 0; k < body_count_; ++k) {
     gap_upper_[k].assign(extent_[k].size(), -std::numeric_limits<Real>::infinity());
     passes_->extents(bodies_[k], g, is_candidate_.data(), pair_normal_.data(), -1, gap_upper_[k]);
   }
@@ -259,8 +260,8 @@ void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage
   const Vec<Dim> gravity = ctx.settings.gravity;
   const Real t = stage == GridStage::mapped ? ctx.time : ctx.time + ctx.dt;
   auto member = stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped;
-  for (int k = 0; k < n_; ++k) {
-    Grid<Dim>& own = own_[k];
+  for (int k = 0; k < body_count_; ++k) {
+    Grid<Dim>& own = body_grids_[k];
     if (rigid_of_[k] >= 0) {  // rigid: the prescribed velocity on every node it touches (Alg. 4)
       const VecU<Dim> v = rigid_velocity(rigid_of_[k], t);
       tbb::parallel_for(tbb::blocked_range<Index>(0, own.size(), 1 << 12), [&](const auto& r) {
@@ -299,9 +300,12 @@ void MultiVelocityContact<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStag
 
 template <int Dim>
 void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVelocity<Dim>::*member, bool record) {
-  const Real cutoff = ctx.settings.mass_cutoff;
   const Real t = ctx.time + ctx.dt;
-  const int slots = n_ + static_cast<int>(settings_.planes.size());
+  CorrectionPass pass{
+      member, record, ctx.settings.mass_cutoff, ctx.dt, body_count_ + static_cast<int>(settings_.planes.size()), {}};
+  pass.plane_velocity.resize(settings_.planes.size());
+  for (std::size_t P = 0; P < pass.plane_velocity.size(); ++P)
+    pass.plane_velocity[P] = plane_velocity(static_cast<int>(P), t);
   if (record)
     for (std::size_t s = 0; s < step_force_.size(); ++s) {
       step_force_[s].setZero();
@@ -309,95 +313,123 @@ void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVel
     }
   Index corrected_nodes = 0;
   std::vector<int> present;
-  std::vector<Vec<Dim>> plane_v(settings_.planes.size());
-  for (std::size_t P = 0; P < plane_v.size(); ++P) plane_v[P] = plane_velocity(static_cast<int>(P), t);
-  const auto& g = ctx.grid.geometry;
   for (const Index I : candidates_) {
     const std::uint8_t flag = is_candidate_[I];
     present.clear();
-    for (int k = 0; k < n_; ++k)
-      if (own_[k].node[I].mass > cutoff) present.push_back(k);
+    for (int k = 0; k < body_count_; ++k)
+      if (body_grids_[k].node[I].mass > pass.cutoff) present.push_back(k);
     bool corrected = false;
-    auto apply = [&](int k, int other, const Vec<Dim>& v_cm, const Vec<Dim>& n, Real mu) {
-      Vec<Dim> v = own_[k].velocity[I].*member;
-      const Vec<Dim> before = v;
-      if (!correct_velocity<Dim>(v, v_cm, n, mu)) return;
-      own_[k].velocity[I].*member = v;
-      corrected = true;
-      if (!record) return;
-      const Vec<Dim> f = own_[k].node[I].mass * (v - before) / ctx.dt;
-      step_force_[k * slots + other] += f;
-      step_normal_[k * slots + other] -= f.dot(n);
-    };
     if ((flag & body_pair) && present.size() >= 2) {
       int rigid = -1;
       for (const int k : present)
         if (rigid_of_[k] >= 0 && rigid < 0) rigid = k;
-      Vec<Dim> v_cm = Vec<Dim>::Zero();
-      if (rigid >= 0) {  // infinite mass: the centre of mass moves with the rigid body (review §5.1.5)
-        v_cm = own_[rigid].velocity[I].*member;
-      } else {  // eq. 5.3
-        Real m = 0;
-        for (const int k : present) {
-          v_cm += own_[k].node[I].mass * Vec<Dim>(own_[k].velocity[I].*member);
-          m += own_[k].node[I].mass;
-        }
-        v_cm /= m;
-      }
-      if (present.size() == 2) {
-        const int a = present[0], b = present[1];
-        bool touching = true;
-        if (settings_.onset == Onset::particle_gap)  // gap between the particles' surfaces along n
-          touching = -(extent_[a][I] + gap_upper_[b][I]) <= 0;
-        if (touching) {
-          const Vec<Dim> n = pair_normal_[I];
-          const Real mu = settings_.friction[a * n_ + b];
-          if (rigid_of_[a] < 0) apply(a, b, v_cm, n, mu);
-          if (rigid_of_[b] < 0) apply(b, a, v_cm, -n, mu);
-        }
-      } else {
-        // Three or more bodies: each against the system (or the rigid body), with its own normal and
-        // the friction of its pair with the heaviest other body at the node.
-        const Vec<Dim> rigid_n = rigid >= 0 ? unit_or_zero<Dim>(gradient_[rigid][I]) : Vec<Dim>::Zero();
-        for (const int k : present) {
-          if (rigid_of_[k] >= 0) continue;
-          int other = rigid;
-          if (other < 0) {
-            Real heaviest = -1;
-            for (const int j : present)
-              if (j != k && own_[j].node[I].mass > heaviest) heaviest = own_[j].node[I].mass, other = j;
-          }
-          const Vec<Dim> n = rigid >= 0 ? Vec<Dim>(-rigid_n) : unit_or_zero<Dim>(gradient_[k][I]);
-          apply(k, other, v_cm, n, settings_.friction[k * n_ + other]);
-        }
-      }
+      const Vec<Dim> v_cm = centre_of_mass_velocity(pass, I, present, rigid);
+      if (present.size() == 2)
+        corrected = correct_pair(pass, I, present[0], present[1], v_cm);
+      else
+        corrected = correct_bodies(pass, I, present, rigid, v_cm);
     }
-    if (flag & behind_plane) {
-      const Vec<Dim> x = g.node_position(g.node_indices(I));
-      for (std::size_t P = 0; P < settings_.planes.size(); ++P) {
-        const auto& plane = settings_.planes[P];
-        if ((x - plane_point_[P]).dot(plane.normal) > 0) continue;
-        for (const int k : present)
-          if (rigid_of_[k] < 0) apply(k, n_ + static_cast<int>(P), plane_v[P], -plane.normal, plane.friction);
-      }
-    }
+    if (flag & behind_plane) corrected = correct_planes(pass, I, ctx.grid.geometry, present) || corrected;
     corrected_nodes += corrected;
   }
-  if (!record) return;
+  if (record) log_forces(pass, corrected_nodes, t);
+}
+
+template <int Dim>
+bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Index I, int k, int other,
+                                                 const Vec<Dim>& v_cm, const Vec<Dim>& n, Real mu) {
+  Vec<Dim> v = body_grids_[k].velocity[I].*pass.member;
+  const Vec<Dim> before = v;
+  if (!correct_velocity<Dim>(v, v_cm, n, mu)) return false;
+  body_grids_[k].velocity[I].*pass.member = v;
+  if (!pass.record) return true;
+  const Vec<Dim> f = body_grids_[k].node[I].mass * (v - before) / pass.dt;
+  step_force_[k * pass.slots + other] += f;
+  step_normal_[k * pass.slots + other] -= f.dot(n);
+  return true;
+}
+
+template <int Dim>
+Vec<Dim> MultiVelocityContact<Dim>::centre_of_mass_velocity(const CorrectionPass& pass, Index I,
+                                                            const std::vector<int>& present, int rigid) const {
+  // infinite mass: the centre of mass moves with the rigid body (review §5.1.5)
+  if (rigid >= 0) return body_grids_[rigid].velocity[I].*pass.member;
+  Vec<Dim> v_cm = Vec<Dim>::Zero();  // eq. 5.3
+  Real m = 0;
+  for (const int k : present) {
+    v_cm += body_grids_[k].node[I].mass * Vec<Dim>(body_grids_[k].velocity[I].*pass.member);
+    m += body_grids_[k].node[I].mass;
+  }
+  v_cm /= m;
+  return v_cm;
+}
+
+template <int Dim>
+bool MultiVelocityContact<Dim>::correct_pair(const CorrectionPass& pass, Index I, int a, int b, const Vec<Dim>& v_cm) {
+  if (settings_.onset == Onset::particle_gap && !(-(extent_[a][I] + gap_upper_[b][I]) <= 0))
+    return false;  // a gap between the particles' surfaces along n
+  const Vec<Dim> n = pair_normal_[I];
+  const Real mu = settings_.friction[a * body_count_ + b];
+  bool corrected = false;
+  if (rigid_of_[a] < 0) corrected = apply_correction(pass, I, a, b, v_cm, n, mu) || corrected;
+  if (rigid_of_[b] < 0) corrected = apply_correction(pass, I, b, a, v_cm, -n, mu) || corrected;
+  return corrected;
+}
+
+template <int Dim>
+bool MultiVelocityContact<Dim>::correct_bodies(const CorrectionPass& pass, Index I, const std::vector<int>& present,
+                                               int rigid, const Vec<Dim>& v_cm) {
+  // Three or more bodies: each against the system (or the rigid body), with its own normal and the friction
+  // of its pair with the heaviest other body at the node.
+  const Vec<Dim> rigid_n = rigid >= 0 ? unit_or_zero<Dim>(gradient_[rigid][I]) : Vec<Dim>::Zero();
+  bool corrected = false;
+  for (const int k : present) {
+    if (rigid_of_[k] >= 0) continue;
+    int other = rigid;
+    if (other < 0) {
+      Real heaviest = -1;
+      for (const int j : present)
+        if (j != k && body_grids_[j].node[I].mass > heaviest) heaviest = body_grids_[j].node[I].mass, other = j;
+    }
+    const Vec<Dim> n = rigid >= 0 ? Vec<Dim>(-rigid_n) : unit_or_zero<Dim>(gradient_[k][I]);
+    corrected = apply_correction(pass, I, k, other, v_cm, n, settings_.friction[k * body_count_ + other]) || corrected;
+  }
+  return corrected;
+}
+
+template <int Dim>
+bool MultiVelocityContact<Dim>::correct_planes(const CorrectionPass& pass, Index I, const GridGeometry<Dim>& g,
+                                               const std::vector<int>& present) {
+  const Vec<Dim> x = g.node_position(g.node_indices(I));
+  bool corrected = false;
+  for (std::size_t P = 0; P < settings_.planes.size(); ++P) {
+    const auto& plane = settings_.planes[P];
+    if ((x - plane_point_[P]).dot(plane.normal) > 0) continue;
+    for (const int k : present)
+      if (rigid_of_[k] < 0)
+        corrected = apply_correction(pass, I, k, body_count_ + static_cast<int>(P), pass.plane_velocity[P],
+                                     -plane.normal, plane.friction) ||
+                    corrected;
+  }
+  return corrected;
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::log_forces(const CorrectionPass& pass, Index corrected_nodes, Real t) {
   contact_nodes_last_ = corrected_nodes;
   if (corrected_nodes > 0 && onset_time_ < 0) onset_time_ = t;
   for (std::size_t s = 0; s < step_force_.size(); ++s) {
-    impulse_[s] += ctx.dt * step_force_[s];
-    impulse_n_[s] += ctx.dt * step_normal_[s];
+    impulse_[s] += pass.dt * step_force_[s];
+    impulse_n_[s] += pass.dt * step_normal_[s];
   }
   last_forces_.clear();
-  for (int k = 0; k < n_; ++k)
-    for (int o = 0; o < slots; ++o) {
-      const int s = k * slots + o;
+  for (int k = 0; k < body_count_; ++k)
+    for (int o = 0; o < pass.slots; ++o) {
+      const int s = k * pass.slots + o;
       if (step_force_[s].squaredNorm() == 0) continue;
       PairForce<Dim> f;
       f.body = k;
-      f.other = o < n_ ? o : -1 - (o - n_);
+      f.other = o < body_count_ ? o : -1 - (o - body_count_);
       f.force = step_force_[s];
       f.normal = step_normal_[s];
       f.tangential = std::sqrt(std::max<Real>(0, f.force.squaredNorm() - f.normal * f.normal));
@@ -434,8 +466,8 @@ void MultiVelocityContact<Dim>::write_forces(Real time) {
   const Real span = time - last_row_time_;
   last_row_time_ = time;
   if (!(span > 0)) return;
-  const int slots = n_ + static_cast<int>(settings_.planes.size());
-  auto name_of = [&](int o) { return o < n_ ? bodies_[o].name : settings_.planes[o - n_].name; };
+  const int slots = body_count_ + static_cast<int>(settings_.planes.size());
+  auto name_of = [&](int o) { return o < body_count_ ? bodies_[o].name : settings_.planes[o - body_count_].name; };
   auto row = [&](const std::string& body, const std::string& other, const Vec<Dim>& impulse, Real normal) {
     const Vec<Dim> f = impulse / span;
     const Real fn = normal / span;
@@ -449,7 +481,7 @@ void MultiVelocityContact<Dim>::write_forces(Real time) {
   std::vector<Vec<Dim>> reaction(slots, Vec<Dim>::Zero());
   std::vector<Real> reaction_n(slots, 0);
   std::vector<bool> touched(slots, false);
-  for (int k = 0; k < n_; ++k)
+  for (int k = 0; k < body_count_; ++k)
     for (int o = 0; o < slots; ++o) {
       const int s = k * slots + o;
       if (impulse_[s].squaredNorm() == 0) continue;
@@ -461,7 +493,7 @@ void MultiVelocityContact<Dim>::write_forces(Real time) {
       impulse_n_[s] = 0;
     }
   for (int o = 0; o < slots; ++o) {
-    const bool rigid = o >= n_ || rigid_of_[o] >= 0;
+    const bool rigid = o >= body_count_ || rigid_of_[o] >= 0;
     if (rigid) row(name_of(o), "all", reaction[o], touched[o] ? reaction_n[o] : 0);
   }
   csv_.flush();

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/shape/cpdi.hpp"
 
 namespace mpm {
@@ -41,7 +42,7 @@ int cell_type(int corners) {
 
 template <int Dim>
 bool has_particle_domains(const Body<Dim>& body) {
-  return body.domain_corners > 0 || body.particles.has_field("domain_half_length0");
+  return body.domain_corners > 0 || body.particles.has_field(keys::domain_half_length0<Dim>);
 }
 
 template <int Dim>
@@ -65,7 +66,7 @@ io::CellMesh particle_domain_mesh(const std::vector<Body<Dim>>& bodies) {
         for (int k = 0; k < corners; ++k) push_point<Dim>(mesh.points, c[k]);
       }
     } else {
-      const auto& half0 = p.template field<VecU<Dim>>("domain_half_length0");
+      const auto& half0 = p.field(keys::domain_half_length0<Dim>);
       const auto signs = box_corner_signs<Dim>();
       for (Index i = 0; i < p.size(); ++i) {
         Vec<Dim> half = half0[i];

@@ -1,5 +1,5 @@
 // Shapes through the scene: the loader's keys (mesh, image labels, polygon, domains) and the builder, as a
-// user's scene file goes; and the STL cylinder of examples/09_stl_cylinder against the primitive.
+// user's scene file goes; and the STL cylinder of examples/15_stl_cylinder against the primitive.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,14 +36,14 @@ std::string scene_2d(const std::string& body, const std::string& solver = "") {
 
 }  // namespace
 
-// examples/09_stl_cylinder: the 256-facet STL rod (mm, scaled by 1e-3) fills the same lattice points as
+// examples/15_stl_cylinder: the 256-facet STL rod (mm, scaled by 1e-3) fills the same lattice points as
 // the primitive cylinder on the example's grid (no lattice point lies between a facet and the circle),
 // and its particle volumes sum to the 256-gon prism's volume (float vertices: 1e-6).
 TEST(SceneShapes, StlCylinderGivesTheParticlesOfThePrimitive) {
   const GridGeometry<3> grid(Vec<3>(-8e-3, -8e-3, 0), Vec<3>::Constant(0.5e-3), {32, 32, 52});
   ShapeDescription stl;
   stl.type = "mesh";
-  stl.file = (source / "examples" / "09_stl_cylinder" / "cylinder.stl").string();
+  stl.file = (source / "examples" / "15_stl_cylinder" / "cylinder.stl").string();
   stl.scale = 1e-3;
   ShapeDescription cylinder;
   cylinder.type = "cylinder";
@@ -146,6 +146,6 @@ TEST(SceneShapes, ExamplesBuildWithTheirParticleCounts) {
   const auto sim = app::build_simulation<2>(image);
   EXPECT_EQ(sim->particle_count(), 7616);
   EXPECT_NEAR(total_volume(sim->bodies()[0]), 480.68e-6, 0.005e-6);  // the selected pixel area, m^2
-  const auto rod = load_scene(source / "examples" / "09_stl_cylinder" / "scene.yaml");
+  const auto rod = load_scene(source / "examples" / "15_stl_cylinder" / "scene.yaml");
   EXPECT_EQ(app::build_simulation<3>(rod)->particle_count(), 74664);
 }

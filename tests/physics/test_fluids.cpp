@@ -124,6 +124,24 @@ TEST(TaitFluid, PressureAndViscousStress) {
   EXPECT_NEAR((W1 - W0) / (2 * dJ), -p, 1e-5 * p);
 }
 
+// docs/errata.md #10 (§5.4.1): the Stokes condition is lambda_N = -2 mu / 3 (printed +2 mu / 3), so that the
+// default bulk viscosity zeta = lambda_N + 2 mu / 3 is 0: a uniaxial strain rate D = diag(r, 0, 0) gives the
+// deviatoric stress 2 mu dev(D) and no viscous mean stress (the printed lambda_N would add 4 mu r / 3 to it).
+TEST(TaitFluid, StokesConditionLeavesNoViscousMeanStress) {
+  const Real mu = 1.0e-3, r = 50;
+  const fluids::TaitFluid::Params c{1000, 2.0e5, 7, mu, 0};
+  PointKinematics k;
+  k.J = 1;
+  k.F = Mat3::Identity();
+  k.L = Mat3::Zero();
+  k.L(0, 0) = r;
+  k.dt = 1e-4;
+  const Mat3 s = fluids::TaitFluid::update_point(c, k, Mat3::Zero());
+  EXPECT_NEAR(s.trace() / 3, 0, 1e-15);  // J = 1: no pressure, and no viscous mean stress
+  EXPECT_NEAR(s(0, 0), 2 * mu * (2 * r / 3), 1e-15);
+  EXPECT_NEAR(s(1, 1), 2 * mu * (-r / 3), 1e-15);
+}
+
 // Martin & Moyce (1952) dam break, n^2 = 2, a = 2.25 in (dam_break.hpp): free-slip tank, MUSL, hat functions,
 // FLIP, 16 cells across the column, 2x2 particles per cell, Mach 0.05. The surge front Z = x/a at
 // T = t sqrt(2g/a) = 1, 2, 3 against the experiment (tests/data/dam_break_martin_moyce.csv, interpolated).

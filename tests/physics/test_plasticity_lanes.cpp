@@ -120,7 +120,7 @@ TEST(PlasticityLanes, Batch2DMatchesScalarLaw) { check_batch_matches_scalar<2, S
 TEST(PlasticityLanes, Batch1DMatchesScalarLaw) { check_batch_matches_scalar<1, Shock>(everything_on(), 1e4, 6000, 4); }
 
 // Damage to failure happens inside a pack: with the steel above, some lanes fail while others still
-// flow, and the failed ones keep no deviatoric stress (erratum 28), in the pack as in the scalar law.
+// flow, and the failed ones keep no deviatoric stress (docs/errata.md #28), in the pack as in the scalar law.
 TEST(PlasticityLanes, FailedLanesInsideAPack) {
   Shock::Params c = everything_on();
   c.thermal_expansion = 0;  // no pressure from heating: triaxiality near 0, failure near 0.55 plastic strain

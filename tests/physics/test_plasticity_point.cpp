@@ -276,13 +276,26 @@ TEST(PlasticityPoint, MieGruneisenMatchesTheHugoniot) {
   EXPECT_NEAR(JcShock::wave_speed(pt.c, 1), std::sqrt((8940 * 3933.0 * 3933.0 + 4 * 43.9e9 / 3) / 8940), 1e-9);
 }
 
-// Johnson-Cook damage (eqs B.14-B.16, evolution factor 10 as in B.16, erratum 27) under constant
+// docs/errata.md #23 (Table 7 caption): c0 = sqrt(K / rho0) = 5166 m/s for Weldox 460E (E = 211 GPa,
+// nu = 0.33, rho0 = 7750 kg/m^3), not the printed sqrt(E / (2 (1 - 2 nu) rho0)) = 6327 m/s: only the first
+// makes the Mie-Gruneisen EOS start with the bulk modulus K of the elastic constants (rho0 c0^2 = K at J = 1);
+// the printed one would start 1.5 K stiff.
+TEST(PlasticityPoint, MieGruneisenStartsWithTheBulkModulusOfTable7) {
+  const Real E = 211e9, nu = 0.33, rho0 = 7750, K = E / (3 * (1 - 2 * nu));
+  EXPECT_NEAR(std::sqrt(K / rho0), 5166, 1);
+  const MieGruneisenEos corrected{rho0, 5166, 1.5, 0};
+  EXPECT_NEAR(corrected.tangent_bulk_modulus(Real(1)), K, 5e-4 * K);
+  const MieGruneisenEos printed{rho0, std::sqrt(E / (2 * (1 - 2 * nu) * rho0)), 1.5, 0};
+  EXPECT_NEAR(printed.tangent_bulk_modulus(Real(1)), 1.5 * K, 1e-9 * K);
+}
+
+// Johnson-Cook damage (eqs B.14-B.16, evolution factor 10 as in B.16, docs/errata.md #27) under constant
 // triaxiality: isochoric pure shear keeps p = 0, so sigma* = 0 and eps_f = D1 + D2 = 0.3, and
 // D_init = eps_p / eps_f exactly. D stays 0 until eps_p = eps_f (within one increment, 1e-4 here), then
 // grows as 10 (D_init - 1) and reaches 1 at D_init = 1.1, i.e. eps_p = 0.33. The last increments are
 // larger than the applied strain: as (1 - D) falls the stored deviator unloads into plastic strain, at
 // most sigma_f / (3 G) per unit of -ln(1 - D) (~0.003 here), hence the bound 0.33 + 0.006. A failed
-// point carries no shear and no tension, but still resists compression (digest erratum 28).
+// point carries no shear and no tension, but still resists compression (docs/errata.md #28).
 TEST(PlasticityPoint, DamageReachesOneAtTheFailureStrain) {
   Point<J2Linear> pt;
   set_elastic(pt.c, 7850, 200e9, 0.3);
@@ -317,7 +330,7 @@ TEST(PlasticityPoint, DamageReachesOneAtTheFailureStrain) {
   const Mat3 squeezed = pt.trial(-expand, 1.0);
   const Real J = std::exp(-3e-3);
   EXPECT_NEAR(-squeezed.trace() / 3, pt.c.bulk_modulus * (1 - J * pt.F.determinant()), 1e-6 * pt.c.bulk_modulus);
-  // Uniaxial tension of Weldox 460E (Table 8 as corrected by the digest, erratum 24): eps_f(1/3) = 1.356.
+  // Uniaxial tension of Weldox 460E (Table 8 as corrected in docs/errata.md #24): eps_f(1/3) = 1.356.
   const JohnsonCookDamage w460e{0.636, 1.936, -2.969, -0.0140, 0, 10};
   EXPECT_NEAR(w460e.failure_strain(1.0 / 3, 1, 0), 1.356, 5e-4);
 }

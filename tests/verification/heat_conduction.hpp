@@ -5,7 +5,7 @@
 /// T0 = 0 and x = 1 raised to T1 = 1) and the 2D plate of eq. 5.28 (unit square, T = 0 at t = 0, boundary
 /// raised to T1 = 100). The temperature is held on the grid nodes of the faces (Alg. 8), or, for the plate,
 /// optionally on the particles of the boundary cells as in the paper. The time step is cfl x the diffusion
-/// bound h^2 rho c / (2 dim k) (the paper's 1D step 8e-5 is above that bound: errata 13).
+/// bound h^2 rho c / (2 dim k) (the paper's 1D step 8e-5 is above that bound: docs/errata.md #13).
 
 #include <string>
 

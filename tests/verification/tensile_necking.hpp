@@ -1,12 +1,12 @@
 #pragma once
 /// \file tensile_necking.hpp
-/// Tensile test to failure (review §6.3.2, Tables 7-8 as corrected in the digest: errata 23-24): a smooth
+/// Tensile test to failure (review §6.3.2, Tables 7-8 as corrected in docs/errata.md #23-24): a smooth
 /// Weldox 460E cylinder, 30 mm long, 6 mm in diameter, TLMPM with one particle per cell, axis z. The grid
 /// just encloses it; the nodes of its end faces z = 0 and z = 30 mm move at -/+ v(t) along the axis,
 /// v = v_max (1 - exp(-t / tau)) (the review: v_max = 1 mm/ms, tau = 1 ms), and are held laterally (grips).
 /// Johnson-Cook: A = 499 MPa, B = 382 MPa, n = 0.458, C = 0; damage D1 = 0.636, D2 = 1.936, D3 = -2.969,
-/// D4 = 0 (quasi-static, as Karamelo's input; Table 8 gives -0.0140); Mie-Gruneisen c0 = 5166 m/s (erratum
-/// 23), S = 1.5, Gamma0 = 0; rho0 = 7750 kg/m^3, E = 211 GPa, nu = 0.33.
+/// D4 = 0 (quasi-static, as Karamelo's input; Table 8 gives -0.0140); Mie-Gruneisen c0 = 5166 m/s (docs/errata.md
+/// #23), S = 1.5, Gamma0 = 0; rho0 = 7750 kg/m^3, E = 211 GPa, nu = 0.33.
 ///
 /// Measured every `record_interval` steps:
 ///   engineering strain  e = 2 u(t) / L0, u(t) = v_max (t - tau (1 - exp(-t / tau))) the grip displacement;

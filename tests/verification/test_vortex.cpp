@@ -179,10 +179,10 @@ TEST(Vortex, MuslCpdiR4) {
   EXPECT_LT(r.e1, 0.08);
 }
 
-// The equations as printed do not produce the vortex (digest §C.8 errata): with "+R (g'h)^2" in b_Theta of
-// eq. 6.18, or with the printed zero initial velocity (g'(0) = pi, so the exact ring starts at up to
-// 3.17 m/s), the TLMPM inverts a particle before t = 0.5 s (N = 40 and 80, hat functions). Asserted: guard
-// failure or e1 at least 10 times the corrected run's.
+// The equations as printed do not produce the vortex (docs/errata.md, the vortex body force): with "+R (g'h)^2" in
+// b_Theta of eq. 6.18, or with the printed zero initial velocity (g'(0) = pi, so the exact ring starts at up to 3.17
+// m/s), the TLMPM inverts a particle before t = 0.5 s (N = 40 and 80, hat functions). Asserted: guard failure or e1 at
+// least 10 times the corrected run's.
 TEST(Vortex, PrintedEquationsFail) {
   const VortexResult corrected = run_vortex(spec("tlmpm", "linear", 40));
   VortexSpec sign = spec("tlmpm", "linear", 40);

@@ -3,7 +3,7 @@
 /// Generalized vortex (review §6.2.3, Brannon et al. 2011, Kamojjala et al. 2015; digest §C.8): the ring
 /// R_i = 0.75 m <= R <= R_o = 1.25 m, each material circle turned rigidly by
 ///   alpha(t, R) = g(t) h(R),  h = 1 - 8 s^2 + 16 s^4,  s = (R - Rbar) / (R_i - R_o),  g = G sin(pi t / T0),
-/// x = Q(alpha) X (eqs 6.13-6.16, with the digest's errata: R_o for "R_0"; [0, T0] is half a sine period),
+/// x = Q(alpha) X (eqs 6.13-6.16, with docs/errata.md #21: R_o for "R_0"; [0, T0] is half a sine period),
 /// G = 1 rad, T0 = 1 s, end time 1 s. Neo-Hookean, E = 1e3 Pa, nu = 0.3 (as in the review; the motion is
 /// isochoric, J = 1, so lambda does not enter the body force), rho0 = 1000 kg/m^3, 2D plane strain.
 ///

@@ -12,6 +12,7 @@ namespace mpm {
 
 template <int Dim>
 struct Body {
+  static constexpr int dimension = Dim;
   std::string name;
   int index = 0;  ///< position in the scene's body list (output field `body`)
   ParticleSet<Dim> particles;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/module.hpp"
 #include "mpm/shape/cpdi_elements.hpp"
 
@@ -50,8 +51,8 @@ class CpdiCornerTracking final : public Module<Dim> {
 
   void end_of_step(StepContext<Dim>& ctx) override {
     for (auto& body : ctx.bodies) {
-      if (!body.particles.has_field("cpdi_corners")) continue;
-      auto& corners = body.particles.template field<CornerSet<Dim>>("cpdi_corners");
+      if (!body.particles.has_field(keys::cpdi_corners<Dim>)) continue;
+      auto& corners = body.particles.field(keys::cpdi_corners<Dim>);
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, corners.size(), 1024), [&](const auto& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
           for (int c = 0; c < corners_; ++c)

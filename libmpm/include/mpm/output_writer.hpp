@@ -3,7 +3,8 @@
 /// Writes a run for ParaView: one .vtu of all particles per frame (and a .vti of the grid, and a .vtu of
 /// the particle domains as cells, when asked),
 /// the .pvd collection of the series, and energy.csv (the conservation audit) with one row per frame.
-/// Every file is written atomically and the writers refuse non-finite values.
+/// Every file is written atomically and the writers refuse non-finite values. The particle fields and how
+/// their values are made come from the table of output_fields.hpp.
 
 #include <filesystem>
 #include <memory>
@@ -13,12 +14,10 @@
 #include "mpm/io/csv_log.hpp"
 #include "mpm/io/pvd_collection.hpp"
 #include "mpm/io/vtk_writer.hpp"
+#include "mpm/output_fields.hpp"
 #include "mpm/simulation.hpp"
 
 namespace mpm {
-
-/// Particle fields that can be written (the scene's output.fields); `id` is always written.
-std::vector<std::string> output_field_names();
 
 template <int Dim>
 class OutputWriter {

@@ -4,17 +4,21 @@
 /// scratch buffer of the scheme (stored in the on-demand field "velocity_gradient" only when asked).
 /// The core fields that every scheme reads are typed members; fields that
 /// only some scenes need (reference position for displacement, temperature, plastic strain, ...) are
-/// added on demand by name with add_field<T>() and resolved to a std::vector once per step, never
-/// looked up per particle. Every field follows reordering (sort by cell) and snapshots.
+/// added on demand by key (field_keys.hpp; or by name) with add_field() and resolved to a std::vector once
+/// per step, never looked up per particle. Every field follows reordering (sort by cell) and snapshots.
 
 #include <cstdint>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
+#include "mpm/field_key.hpp"
 #include "mpm/grid.hpp"
 
 namespace mpm {
@@ -111,27 +115,45 @@ class ParticleSet {
   /// Adds (or returns) an on-demand field with an initial value (give one explicitly for Eigen types,
   /// whose T{} is uninitialised). Call before the time loop.
   template <class T>
-  std::vector<T>& add_field(const std::string& name, const T& initial = T{}) {
+  std::vector<T>& add_field(std::string_view name, const T& initial = T{}) {
     auto it = extra_.find(name);
     if (it == extra_.end()) {
       auto f = std::make_unique<detail::TypedField<T>>();
       f->initial = initial;
       f->data.assign(x.size(), initial);
-      it = extra_.emplace(name, std::move(f)).first;
+      it = extra_.emplace(std::string(name), std::move(f)).first;
     }
     return typed<T>(it->second.get(), name).data;
   }
-  bool has_field(const std::string& name) const { return extra_.count(name) != 0; }
+  /// add_field by key: the type comes from the key.
+  template <class T>
+  std::vector<T>& add_field(FieldKey<T> key, const std::type_identity_t<T>& initial = T{}) {
+    return add_field<T>(key.name, initial);
+  }
+  bool has_field(std::string_view name) const { return extra_.find(name) != extra_.end(); }
+  template <class T>
+  bool has_field(FieldKey<T> key) const {
+    return has_field(key.name);
+  }
   /// An on-demand field; throws std::out_of_range naming the field if it was never added.
   template <class T>
-  std::vector<T>& field(const std::string& name) {
+  std::vector<T>& field(std::string_view name) {
     auto it = extra_.find(name);
-    if (it == extra_.end()) throw std::out_of_range("particle field '" + name + "' was not allocated");
+    if (it == extra_.end()) throw std::out_of_range("particle field '" + std::string(name) + "' was not allocated");
     return typed<T>(it->second.get(), name).data;
   }
   template <class T>
-  const std::vector<T>& field(const std::string& name) const {
+  const std::vector<T>& field(std::string_view name) const {
     return const_cast<ParticleSet*>(this)->field<T>(name);
+  }
+  /// field by key: the type comes from the key.
+  template <class T>
+  std::vector<T>& field(FieldKey<T> key) {
+    return field<T>(key.name);
+  }
+  template <class T>
+  const std::vector<T>& field(FieldKey<T> key) const {
+    return field<T>(key.name);
   }
 
   /// Reorders every field: new particle i is old particle order[i].
@@ -156,12 +178,12 @@ class ParticleSet {
 
  private:
   template <class T>
-  static detail::TypedField<T>& typed(detail::FieldBase* f, const std::string& name) {
+  static detail::TypedField<T>& typed(detail::FieldBase* f, std::string_view name) {
     auto* t = dynamic_cast<detail::TypedField<T>*>(f);
-    if (!t) throw std::logic_error("particle field '" + name + "' has another type");
+    if (!t) throw std::logic_error("particle field '" + std::string(name) + "' has another type");
     return *t;
   }
-  std::map<std::string, std::unique_ptr<detail::FieldBase>> extra_;
+  std::map<std::string, std::unique_ptr<detail::FieldBase>, std::less<>> extra_;  ///< by name (ordered as strings)
 };
 
 }  // namespace mpm

@@ -1,7 +1,8 @@
 #pragma once
 /// \file scheme.hpp
-/// A time-integration scheme advances every body by one step. Explicit schemes (USL, MUSL) are
-/// templates on dimension and shape function; the scene picks one instantiation once (make_scheme).
+/// A time-integration scheme advances every body by one step. The explicit schemes (USL, MUSL, USF and the
+/// total-Lagrangian TLMPM, schemes/*.hpp) are templates on dimension and shape function; the scene picks
+/// one instantiation once (make_scheme).
 
 #include <memory>
 #include <string>
@@ -42,7 +43,9 @@ class ShapedScheme : public Scheme<Dim> {
   int min_cells() const override { return Shape::min_cells; }
 };
 
-/// "usl" or "musl" with "linear" or "cubic_bspline"; throws std::invalid_argument listing valid names.
+/// A scheme of scheme_names() ("usl", "musl", "usf", "tlmpm") with a shape function of the table
+/// (find_shape_function: "linear", "gimp", "cpgimp", "quadratic_bspline", "cubic_bspline", "bernstein",
+/// "lagrange_quadratic", "cpdi_*"); throws std::invalid_argument listing valid names.
 template <int Dim>
 std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape_function);
 

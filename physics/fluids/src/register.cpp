@@ -3,6 +3,7 @@
 #include <mutex>
 
 #include "mpm/fluids/ideal_gas.hpp"
+#include "mpm/fluids/output_fields.hpp"
 #include "mpm/fluids/tait_fluid.hpp"
 #include "mpm/material_batch.hpp"
 #include "mpm/material_registry.hpp"
@@ -90,6 +91,7 @@ void register_module() {
   std::call_once(once, [] {
     register_material_model(newtonian_model());
     register_material_model(ideal_gas_model());
+    register_output_fields();
   });
 }
 

@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "mpm/material_registry.hpp"
+#include "mpm/plasticity/output_fields.hpp"
 
 namespace mpm::plasticity {
 namespace {
@@ -170,6 +171,7 @@ void register_module() {
     register_material_model(johnson_cook_model());
     register_material_model(j2_model());
     detail::register_hencky_j2();
+    register_output_fields();
   });
 }
 

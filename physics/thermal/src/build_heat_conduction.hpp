@@ -132,15 +132,15 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene
     setup.bodies.push_back(thermal_body<Dim>(md, bodies[b].name));
     auto& p = bodies[b].particles;
     // the shared field: kept when the plasticity module made it (adiabatic heating, softening)
-    auto& T = p.template add_field<Real>("temperature", setup.bodies.back().reference_temperature);
-    p.template add_field<VecU<Dim>>("heat_flux", VecU<Dim>::Zero());
+    auto& T = p.add_field(mpm::keys::temperature, setup.bodies.back().reference_temperature);
+    p.add_field(keys::heat_flux<Dim>, VecU<Dim>::Zero());
     for (Index i = 0; i < p.size(); ++i) {
       double xyz[3] = {0, 0, 0};
       for (int d = 0; d < Dim; ++d) xyz[d] = p.x[i][d];
       if (initial) T[i] = initial->evaluate(xyz, 0);
     }
     if (!td.fixed_temperature.empty()) {
-      auto& region = p.template add_field<int>("thermal_region", -1);
+      auto& region = p.add_field(keys::thermal_region, -1);
       for (Index i = 0; i < p.size(); ++i)
         for (std::size_t r = 0; r < td.fixed_temperature.size() && region[i] < 0; ++r) {
           bool inside = true;

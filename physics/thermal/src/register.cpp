@@ -4,6 +4,7 @@
 
 #include "mpm/material_registry.hpp"
 #include "mpm/scene_extension.hpp"
+#include "mpm/thermal/output_fields.hpp"
 #include "thermal_section.hpp"
 
 namespace mpm::thermal {
@@ -50,6 +51,7 @@ void register_module() {
                               .prepare_1d = &build_heat_conduction<1>,
                               .prepare_2d = &build_heat_conduction<2>,
                               .prepare_3d = &build_heat_conduction<3>});
+    register_output_fields();
   });
 }
 

@@ -84,16 +84,44 @@ class MultiVelocityContact final : public Module<Dim> {
  private:
   void find_candidates(StepContext<Dim>& ctx);
   void body_velocities(StepContext<Dim>& ctx, GridStage stage);
+  /// What one correction pass (at one grid-velocity stage) reads: the nodal velocity it corrects, whether the
+  /// forces of the step are recorded (the `updated` stage), and the planes' velocities at t + dt.
+  struct CorrectionPass {
+    VecU<Dim> NodeVelocity<Dim>::*member;
+    bool record;
+    Real cutoff;  ///< nodal mass below which a body is absent, kg
+    Real dt;      ///< s
+    int slots;    ///< partners per body: bodies, then planes
+    std::vector<Vec<Dim>> plane_velocity;
+  };
+  /// The contact correction at every candidate node: two-body nodes (eqs 5.2-5.8), nodes of three or more
+  /// bodies, nodes behind a plane; then the force log of the step.
   void correct(StepContext<Dim>& ctx, VecU<Dim> NodeVelocity<Dim>::*member, bool record);
+  /// Corrects body k at node I against v_cm with normal n and friction mu (eqs 5.5-5.8); records the
+  /// force on k from `other` (a body, or body_count_ + plane). False if the body was not approaching.
+  bool apply_correction(const CorrectionPass& pass, Index I, int k, int other, const Vec<Dim>& v_cm, const Vec<Dim>& n,
+                        Real mu);
+  /// Centre-of-mass velocity of the bodies at node I (eq. 5.3), or the rigid body's velocity.
+  Vec<Dim> centre_of_mass_velocity(const CorrectionPass& pass, Index I, const std::vector<int>& present,
+                                   int rigid) const;
+  /// Two bodies a < b at node I, with the pair normal (and the particle gap, with onset particle_gap).
+  bool correct_pair(const CorrectionPass& pass, Index I, int a, int b, const Vec<Dim>& v_cm);
+  /// Three or more bodies at node I: each with its own normal, against the system or the rigid body.
+  bool correct_bodies(const CorrectionPass& pass, Index I, const std::vector<int>& present, int rigid,
+                      const Vec<Dim>& v_cm);
+  /// The deformable bodies at node I against every plane the node is behind.
+  bool correct_planes(const CorrectionPass& pass, Index I, const GridGeometry<Dim>& g, const std::vector<int>& present);
+  /// Contact node count, onset time, impulses for the CSV and last_forces() of the step.
+  void log_forces(const CorrectionPass& pass, Index corrected_nodes, Real t);
   Vec<Dim> rigid_velocity(int r, Real t) const;
   Vec<Dim> plane_velocity(int k, Real t) const;
   void write_forces(Real time);
 
   std::vector<Body<Dim>>& bodies_;
   ContactSettings<Dim> settings_;
-  int n_ = 0;                   ///< bodies
-  std::vector<Grid<Dim>> own_;  ///< one per body (Body::own_grid points here)
-  std::vector<int> rigid_of_;   ///< per body: index into settings_.rigid_bodies, or -1
+  int body_count_ = 0;
+  std::vector<Grid<Dim>> body_grids_;  ///< one per body (Body::own_grid points here)
+  std::vector<int> rigid_of_;          ///< per body: index into settings_.rigid_bodies, or -1
   std::vector<std::array<Expression, Dim>> rigid_velocity_, plane_velocity_;
   std::vector<Vec<Dim>> plane_point_;
   std::unique_ptr<ShapePasses<Dim>> passes_;

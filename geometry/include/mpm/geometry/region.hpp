@@ -2,7 +2,7 @@
 /// \file region.hpp
 /// A region of space that a body is filled from: an inside test and a bounding box, and the exact
 /// volume when the region knows it (a CAD mesh, an image). Built once from a scene's shape description;
-/// the lattice filler (lattice_filler.hpp) asks it about every candidate particle position.
+/// the lattice fill (fill_region, primitive_filler.hpp) asks it about every candidate particle position.
 
 #include <memory>
 #include <optional>

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/schemes/transfer_kernels.hpp"
 
 namespace mpm::kernels {
@@ -63,7 +64,7 @@ void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
     auto& p = body.particles;
     auto& material = *body.material;
     MatU<Dim>* stored =
-        p.has_field("velocity_gradient") ? p.template field<MatU<Dim>>("velocity_gradient").data() : nullptr;
+        p.has_field(keys::velocity_gradient<Dim>) ? p.field(keys::velocity_gradient<Dim>).data() : nullptr;
     if (!fused) body.velocity_gradient.resize(p.size());
     const auto bound = tbb::parallel_reduce(
         tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},

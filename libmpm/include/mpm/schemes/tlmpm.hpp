@@ -2,7 +2,7 @@
 /// \file tlmpm.hpp
 /// Total-Lagrangian MPM (review §2.6, Algorithm 3, with the MUSL double mapping). Weights and gradients
 /// are taken at the reference positions X_p, computed once and cached, with the nodal mass
-/// m_I = sum phi_I(X_p) m_p (constant: erratum 35). Each step:
+/// m_I = sum phi_I(X_p) m_p (constant: docs/errata.md #35). Each step:
 ///   (mv)_I = sum phi_I(X_p) m_p v_p;  f_I = -sum V_p^0 P_p grad_0 phi_I(X_p) + m_I g, P = J sigma F^-T;
 ///   v~_I = (mv + dt f)/m;  v_p = alpha (v_p + sum phi (v~ - v)) + (1 - alpha) sum phi v~;
 ///   (mv)_I^{t+dt} = sum phi m_p v_p -> v_I^{t+dt};  dF/dt = sum v_I^{t+dt} (x) grad_0 phi (eq. 2.67);
@@ -16,6 +16,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
 #include "mpm/shape/factored_stencil.hpp"
@@ -37,7 +38,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       auto& p = bodies[b].particles;
       p.gather(order_by_cell(p, grid.geometry));
-      auto& X = p.template add_field<VecU<Dim>>("reference_position", VecU<Dim>::Zero());
+      auto& X = p.add_field(keys::reference_position<Dim>, VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) X[i] = p.x[i];
       bin_by_slab(p, grid.geometry, Shape::slab_cells, bodies[b].bins);
       auto& cache = stencils_[b];

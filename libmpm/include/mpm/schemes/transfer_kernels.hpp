@@ -10,6 +10,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/stencil.hpp"
 #include "mpm/step_context.hpp"
@@ -45,13 +46,13 @@ void reset_own_grids(std::vector<Body<Dim>>& bodies) {
 /// or nullptr: P2G adds f_I += phi_I m_p b_p (eq. 2.35) when it exists. Gravity is separate (m_I g).
 template <int Dim>
 const VecU<Dim>* body_force_of(const ParticleSet<Dim>& p) {
-  return p.has_field("body_force") ? p.template field<VecU<Dim>>("body_force").data() : nullptr;
+  return p.has_field(keys::body_force<Dim>) ? p.field(keys::body_force<Dim>).data() : nullptr;
 }
 
 /// The on-demand particle field "affine_velocity" (APIC's C_p, 1/s), or nullptr for PIC/FLIP transfers.
 template <int Dim>
 MatU<Dim>* affine_of(ParticleSet<Dim>& p) {
-  return p.has_field("affine_velocity") ? p.template field<MatU<Dim>>("affine_velocity").data() : nullptr;
+  return p.has_field(keys::affine_velocity<Dim>) ? p.field(keys::affine_velocity<Dim>).data() : nullptr;
 }
 
 /// APIC's affine matrix from nodal velocities (review eqs 5.37-5.38, Jiang et al. 2015):

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/shape/cpdi_elements.hpp"
 #include "mpm/shape/stencil.hpp"
 
@@ -31,10 +32,10 @@ struct CpdiDomain {
   const VecU<Dim>* x;
   const MatU<Dim>* F;
   explicit CpdiDomain(const ParticleSet<Dim>& p) : x(p.x.data()), F(p.F.data()) {
-    if (p.has_field("cpdi_corners"))
-      tracked = p.template field<CornerSet<Dim>>("cpdi_corners").data();
+    if (p.has_field(keys::cpdi_corners<Dim>))
+      tracked = p.field(keys::cpdi_corners<Dim>).data();
     else
-      offsets0 = p.template field<CornerSet<Dim>>("cpdi_corner_offsets0").data();
+      offsets0 = p.field(keys::cpdi_corner_offsets0<Dim>).data();
   }
   CornerSet<Dim> operator()(Index i) const {
     if (tracked) return tracked[i];

@@ -6,7 +6,7 @@
 /// 0 below, 1 above), with a = l_p/(2h) the half-length in cells and r = (x_p - x_I)/h:
 ///   phi(r) = [G(r + a) - G(r - a)] / (2a),   dphi/dr = [N(r + a) - N(r - a)] / (2a),
 /// which is eq. 3.12-3.13 for a <= 1/2 and stays exact for longer (stretched) domains. Domains are
-/// limited to a <= 1 (two cells long), so a particle reaches at most 4 nodes per axis (erratum 5).
+/// limited to a <= 1 (two cells long), so a particle reaches at most 4 nodes per axis (docs/errata.md #5).
 /// - uGIMP: l_p fixed at its initial value (cell size / particles per cell).
 /// - cpGIMP: l_p(t) = l_p(0) F_aa per axis (eq. 3.14): stretched, never sheared.
 /// Weights keep partition of unity as long as the domain stays inside the grid box; there are no
@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/particle_set.hpp"
 
 namespace mpm {
@@ -54,11 +55,11 @@ struct GimpFunctions {
 
 struct UGimp : GimpFunctions {
   static constexpr const char* name = "gimp";
-  /// Half-lengths l_p(0)/2 (m) from the field "domain_half_length0".
+  /// Half-lengths l_p(0)/2 (m) from the field keys::domain_half_length0.
   template <int Dim>
   struct Domain {
     const VecU<Dim>* half0;
-    explicit Domain(const ParticleSet<Dim>& p) : half0(p.template field<VecU<Dim>>("domain_half_length0").data()) {}
+    explicit Domain(const ParticleSet<Dim>& p) : half0(p.field(keys::domain_half_length0<Dim>).data()) {}
     Vec<Dim> operator()(Index i) const { return half0[i]; }
   };
 };
@@ -70,8 +71,7 @@ struct CpGimp : GimpFunctions {
   struct Domain {
     const VecU<Dim>* half0;
     const MatU<Dim>* F;
-    explicit Domain(const ParticleSet<Dim>& p)
-        : half0(p.template field<VecU<Dim>>("domain_half_length0").data()), F(p.F.data()) {}
+    explicit Domain(const ParticleSet<Dim>& p) : half0(p.field(keys::domain_half_length0<Dim>).data()), F(p.F.data()) {}
     Vec<Dim> operator()(Index i) const { return half0[i].cwiseProduct(Vec<Dim>(F[i].diagonal())); }
   };
 };

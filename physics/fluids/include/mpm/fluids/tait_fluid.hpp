@@ -3,7 +3,7 @@
 /// Weakly compressible Newtonian fluid (review §5.4, eqs 5.29-5.31):
 ///   sigma = 2 mu dev(D) + zeta tr(D) I - p I,   p = kappa [(rho/rho0)^gamma - 1] = kappa (J^-gamma - 1),
 /// with D = sym(L), the shear viscosity mu, the bulk viscosity zeta = lambda_N + 2 mu/3 (0 by default: the
-/// Stokes condition lambda_N = -2 mu/3, digest erratum to eq. 5.30), and the density rho = rho0/J from
+/// Stokes condition lambda_N = -2 mu/3, docs/errata.md #10), and the density rho = rho0/J from
 /// det F (eq. 2.55c). Stateless: F carries the whole history, so the law batches like the elastic ones.
 
 #include <cmath>

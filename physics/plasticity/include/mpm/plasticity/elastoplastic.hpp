@@ -1,7 +1,7 @@
 #pragma once
 /// \file elastoplastic.hpp
-/// Hypoelastic-plastic-damage law with an equation of state (review App. B.3, Algs 11-13 with the digest's
-/// errata 25-28), for one material point. Per step, with F and L at t + dt:
+/// Hypoelastic-plastic-damage law with an equation of state (review App. B.3, Algs 11-13 with the errata
+/// docs/errata.md #25-28), for one material point. Per step, with F and L at t + dt:
 ///   1. R from F = R U (polar_decomposition.hpp; in 3D warm-started from the last step's rotation);
 ///      un-rotated rate d = R^T sym(L) R, deviator d'. (Implemented in the current frame, see below.)
 ///   2. Radial return (Alg. 12, Leroch et al. 2016), flow stress held at eps_p^t:
@@ -9,9 +9,9 @@
 ///        sigma_f = flow(eps_p, rate*, T*) (1 - D);  if sigma_eq > sigma_f:
 ///        d eps_p = (sigma_eq - sigma_f) / (3 G'),  s' = (sigma_f / sigma_eq) s_trial.   (D >= 1: s' = 0.)
 ///   3. Pressure p = EOS(J, e) with e = c rho0 (T - T_r) (eq. B.10), positive in compression; a tensile
-///      pressure is scaled by (1 - D) (erratum 28: a failed point still resists compression). Optional
+///      pressure is scaled by (1 - D) (docs/errata.md #28: a failed point still resists compression). Optional
 ///      artificial bulk viscosity in compression, q = rho l (c_2 l (tr d)^2 - c_1 c_b tr d), l = V^(1/Dim).
-///   4. sigma = R (s' - (p + q) 1) R^T   (the printed "+ p" of Alg. 11 is erratum 25).
+///   4. sigma = R (s' - (p + q) 1) R^T   (the printed "+ p" of Alg. 11 is docs/errata.md #25).
 ///   5. Damage (Alg. 13, johnson_cook_damage.hpp) from d eps_p and the triaxiality -p / sigma_eq.
 ///   6. Adiabatic heating dT = chi sigma_f d eps_p / (rho c) (eq. B.13), when temperature is tracked.
 /// rate* = max(eps_p_rate / rate0, 1) uses the plastic strain rate of the previous step (explicit, as the
@@ -43,7 +43,7 @@ struct RotationMemory<3> {
   Real q[4] = {1, 0, 0, 0};  ///< unit quaternion (w, x, y, z)
 };
 
-/// History of one material point (one on-demand particle field "plasticity", read and written together).
+/// History of one material point (one on-demand particle field, keys::plastic_state, read and written together).
 /// The deviatoric stress is not stored: s' = R^T dev(sigma) R, so the Cauchy stress and R_t carry it.
 template <int Dim>
 struct PlasticState {
@@ -117,7 +117,7 @@ struct PlasticityConstants {
   Real reference_strain_rate = 1;  ///< rate0, 1/s
   bool damage_enabled = false;
   JohnsonCookDamage damage;
-  bool thermal = false;            ///< temperature tracked (field "temperature"), adiabatic heating
+  bool thermal = false;            ///< temperature tracked (field keys::temperature), adiabatic heating
   Real specific_heat = 0;          ///< c, J/(kg K)
   Real taylor_quinney = 0.9;       ///< chi, -
   Real room_temperature = 293.15;  ///< T_r, K
@@ -166,11 +166,39 @@ struct Elastoplastic {
   /// The step of update_point for one point (T = Real) or lane_count points at once (T = Pack): every
   /// branch of the law is a mask and a select (lanes.hpp), so both widths run the same arithmetic.
   /// `track_temperature`: p.temperature is read (softening, EOS energy, expansion) and heated.
+  /// The steps of the file comment, in order (each helper is inlined: the arithmetic is that of one function).
   template <int Dim, class T>
   static inline void update(const Params& c, Real dt, bool track_temperature, PointLanes<Dim, T>& p) {
-    using Mask = MaskOf<T>;
-    // s = dev(sigma_t) as (xx, yy, zz, xy, yz, xz)
-    T s[6] = {p.stress[0], p.stress[1], p.stress[2], lanes::splat<T>(0), lanes::splat<T>(0), lanes::splat<T>(0)};
+    T s[6], d[6];
+    rotated_deviator(p, s);                // step 1: s = Delta R dev(sigma_t) Delta R^T
+    const T tr_d = deviatoric_rate(p, d);  // step 1: d = dev(D)
+    const T T_now = track_temperature ? p.temperature : lanes::splat<T>(c.room_temperature);
+    const T T_star = homologous_temperature(c, T_now);
+    const PlasticFlow<T> flow = radial_return(c, dt, T_star, d, p, s);  // step 2
+    const T pressure = eos_pressure(c, T_now, p);                       // step 3
+    const T q_visc = artificial_viscosity(c, tr_d, p);
+    assemble_stress(s, T(pressure + q_visc), p);                             // step 4
+    update_history(c, dt, track_temperature, s, pressure, T_star, flow, p);  // steps 5-6
+  }
+
+  /// What the radial return leaves for the history update: the flow stress sigma_f (Pa, 0 for a failed
+  /// point) and the plastic strain increment d eps_p of the step.
+  template <class T>
+  struct PlasticFlow {
+    T sigma_f;
+    T d_eps;
+  };
+
+  /// Step 1, stress: s = dev(sigma_t) as (xx, yy, zz, xy, yz, xz), turned by Delta R = R_{t+dt} R_t^T; p.q
+  /// becomes R_{t+dt}. Alg. 11 in the current frame: with s' = R_t^T dev(sigma_t) R_t and d' = R^T dev(D) R
+  /// (R = R_{t+dt}), R (s' + 2 G dt d') R^T = Delta R dev(sigma_t) Delta R^T + 2 G dt dev(D); the radial
+  /// return only scales, so it commutes with the rotation. One rotation per step instead of three.
+  template <int Dim, class T>
+  static inline void rotated_deviator(PointLanes<Dim, T>& p, T s[6]) {
+    s[0] = p.stress[0];
+    s[1] = p.stress[1];
+    s[2] = p.stress[2];
+    s[3] = s[4] = s[5] = lanes::splat<T>(0);
     if constexpr (Dim >= 2) s[3] = p.stress[3];
     if constexpr (Dim == 3) {
       s[4] = p.stress[4];
@@ -180,9 +208,6 @@ struct Elastoplastic {
       const T mean = (s[0] + s[1] + s[2]) * (Real(1) / 3);
       for (int k = 0; k < 3; ++k) s[k] = s[k] - mean;
     }
-    // Alg. 11 in the current frame: with s' = R_t^T dev(sigma_t) R_t and d' = R^T dev(D) R (R = R_{t+dt}),
-    // R (s' + 2 G dt d') R^T = Delta R dev(sigma_t) Delta R^T + 2 G dt dev(D), Delta R = R R_t^T; the radial
-    // return only scales, so it commutes with the rotation. One rotation per step instead of three.
     if constexpr (Dim == 3) {
       const T q0[4] = {p.q[0], T(-p.q[1]), T(-p.q[2]), T(-p.q[3])};  // R_t^T
       polar_update_warm(p.F, p.q);
@@ -208,9 +233,13 @@ struct Elastoplastic {
       s[1] = ds * ds * xx + 2 * dc * ds * xy + dc * dc * yy;
       s[3] = dc * ds * (xx - yy) + (dc * dc - ds * ds) * xy;
     }
-    // d = dev(D), D = sym(L), in the current frame
-    T d[6] = {p.L[0][0],          lanes::splat<T>(0), lanes::splat<T>(0),
-              lanes::splat<T>(0), lanes::splat<T>(0), lanes::splat<T>(0)};
+  }
+
+  /// Step 1, rate: d = dev(D), D = sym(L), in the current frame; returns tr D.
+  template <int Dim, class T>
+  static inline T deviatoric_rate(const PointLanes<Dim, T>& p, T d[6]) {
+    d[0] = p.L[0][0];
+    d[1] = d[2] = d[3] = d[4] = d[5] = lanes::splat<T>(0);
     if constexpr (Dim >= 2) {
       d[1] = p.L[1][1];
       d[3] = 0.5 * (p.L[0][1] + p.L[1][0]);
@@ -221,17 +250,25 @@ struct Elastoplastic {
       d[5] = 0.5 * (p.L[0][2] + p.L[2][0]);
     }
     const T tr_d = d[0] + d[1] + d[2];
-    {
-      const T mean = tr_d * (Real(1) / 3);
-      for (int k = 0; k < 3; ++k) d[k] = d[k] - mean;
-    }
+    const T mean = tr_d * (Real(1) / 3);
+    for (int k = 0; k < 3; ++k) d[k] = d[k] - mean;
+    return tr_d;
+  }
 
-    const T T_now = track_temperature ? p.temperature : lanes::splat<T>(c.room_temperature);
-    const T T_star = c.softening
-                         ? lanes::clamp(T((T_now - c.room_temperature) / (c.melting_temperature - c.room_temperature)),
-                                        Real(0), Real(1))
-                         : lanes::splat<T>(0);
-    // Radial return (Alg. 12). A failed point (D >= 1) keeps no deviatoric stress and does not flow.
+  /// T* = (T - T_r) / (T_m - T_r) clamped to [0, 1] with softening, else 0.
+  template <class T>
+  static inline T homologous_temperature(const Params& c, const T& T_now) {
+    return c.softening ? lanes::clamp(T((T_now - c.room_temperature) / (c.melting_temperature - c.room_temperature)),
+                                      Real(0), Real(1))
+                       : lanes::splat<T>(0);
+  }
+
+  /// Step 2, the radial return (Alg. 12) on s with the flow stress at eps_p^t; a failed point (D >= 1) keeps
+  /// no deviatoric stress and does not flow. Fills the hardening cache when it is empty.
+  template <int Dim, class T>
+  static inline PlasticFlow<T> radial_return(const Params& c, Real dt, const T& T_star, const T d[6],
+                                             PointLanes<Dim, T>& p, T s[6]) {
+    using Mask = MaskOf<T>;
     const T D = p.damage;
     const Mask broken = D >= 1;
     const T G = (1 - D) * c.shear_modulus;
@@ -252,8 +289,13 @@ struct Elastoplastic {
       const T scale = lanes::select(broken, Real(0), lanes::select(yielding, to_surface, Real(1)));
       for (int k = 0; k < 6; ++k) s[k] = s[k] * scale;
     }
+    return {sigma_f, d_eps};
+  }
 
-    // Pressure (eq. B.10; a failed point resists compression only) and artificial bulk viscosity.
+  /// Step 3, pressure (eq. B.10, positive in compression) of the mechanical volume ratio (thermal expansion,
+  /// eq. 5.26) and the energy c rho0 (T - T_r); a tensile pressure is scaled by (1 - D) (docs/errata.md #28).
+  template <int Dim, class T>
+  static inline T eos_pressure(const Params& c, const T& T_now, const PointLanes<Dim, T>& p) {
     const T J = p.J;
     const T e = c.thermal ? T(c.specific_heat * c.density * (T_now - c.room_temperature)) : lanes::splat<T>(0);
     T J_mech = J;
@@ -262,11 +304,19 @@ struct Elastoplastic {
       J_mech = J * expansion;
     }
     T pressure = c.eos.pressure(J_mech, e);
-    pressure = lanes::select(pressure < 0, T(pressure * (1 - D)), pressure);
+    pressure = lanes::select(pressure < 0, T(pressure * (1 - p.damage)), pressure);
+    return pressure;
+  }
+
+  /// Step 3, artificial bulk viscosity in compression, q = rho l (c_2 l (tr d)^2 - c_1 c_b tr d), l = V^(1/Dim).
+  template <int Dim, class T>
+  static inline T artificial_viscosity(const Params& c, const T& tr_d, const PointLanes<Dim, T>& p) {
+    using Mask = MaskOf<T>;
     T q_visc = lanes::splat<T>(0);
     if (c.viscosity_linear > 0 || c.viscosity_quadratic > 0) {
       const Mask compressing = tr_d < 0;
       if (lanes::any(compressing)) {
+        const T J = p.J;
         const T rho = c.density / J;
         const T l = lanes::power(p.volume, Real(1) / Dim);
         const T cb = lanes::sqrt(T(lanes::max(c.eos.tangent_bulk_modulus(J), c.bulk_modulus) / rho));
@@ -274,7 +324,12 @@ struct Elastoplastic {
         q_visc = lanes::select(compressing, q, Real(0));
       }
     }
-    const T total_pressure = pressure + q_visc;
+    return q_visc;
+  }
+
+  /// Step 4, sigma = s' - (p + q) 1 (the printed "+ p" of Alg. 11 is docs/errata.md #25), in the SymTensor layout.
+  template <int Dim, class T>
+  static inline void assemble_stress(const T s[6], const T& total_pressure, PointLanes<Dim, T>& p) {
     p.stress[0] = s[0] - total_pressure;
     p.stress[1] = s[1] - total_pressure;
     p.stress[2] = s[2] - total_pressure;
@@ -283,8 +338,15 @@ struct Elastoplastic {
       p.stress[4] = s[4];
       p.stress[5] = s[5];
     }
+  }
 
-    // Damage (Alg. 13), adiabatic heating (eq. B.13), dissipated work; d_eps = 0 leaves them unchanged.
+  /// Steps 5-6: damage (Alg. 13) from d eps_p and the triaxiality -p / sigma_eq, adiabatic heating (eq. B.13),
+  /// dissipated work, plastic strain and its rate; d eps_p = 0 leaves the history unchanged.
+  template <int Dim, class T>
+  static inline void update_history(const Params& c, Real dt, bool track_temperature, const T s[6], const T& pressure,
+                                    const T& T_star, const PlasticFlow<T>& flow, PointLanes<Dim, T>& p) {
+    using Mask = MaskOf<T>;
+    const T& d_eps = flow.d_eps;
     const Mask flowing = d_eps > 0;
     if (lanes::any(flowing)) {
       if (c.damage_enabled) {
@@ -295,7 +357,7 @@ struct Elastoplastic {
         p.damage_initiation = lanes::select(flowing, initiation, p.damage_initiation);
         p.damage = lanes::select(flowing, c.damage.damage(p.damage_initiation), p.damage);
       }
-      const T work = J * sigma_f * d_eps;
+      const T work = p.J * flow.sigma_f * d_eps;
       if (track_temperature) p.temperature = p.temperature + (c.taylor_quinney / (c.density * c.specific_heat)) * work;
       p.plastic_work = p.plastic_work + work;
       p.plastic_strain = p.plastic_strain + d_eps;

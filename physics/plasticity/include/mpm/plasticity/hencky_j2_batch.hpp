@@ -1,17 +1,18 @@
 #pragma once
 /// \file hencky_j2_batch.hpp
 /// hencky_j2 (hencky_j2.hpp) as an ordinary material of the explicit schemes (USL, MUSL, USF, TLMPM): one
-/// virtual call per block, the point law inlined, the history in one on-demand particle field "hencky_j2"
-/// (HenckyJ2State: G^p, xi, plastic work). The volumetric part is U(J) (log_volumetric_energy.hpp with
-/// Theta = J), so the Kirchhoff stress is tau = dev tau + K ln(J) 1 and the Cauchy stress sigma = tau / J
-/// (eq. 3). Each step commits its evaluation at once (the explicit schemes have no trial deformations).
-/// Outputs: plastic_strain (xi); energy audit: strain energy W~ + U(J), plastic work sum Delta D.
+/// virtual call per block, the point law inlined, the history in one on-demand particle field
+/// (keys::hencky_j2_state: HenckyJ2State, G^p, xi, plastic work). The volumetric part is U(J)
+/// (log_volumetric_energy.hpp with Theta = J), so the Kirchhoff stress is tau = dev tau + K ln(J) 1 and the Cauchy
+/// stress sigma = tau / J (eq. 3). Each step commits its evaluation at once (the explicit schemes have no trial
+/// deformations). Outputs: plastic_strain (xi); energy audit: strain energy W~ + U(J), plastic work sum Delta D.
 
 #include <algorithm>
 #include <cmath>
 #include <string_view>
 
 #include "mpm/material.hpp"
+#include "mpm/plasticity/field_keys.hpp"
 #include "mpm/plasticity/hencky_j2.hpp"
 #include "mpm/plasticity/log_volumetric_energy.hpp"
 
@@ -22,17 +23,17 @@ class HenckyJ2Batch final : public Material<Dim> {
  public:
   using State = HenckyJ2State<Dim>;
   static constexpr const char* key = "hencky_j2";
-  static constexpr const char* state_field = "hencky_j2";
+  static constexpr FieldKey<State> state_field = keys::hencky_j2_state<Dim>;
 
   explicit HenckyJ2Batch(const HenckyJ2Params& params) : params_(params), volumetric_{params.bulk_modulus} {}
   std::string_view model() const override { return key; }
   Real density() const override { return params_.density; }
   const HenckyJ2Params& params() const { return params_; }
 
-  void prepare_particles(ParticleSet<Dim>& p) const override { p.template add_field<State>(state_field, State{}); }
+  void prepare_particles(ParticleSet<Dim>& p) const override { p.add_field(state_field, State{}); }
 
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>*, Real dt) override {
-    State* state = p.template field<State>(state_field).data();
+    State* state = p.field(state_field).data();
     Real max_c = 0, sum = 0;  // finite stresses have a finite sum
     Vec<Dim> max_v = Vec<Dim>::Zero();
     for (Index i = begin; i != end; ++i) {
@@ -64,7 +65,7 @@ class HenckyJ2Batch final : public Material<Dim> {
 
   /// sum V_0 (W~ + U(J)), with G ||dev eps^e||^2 = ||dev tau||^2 / (4 G) and dev tau = J dev sigma, J.
   Real strain_energy(const ParticleSet<Dim>& p) const override {
-    const auto& state = p.template field<State>(state_field);
+    const auto& state = p.field(state_field);
     const Real G = params_.shear_modulus, H = params_.hardening_modulus;
     Real e = 0;  // serial: fixed summation order
     for (Index i = 0; i < p.size(); ++i) {
@@ -78,7 +79,7 @@ class HenckyJ2Batch final : public Material<Dim> {
   }
 
   Real dissipated_energy(const ParticleSet<Dim>& p) const override {
-    const auto& state = p.template field<State>(state_field);
+    const auto& state = p.field(state_field);
     Real e = 0;
     for (Index i = 0; i < p.size(); ++i) e += p.volume0[i] * state[i].plastic_work;
     return e;
@@ -86,7 +87,7 @@ class HenckyJ2Batch final : public Material<Dim> {
 
   bool append_output(std::string_view field, const ParticleSet<Dim>& p, std::vector<double>& out) const override {
     if (field != "plastic_strain") return false;
-    for (const State& s : p.template field<State>(state_field)) out.push_back(s.xi);
+    for (const State& s : p.field(state_field)) out.push_back(s.xi);
     return true;
   }
 

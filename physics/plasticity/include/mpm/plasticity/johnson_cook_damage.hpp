@@ -1,6 +1,6 @@
 #pragma once
 /// \file johnson_cook_damage.hpp
-/// Johnson-Cook damage (review App. B.3.3, Alg. 13, with the digest's errata 27):
+/// Johnson-Cook damage (review App. B.3.3, Alg. 13, with docs/errata.md #27):
 ///   eps_f = [D1 + D2 exp(D3 sigma*)] [1 + D4 ln rate*] [1 + D5 T*]   (eq. B.15), sigma* = sigma_m / sigma_eq,
 ///   D_init += d eps_p / eps_f                                        (eq. B.14),
 ///   D = min(1, k (D_init - 1)) once D_init >= 1                      (eq. B.16, k = 10 in the review; the

@@ -2,16 +2,19 @@
 /// \file plastic_batch.hpp
 /// The batched Material interface for a law with history (elastoplastic.hpp): one virtual call per block
 /// of particles, the inlined point law inside the loop. The history of every particle is one on-demand
-/// field "plasticity" (PlasticState, read and written together), and the temperature the shared field
-/// "temperature" (K), added only when the model tracks it. Both are resolved once per block, never per
-/// particle. Outputs: plastic_strain, plastic_strain_rate, damage; energy audit: plastic_work.
+/// field (keys::plastic_state: PlasticState, read and written together), and the temperature the shared
+/// field mpm::keys::temperature (K), added only when the model tracks it. Both are resolved once per block,
+/// never per particle. Outputs: the list of output_fields.hpp; energy audit: plastic_work.
 
 #include <cmath>
 #include <string>
 #include <utility>
 
+#include "mpm/field_keys.hpp"
 #include "mpm/material.hpp"
 #include "mpm/plasticity/elastoplastic.hpp"
+#include "mpm/plasticity/field_keys.hpp"
+#include "mpm/plasticity/output_fields.hpp"
 
 namespace mpm::plasticity {
 
@@ -20,7 +23,7 @@ class PlasticBatch final : public Material<Dim> {
  public:
   using Params = typename Model::Params;
   using State = PlasticState<Dim>;
-  static constexpr const char* state_field = "plasticity";
+  static constexpr FieldKey<State> state_field = keys::plastic_state<Dim>;
 
   PlasticBatch(std::string key, const Params& params) : key_(std::move(key)), params_(params) {}
   std::string_view model() const override { return key_; }
@@ -28,15 +31,15 @@ class PlasticBatch final : public Material<Dim> {
   const Params& params() const { return params_; }
 
   void prepare_particles(ParticleSet<Dim>& p) const override {
-    p.template add_field<State>(state_field, State{});
-    if (params_.thermal) p.template add_field<Real>("temperature", params_.room_temperature);  // kept if present
+    p.add_field(state_field, State{});
+    if (params_.thermal) p.add_field(mpm::keys::temperature, params_.room_temperature);  // kept if present
   }
 
   /// Whole packs of lane_count particles run the vector law; the last few particles of a block the
   /// scalar one (the same arithmetic, lanes.hpp).
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
-    State* state = p.template field<State>(state_field).data();
-    Real* temperature = params_.thermal ? p.template field<Real>("temperature").data() : nullptr;
+    State* state = p.field(state_field).data();
+    Real* temperature = params_.thermal ? p.field(mpm::keys::temperature).data() : nullptr;
     Real max_c2 = 0;
     Index i = begin;
     for (; i + lane_count <= end; i += lane_count)
@@ -78,7 +81,7 @@ class PlasticBatch final : public Material<Dim> {
   }
 
   Real dissipated_energy(const ParticleSet<Dim>& p) const override {
-    const auto& state = p.template field<State>(state_field);
+    const auto& state = p.field(state_field);
     Real e = 0;
     for (Index i = 0; i < p.size(); ++i) e += p.volume0[i] * state[i].plastic_work;
     return e;
@@ -86,15 +89,10 @@ class PlasticBatch final : public Material<Dim> {
 
   bool append_output(std::string_view field, const ParticleSet<Dim>& p, std::vector<double>& out) const override {
     Real State::*member = nullptr;
-    if (field == "plastic_strain")
-      member = &State::plastic_strain;
-    else if (field == "plastic_strain_rate")
-      member = &State::plastic_strain_rate;
-    else if (field == "damage")
-      member = &State::damage;
-    else
-      return false;
-    for (const State& s : p.template field<State>(state_field)) out.push_back(s.*member);
+    for (const auto& o : plastic_outputs<Dim>)
+      if (field == o.name) member = o.member;
+    if (!member) return false;
+    for (const State& s : p.field(state_field)) out.push_back(s.*member);
     return true;
   }
 

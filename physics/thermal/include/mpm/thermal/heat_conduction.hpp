@@ -10,7 +10,7 @@
 ///   q_p = -k grad T with grad T = sum grad phi_I T_I^{t+dt}: the flux of the next step comes from the
 ///   re-mapped grid temperature, not from T~ (the double mapping of Alg. 8).
 /// It runs in the phase after P2G, so the stress update of the same step sees T^{t+dt} (Alg. 9). The shared
-/// particle field "temperature" is the one the plasticity module heats by plastic work (eq. B.13) and reads
+/// particle field mpm::keys::temperature is the one the plasticity module heats by plastic work (eq. B.13) and reads
 /// for Johnson-Cook softening, so conduction, plastic heating and softening act on one temperature.
 /// Thermal expansion (eq. 5.26) of linear_elastic bodies: eps_dot^e = eps_dot - (alpha dT/dt) I, applied
 /// by subtracting (alpha dT/dt) I from the velocity gradient before the stress update, plus the part of
@@ -27,8 +27,10 @@
 #include <vector>
 
 #include "mpm/expression.hpp"
+#include "mpm/field_keys.hpp"
 #include "mpm/module.hpp"
 #include "mpm/shape/stencil.hpp"
+#include "mpm/thermal/field_keys.hpp"
 #include "mpm/thermal/thermal_body.hpp"
 
 namespace mpm::thermal {
@@ -44,29 +46,30 @@ struct ConductionSetup {
   std::vector<ThermalBody<Dim>> bodies;  ///< one per body of the scene
   std::string source = "0";              ///< W/m^3, expression of x, y, z, t
   std::array<std::optional<std::string>, 2 * Dim> face_temperature, face_flux;
-  std::vector<std::string> region_temperature;  ///< K, expressions of t; particle field "thermal_region"
+  std::vector<std::string> region_temperature;  ///< K, expressions of t; particle field keys::thermal_region
   bool total_lagrangian = false;                ///< TLMPM: weights at the reference positions
 };
 
 template <int Dim, class Shape>
 class HeatConduction final : public Module<Dim> {
  public:
-  HeatConduction(ConductionSetup<Dim> setup, const GridGeometry<Dim>& g) : s_(std::move(setup)), source_(s_.source) {
+  HeatConduction(ConductionSetup<Dim> setup, const GridGeometry<Dim>& g)
+      : setup_(std::move(setup)), source_(setup_.source) {
     for (int f = 0; f < 2 * Dim; ++f) {
-      if (s_.face_temperature[f])
-        face_temperature_[f] = std::make_unique<Expression>(*s_.face_temperature[f], std::vector<std::string>{"t"});
-      if (s_.face_flux[f])
-        face_flux_[f] = std::make_unique<Expression>(*s_.face_flux[f], std::vector<std::string>{"t"});
+      if (setup_.face_temperature[f])
+        face_temperature_[f] = std::make_unique<Expression>(*setup_.face_temperature[f], std::vector<std::string>{"t"});
+      if (setup_.face_flux[f])
+        face_flux_[f] = std::make_unique<Expression>(*setup_.face_flux[f], std::vector<std::string>{"t"});
       if (face_temperature_[f] || face_flux_[f]) faces_[f] = face_nodes(g, f);
     }
-    for (const auto& r : s_.region_temperature) region_.emplace_back(r, std::vector<std::string>{"t"});
-    for (const auto& b : s_.bodies) expands_ = expands_ || b.expansion != 0;
+    for (const auto& r : setup_.region_temperature) region_.emplace_back(r, std::vector<std::string>{"t"});
+    for (const auto& b : setup_.bodies) expands_ = expands_ || b.expansion != 0;
     const Index n = g.node_count();
-    C_.assign(n, 0);
-    CT_.assign(n, 0);
-    Q_.assign(n, 0);
-    T_.assign(n, 0);
-    Tt_.assign(n, 0);
+    capacity_.assign(n, 0);
+    heat_content_.assign(n, 0);
+    heat_flow_.assign(n, 0);
+    nodal_temperature_.assign(n, 0);
+    updated_temperature_.assign(n, 0);
   }
 
   std::string_view name() const override { return "heat_conduction"; }
@@ -75,11 +78,11 @@ class HeatConduction final : public Module<Dim> {
     return "heat conduction (diffusion bound h^2 rho c / (2 dim k))";
   }
 
-  /// min over bodies of h_min^2 rho c / (2 Dim k_max): the explicit diffusion limit (review §5.3.3; with the
-  /// errata: the paper's 1D step 8e-5 exceeds h^2/(2k) = 5e-5 for 100 cells).
+  /// min over bodies of h_min^2 rho c / (2 Dim k_max): the explicit diffusion limit (review §5.3.3;
+  /// docs/errata.md #13: the paper's 1D step 8e-5 exceeds h^2/(2k) = 5e-5 for 100 cells).
   Real stable_time_step(const std::vector<Body<Dim>>&) const override {
     Real dt = std::numeric_limits<Real>::infinity();
-    for (const auto& b : s_.bodies)
+    for (const auto& b : setup_.bodies)
       if (b.max_conductivity > 0)
         dt = std::min(dt, h_min_ * h_min_ * b.density * b.specific_heat / (2 * Dim * b.max_conductivity));
     return dt;
@@ -90,15 +93,15 @@ class HeatConduction final : public Module<Dim> {
   void add_energy(const std::vector<Body<Dim>>& bodies, EnergyBalance& e) const override {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       const auto& p = bodies[b].particles;
-      const auto& T = p.template field<Real>("temperature");
-      const auto& tb = s_.bodies[b];
+      const auto& T = p.field(mpm::keys::temperature);
+      const auto& tb = setup_.bodies[b];
       for (Index i = 0; i < p.size(); ++i)
         e.thermal += p.mass[i] * tb.specific_heat * (T[i] - tb.reference_temperature);
     }
   }
 
   /// The grid temperature T_I^{t+dt} of the last step (K; zero on nodes without heat capacity).
-  const std::vector<Real>& grid_temperature() const { return T_; }
+  const std::vector<Real>& grid_temperature() const { return nodal_temperature_; }
 
   void after_p2g(StepContext<Dim>& ctx) override {
     auto& grid = ctx.grid;
@@ -115,25 +118,27 @@ class HeatConduction final : public Module<Dim> {
     for (int f = 0; f < 2 * Dim; ++f)
       if (face_flux_[f]) {
         const Real q = (*face_flux_[f])(0, 0, 0, ctx.time);
-        for (std::size_t k = 0; k < faces_[f].node.size(); ++k) Q_[faces_[f].node[k]] -= q * faces_[f].area[k];
+        for (std::size_t k = 0; k < faces_[f].node.size(); ++k) heat_flow_[faces_[f].node[k]] -= q * faces_[f].area[k];
       }
     // T~_I = T_I + dt Q_I / C_I; Dirichlet nodes: T_I = T~_I = T*
     tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
-      for (Index n = r.begin(); n != r.end(); ++n) Tt_[n] = C_[n] > 0 ? T_[n] + ctx.dt * Q_[n] / C_[n] : T_[n];
+      for (Index n = r.begin(); n != r.end(); ++n)
+        updated_temperature_[n] =
+            capacity_[n] > 0 ? nodal_temperature_[n] + ctx.dt * heat_flow_[n] / capacity_[n] : nodal_temperature_[n];
     });
-    hold_nodes(T_, ctx.time);
-    hold_nodes(Tt_, t1);
+    hold_nodes(nodal_temperature_, ctx.time);
+    hold_nodes(updated_temperature_, t1);
     // T_p += sum phi (T~_I - T_I), then the second mapping gives T_I^{t+dt}
     for (auto& body : ctx.bodies) update_particles(body, g, t1);
     map_temperature(ctx, false);
     flux_from_grid(ctx);
-    grid.node_fields["temperature"] = T_;
+    grid.node_fields["temperature"] = nodal_temperature_;
   }
 
   /// Thermal expansion (eq. 5.26): L -= (alpha dT / dt) I before the stress update of linear_elastic bodies.
   void after_g2p(StepContext<Dim>& ctx) override {
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
-      const Real alpha = s_.bodies[b].expansion;
+      const Real alpha = setup_.bodies[b].expansion;
       if (alpha == 0) continue;
       auto& L = ctx.bodies[b].velocity_gradient;
       const auto& dT = increment(ctx.bodies[b].particles);
@@ -146,7 +151,7 @@ class HeatConduction final : public Module<Dim> {
   void after_stress(StepContext<Dim>& ctx) override {
     if constexpr (Dim < 3) {
       for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
-        const auto& tb = s_.bodies[b];
+        const auto& tb = setup_.bodies[b];
         if (tb.expansion == 0) continue;
         auto& p = ctx.bodies[b].particles;
         const auto& dT = increment(p);
@@ -179,12 +184,10 @@ class HeatConduction final : public Module<Dim> {
   /// The temperature change of the last thermal step per particle (K), for the expansion: a particle field,
   /// so that it follows reordering and snapshots (USF runs the stress update before the thermal step: it
   /// then sees the previous step's change, zero at the first step).
-  static std::vector<Real>& increment(ParticleSet<Dim>& p) {
-    return p.template add_field<Real>("temperature_increment", 0);
-  }
+  static std::vector<Real>& increment(ParticleSet<Dim>& p) { return p.add_field(keys::temperature_increment, 0); }
 
   const VecU<Dim>* positions(const ParticleSet<Dim>& p) const {
-    return s_.total_lagrangian ? p.template field<VecU<Dim>>("reference_position").data() : p.x.data();
+    return setup_.total_lagrangian ? p.field(mpm::keys::reference_position<Dim>).data() : p.x.data();
   }
 
   void hold_nodes(std::vector<Real>& T, Real t) const {
@@ -202,8 +205,8 @@ class HeatConduction final : public Module<Dim> {
     for (const auto& r : region_) value.push_back(r(0, 0, 0, t));
     for (auto& body : bodies) {
       auto& p = body.particles;
-      const auto& region = p.template field<int>("thermal_region");
-      auto& T = p.template field<Real>("temperature");
+      const auto& region = p.field(keys::thermal_region);
+      auto& T = p.field(mpm::keys::temperature);
       for (Index i = 0; i < p.size(); ++i)
         if (region[i] >= 0) T[i] = value[static_cast<std::size_t>(region[i])];
     }
@@ -213,18 +216,18 @@ class HeatConduction final : public Module<Dim> {
   void map_temperature(StepContext<Dim>& ctx, bool heat_flow) {
     auto& grid = ctx.grid;
     const auto& g = grid.geometry;
-    std::fill(C_.begin(), C_.end(), 0);
-    std::fill(CT_.begin(), CT_.end(), 0);
-    if (heat_flow) std::fill(Q_.begin(), Q_.end(), 0);
+    std::fill(capacity_.begin(), capacity_.end(), 0);
+    std::fill(heat_content_.begin(), heat_content_.end(), 0);
+    if (heat_flow) std::fill(heat_flow_.begin(), heat_flow_.end(), 0);
     const bool constant_source = source_.is_constant();
     const Real source_value = source_.constant_value();
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
       auto& body = ctx.bodies[b];
       const auto& p = body.particles;
-      const Real c = s_.bodies[b].specific_heat;
+      const Real c = setup_.bodies[b].specific_heat;
       const VecU<Dim>* x = positions(p);
-      const auto& T = p.template field<Real>("temperature");
-      const auto& q = p.template field<VecU<Dim>>("heat_flux");
+      const auto& T = p.field(mpm::keys::temperature);
+      const auto& q = p.field(keys::heat_flux<Dim>);
       // gamma* per particle, evaluated serially (an Expression is not thread-safe), only when it varies
       if (heat_flow && !constant_source) {
         gamma_.resize(p.size());
@@ -242,8 +245,8 @@ class HeatConduction final : public Module<Dim> {
           st.compute(x[i], g, domain(i));
           const Real mc = p.mass[i] * c, mcT = mc * T[i];
           for (int a = 0; a < st.count; ++a) {
-            C_[st.node[a]] += st.w[a] * mc;
-            CT_[st.node[a]] += st.w[a] * mcT;
+            capacity_[st.node[a]] += st.w[a] * mc;
+            heat_content_[st.node[a]] += st.w[a] * mcT;
           }
           if (!heat_flow) continue;
           const Mat<Dim> F = p.F[i];
@@ -251,7 +254,7 @@ class HeatConduction final : public Module<Dim> {
           // current volume and flux; TLMPM: reference volume and nominal flux J F^-1 q
           Real V = p.volume0[i] * J;
           Vec<Dim> qv = q[i];
-          if (s_.total_lagrangian) {
+          if (setup_.total_lagrangian) {
             V = p.volume0[i];
             qv = J * (F.inverse() * qv);
           }
@@ -259,25 +262,26 @@ class HeatConduction final : public Module<Dim> {
           for (int a = 0; a < st.count; ++a) {
             Real flow = src * st.w[a];
             for (int d = 0; d < Dim; ++d) flow += V * qv[d] * st.grad[a][d];
-            Q_[st.node[a]] += flow;
+            heat_flow_[st.node[a]] += flow;
           }
         }
       });
     }
     tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
-      for (Index n = r.begin(); n != r.end(); ++n) T_[n] = C_[n] > 0 ? CT_[n] / C_[n] : 0;
+      for (Index n = r.begin(); n != r.end(); ++n)
+        nodal_temperature_[n] = capacity_[n] > 0 ? heat_content_[n] / capacity_[n] : 0;
     });
-    if (!heat_flow) hold_nodes(T_, ctx.time + ctx.dt);
+    if (!heat_flow) hold_nodes(nodal_temperature_, ctx.time + ctx.dt);
   }
 
   /// T_p += sum phi (T~_I - T_I); keeps the increment for the thermal expansion (field
-  /// "temperature_increment", only when a body expands).
+  /// keys::temperature_increment, only when a body expands).
   void update_particles(Body<Dim>& body, const GridGeometry<Dim>& g, Real t1) {
     auto& p = body.particles;
-    auto& T = p.template field<Real>("temperature");
+    auto& T = p.field(mpm::keys::temperature);
     const VecU<Dim>* x = positions(p);
     Real* dT = expands_ ? increment(p).data() : nullptr;
-    const int* region = region_.empty() ? nullptr : p.template field<int>("thermal_region").data();
+    const int* region = region_.empty() ? nullptr : p.field(keys::thermal_region).data();
     std::vector<Real> held;
     for (const auto& r : region_) held.push_back(r(0, 0, 0, t1));
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
@@ -286,7 +290,8 @@ class HeatConduction final : public Module<Dim> {
       for (Index i = r.begin(); i != r.end(); ++i) {
         st.compute(x[i], g, domain(i));
         Real d = 0;
-        for (int a = 0; a < st.count; ++a) d += st.w[a] * (Tt_[st.node[a]] - T_[st.node[a]]);
+        for (int a = 0; a < st.count; ++a)
+          d += st.w[a] * (updated_temperature_[st.node[a]] - nodal_temperature_[st.node[a]]);
         if (region && region[i] >= 0) d = held[static_cast<std::size_t>(region[i])] - T[i];
         T[i] += d;
         if (dT) dT[i] = d;
@@ -299,9 +304,9 @@ class HeatConduction final : public Module<Dim> {
     const auto& g = ctx.grid.geometry;
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
       auto& p = ctx.bodies[b].particles;
-      auto& q = p.template field<VecU<Dim>>("heat_flux");
+      auto& q = p.field(keys::heat_flux<Dim>);
       const VecU<Dim>* x = positions(p);
-      const Mat<Dim> k = s_.bodies[b].conductivity;
+      const Mat<Dim> k = setup_.bodies[b].conductivity;
       tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
         Stencil<Dim, Shape> st;
         const ParticleDomain<Dim, Shape> domain(p);
@@ -309,15 +314,15 @@ class HeatConduction final : public Module<Dim> {
           st.compute(x[i], g, domain(i));
           Vec<Dim> grad = Vec<Dim>::Zero();
           for (int a = 0; a < st.count; ++a)
-            for (int d = 0; d < Dim; ++d) grad[d] += st.grad[a][d] * T_[st.node[a]];
-          if (s_.total_lagrangian) grad = Mat<Dim>(p.F[i]).inverse().transpose() * grad;
+            for (int d = 0; d < Dim; ++d) grad[d] += st.grad[a][d] * nodal_temperature_[st.node[a]];
+          if (setup_.total_lagrangian) grad = Mat<Dim>(p.F[i]).inverse().transpose() * grad;
           q[i] = -(k * grad);
         }
       });
     }
   }
 
-  ConductionSetup<Dim> s_;
+  ConductionSetup<Dim> setup_;
   Expression source_;
   std::array<std::unique_ptr<Expression>, 2 * Dim> face_temperature_, face_flux_;
   std::array<FaceNodes, 2 * Dim> faces_;
@@ -325,8 +330,9 @@ class HeatConduction final : public Module<Dim> {
   bool expands_ = false;
   bool flux_ready_ = false;
   Real h_min_ = 1;
-  std::vector<Real> C_, CT_, Q_, T_, Tt_;  ///< per node: J/K, J, W, K, K
-  std::vector<Real> gamma_;                ///< scratch: W/m^3 per particle
+  // Per node: C_I (J/K), sum phi m c T (J), Q_I (W), T_I (K; T_I^{t+dt} after the step), T~_I (K).
+  std::vector<Real> capacity_, heat_content_, heat_flow_, nodal_temperature_, updated_temperature_;
+  std::vector<Real> gamma_;  ///< scratch: W/m^3 per particle
 };
 
 }  // namespace mpm::thermal

@@ -1,0 +1,18 @@
+#pragma once
+/// \file field_keys.hpp
+/// The particle fields of the plasticity module (the shared `temperature` is in mpm/field_keys.hpp).
+
+#include "mpm/field_key.hpp"
+#include "mpm/plasticity/elastoplastic.hpp"
+#include "mpm/plasticity/hencky_j2.hpp"
+
+namespace mpm::plasticity::keys {
+
+/// The history of every material point (PlasticState, read and written together).
+template <int Dim>
+inline constexpr FieldKey<PlasticState<Dim>> plastic_state{"plasticity"};
+/// The history of a hencky_j2 point (HenckyJ2State: G^p, xi, plastic work).
+template <int Dim>
+inline constexpr FieldKey<HenckyJ2State<Dim>> hencky_j2_state{"hencky_j2"};
+
+}  // namespace mpm::plasticity::keys
