@@ -4,6 +4,9 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -17,6 +20,28 @@
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
 
+namespace {
+
+/// `--steps`: a whole number >= 1 (the message names what was given; CLI11 prefixes the option).
+std::string check_steps(const std::string& text) {
+  long long n = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (error != std::errc() || end != text.data() + text.size() || n < 1)
+    return "expected a whole number of steps >= 1, got '" + text + "'";
+  return "";
+}
+
+/// `--end-time`: a positive finite number of seconds.
+std::string check_end_time(const std::string& text) {
+  char* end = nullptr;
+  const double t = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(t) || !(t > 0))
+    return "expected a positive end time in seconds, got '" + text + "'";
+  return "";
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace mpm::app;
   CLI::App cli{"mpm: explicit material point method (USL, MUSL, USF, TLMPM) with YAML scenes and ParaView output"};
@@ -26,6 +51,8 @@ int main(int argc, char** argv) {
   std::string output_dir;
   int threads = 0;
   bool profile = false;
+  long long steps = 0;
+  double end_time = 0;
   auto* run_cmd = cli.add_subcommand("run", "run a scene and write .vtu/.pvd/energy.csv output");
   run_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
   run_cmd->add_option("-o,--output", output_dir, "output directory (overrides output.directory)");
@@ -33,6 +60,14 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--profile", profile,
                     "time the phases of every step (P2G, grid update, G2P, stress update, output, other) and print "
                     "the breakdown at the end");
+  auto* steps_opt = run_cmd
+                        ->add_option("--steps", steps,
+                                     "stop after N steps (N >= 1), or at the end time if sooner: to try a scene "
+                                     "(the output holds the first and the last frame at least)")
+                        ->check(CLI::Validator(check_steps, "N", "steps"));
+  auto* end_time_opt =
+      run_cmd->add_option("--end-time", end_time, "simulated time to stop at, s (> 0; replaces solver.end_time)")
+          ->check(CLI::Validator(check_end_time, "T", "end time"));
   auto* check_cmd = cli.add_subcommand("check", "validate a scene without running it");
   check_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
   ParticlesOptions particles;  // `mpm particles`: particle sets of meshes, images and scenes for ParaView
@@ -86,6 +121,8 @@ int main(int argc, char** argv) {
     if (!output_dir.empty()) options.output_directory = output_dir;
     options.progress = isatty(STDERR_FILENO);
     options.profile = profile;
+    if (steps_opt->count() > 0) options.steps = steps;
+    if (end_time_opt->count() > 0) options.end_time = end_time;
     run_scene(scene, options, std::cerr);
     return exit_ok;
   } catch (const mpm::SceneError& e) {

@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # One-command set-up on a fresh Debian 12 machine (as root):
-#   bash scripts/setup.sh          install what is missing, build, run the default example into ./output/
-#   bash scripts/setup.sh test     the same, then run the whole test suite (this is what CI runs)
+#   bash scripts/setup.sh           install what is missing, build the `mpm` program only, run the default
+#                                   example into ./output/
+#   bash scripts/setup.sh test      install, build everything (library, program, tests, benchmarks) and run
+#                                   the whole test suite (this is what CI runs)
+#   bash scripts/setup.sh sanitize  install, build the program and the unit and stability tests with the
+#                                   address and undefined-behaviour sanitizers in build-sanitize/, run
+#                                   `ctest -L 'unit|stability'` there (any sanitizer report fails its test)
 set -euo pipefail
 mode=${1:-example}
-case "$mode" in example|test) ;; *) echo "usage: bash scripts/setup.sh [example|test]" >&2; exit 2;; esac
+case "$mode" in example|test|sanitize) ;; *) echo "usage: bash scripts/setup.sh [example|test|sanitize]" >&2; exit 2;; esac
 cd "$(dirname "$0")/.."
 
 # Every Debian package the project needs: build tools, libraries, and the Python used for plots.
-packages=(cmake g++ make pkg-config git clang-format
+packages=(cmake g++ make pkg-config git clang-format clang-tidy
           libeigen3-dev libtbb-dev libyaml-cpp-dev libvtk9-dev libcgal-dev libgtest-dev libgmock-dev
           libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev
           python3 python3-numpy python3-matplotlib python3-vtk9)
@@ -24,12 +29,26 @@ fi
 
 werror=OFF
 [ -n "${CI:-}" ] && werror=ON
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DMPM_WARNINGS_AS_ERRORS=$werror
-cmake --build build -j "$(nproc)"
+jobs=$(nproc)
 
+if [ "$mode" = sanitize ]; then
+  # The test programs of the unit and stability labels and the program test_apps runs; no benchmarks.
+  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DMPM_SANITIZE=ON -DMPM_BUILD_BENCH=OFF \
+    -DMPM_WARNINGS_AS_ERRORS=$werror
+  cmake --build build-sanitize -j "$jobs" --target mpm test_libmpm test_geometry test_apps test_physics test_stability
+  # Undefined behaviour stops the test that meets it (by default UBSan only prints and goes on).
+  export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+  ctest --test-dir build-sanitize -L 'unit|stability' --output-on-failure -j "$jobs"
+  exit 0
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DMPM_WARNINGS_AS_ERRORS=$werror
 if [ "$mode" = example ]; then
+  cmake --build build -j "$jobs" --target mpm  # the program only: the tests and benchmarks are built by `test`
   ./build/apps/mpm run examples/02_two_disks/scene.yaml -o output
   echo "Open output/particles.pvd in ParaView."
 else
-  ctest --test-dir build --output-on-failure -j "$(nproc)"
+  cmake --build build -j "$jobs"
+  ctest --test-dir build --output-on-failure -j "$jobs"
 fi

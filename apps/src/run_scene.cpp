@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <ostream>
+#include <stdexcept>
 
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/output_writer.hpp"
@@ -33,6 +34,14 @@ template <int Dim>
 RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std::ostream& log) {
   SceneDescription scene = scene_in;  // modules writing their own files (contact forces) follow -o too
   if (options.output_directory) scene.output.directory = options.output_directory->string();
+  if (options.steps && *options.steps < 1)
+    throw std::invalid_argument(fmt::format("--steps must be at least 1, not {}", *options.steps));
+  if (options.end_time) {
+    if (!(*options.end_time > 0) || !std::isfinite(*options.end_time))
+      throw std::invalid_argument(
+          fmt::format("--end-time must be a positive number of seconds, not {}", *options.end_time));
+    scene.solver.end_time = *options.end_time;
+  }
   auto sim = build_simulation<Dim>(scene);
   const auto& o = scene.output;
   OutputWriter<Dim> writer(options.output_directory.value_or(o.directory), o.prefix, o.fields, o.grid, o.interval);
@@ -85,13 +94,14 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     last_print = now;
     const double wall = std::chrono::duration<double>(now - start).count();
     const double rate = static_cast<double>(s.particle_count()) * s.step() / wall;
-    const double eta = wall * (s.settings().end_time - s.time()) / std::max(s.time(), 1e-300);
+    double eta = wall * (s.settings().end_time - s.time()) / std::max(s.time(), 1e-300);
+    if (options.steps) eta = std::min(eta, wall * static_cast<double>(*options.steps - s.step()) / s.step());
     fmt::print(log, "\rstep {:>8}  t = {:<12.6g} s  {:9.3g} particle-updates/s  ETA {:7.1f} s ", s.step(), s.time(),
                rate, eta);
     log.flush();
   };
   try {
-    sim->run(after_step);
+    sim->run(after_step, options.steps ? std::optional<Index>(*options.steps) : std::nullopt);
   } catch (const StabilityError&) {
     writer.write(*sim);  // the simulation was rolled back to the last good step
     if (options.progress) log << '\n';

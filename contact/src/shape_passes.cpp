@@ -3,16 +3,17 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "mpm/shape/bernstein_quadratic.hpp"
-#include "mpm/shape/cubic_bspline.hpp"
-#include "mpm/shape/gimp.hpp"
-#include "mpm/shape/linear_hat.hpp"
-#include "mpm/shape/quadratic_bspline.hpp"
+#include "mpm/shape/shape_functions.hpp"
 #include "mpm/shape/stencil.hpp"
 #include "mpm/slab_binning.hpp"
 
 namespace mpm::contact {
 namespace {
+
+/// The shape functions contact runs with: every listed one with non-negative weights (not tlmpm_only)
+/// whose weights are products of 1D functions (not CPDI).
+template <class Shape>
+constexpr bool contact_supports = !shape_tlmpm_only<Shape> && !shape_corner_domain<Shape>;
 
 template <int Dim, class Shape>
 class Passes final : public ShapePasses<Dim> {
@@ -63,14 +64,15 @@ class Passes final : public ShapePasses<Dim> {
 
 template <int Dim>
 std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape) {
-  if (shape == LinearHat::name) return std::make_unique<Passes<Dim, LinearHat>>();
-  if (shape == CubicBSpline::name) return std::make_unique<Passes<Dim, CubicBSpline>>();
-  if (shape == QuadraticBSpline::name) return std::make_unique<Passes<Dim, QuadraticBSpline>>();
-  if (shape == BernsteinQuadratic::name) return std::make_unique<Passes<Dim, BernsteinQuadratic>>();
-  if (shape == UGimp::name) return std::make_unique<Passes<Dim, UGimp>>();
-  if (shape == CpGimp::name) return std::make_unique<Passes<Dim, CpGimp>>();
-  throw std::invalid_argument("contact is not available with the shape function '" + shape +
-                              "' (valid: linear, cubic_bspline, quadratic_bspline, bernstein, gimp, cpgimp)");
+  std::unique_ptr<ShapePasses<Dim>> passes;
+  dispatch_shape(shape, [&]<class Shape>() {
+    if constexpr (contact_supports<Shape>) passes = std::make_unique<Passes<Dim, Shape>>();
+  });
+  if (!passes)
+    throw std::invalid_argument(
+        "contact is not available with the shape function '" + shape +
+        "' (valid: " + shape_function_names_where([]<class Shape>() { return contact_supports<Shape>; }) + ")");
+  return passes;
 }
 
 template std::unique_ptr<ShapePasses<1>> make_shape_passes<1>(const std::string&);

@@ -22,7 +22,8 @@ class ShapePasses {
                        const VecU<Dim>* normal, Real sign, std::vector<Real>& out) const = 0;
 };
 
-/// Throws std::invalid_argument for a shape function the contact module does not support (CPDI).
+/// The passes on the scene's shape function; throws std::invalid_argument, listing the valid ones, for a
+/// function contact does not support (CPDI, Lagrange quadratic; contact_supports in shape_passes.cpp).
 template <int Dim>
 std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape_function);
 

@@ -133,8 +133,8 @@ void Simulation<Dim>::advance(Real dt) {
 }
 
 template <int Dim>
-void Simulation<Dim>::run(const std::function<void(const Simulation&)>& after_step) {
-  while (!finished()) {
+void Simulation<Dim>::run(const std::function<void(const Simulation&)>& after_step, std::optional<Index> last_step) {
+  while (!finished() && !(last_step && step_ >= *last_step)) {
     advance(std::min(next_time_step(), settings_.end_time - time_ + 1e-12 * settings_.end_time));
     if (after_step) after_step(*this);
   }

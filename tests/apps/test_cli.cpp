@@ -16,39 +16,15 @@
 #include <string>
 #include <vector>
 
+#include "run_mpm.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mpm_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-Result mpm(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string(MPM_EXECUTABLE) + " " + args + " > " + (dir / "stdout").string() + " 2> " +
-                          (dir / "stderr").string() + " < /dev/null";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(dir / "stdout");
-  r.err = slurp(dir / "stderr");
-  return r;
-}
+using cli::mpm;
+using cli::scratch;
+using cli::slurp;
 
 const fs::path data = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
 

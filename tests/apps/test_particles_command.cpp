@@ -17,37 +17,18 @@
 #include <sstream>
 #include <string>
 
+#include "run_mpm.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 const fs::path data = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
+using cli::mpm;
+using cli::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Result mpm(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string(MPM_EXECUTABLE) + " " + args + " > " + (dir / "stdout").string() + " 2> " +
-                          (dir / "stderr").string() + " < /dev/null";
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "stdout"), slurp(dir / "stderr")};
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mpm_particles_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return cli::scratch("particles_" + name); }
 
 struct Read {
   vtkIdType points = 0, cells = 0;

@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "cpdi_random_domain.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/shape/cpdi.hpp"
 #include "mpm/shape/gimp.hpp"
@@ -152,28 +153,6 @@ Real hat(const GridGeometry<Dim>& g, Index node, const Vec<Dim>& x) {
   return N;
 }
 
-/// A random element around x: the reference sub-cell element of `Shape` scaled to `size` cells, then
-/// sheared and stretched by a random F with det F in about [0.5, 2] and every corner moved a little.
-template <int Dim, class Shape>
-CornerSet<Dim> random_domain(const GridGeometry<Dim>& g, const Vec<Dim>& x, Real size, std::mt19937& rng) {
-  std::uniform_real_distribution<Real> u(-1, 1);
-  geometry::ParticleSeeds<Dim> seed;
-  seed.positions = {Vec<Dim>::Zero()};
-  seed.volume = 1;
-  const auto e = geometry::cpdi_particles<Dim>(seed, Vec<Dim>(size * g.h), Shape::element::corners);
-  Mat<Dim> F = Mat<Dim>::Identity();
-  for (int r = 0; r < Dim; ++r)
-    for (int c = 0; c < Dim; ++c) F(r, c) += 0.3 * u(rng);
-  CornerSet<Dim> corners;
-  corners.fill(VecU<Dim>::Zero());
-  for (int k = 0; k < Shape::element::corners; ++k) {
-    Vec<Dim> jiggle;
-    for (int d = 0; d < Dim; ++d) jiggle[d] = 0.05 * size * g.h[d] * u(rng);
-    corners[k] = x + F * Vec<Dim>(e.offsets[0][k]) + jiggle;
-  }
-  return corners;
-}
-
 /// phi_I and grad phi_I of the stencil against (1/V) sum_c w_c N_I(x_c) over every node, partition of
 /// unity, gradient sum, and the exact gradient of a linear field (sum_I x_I (x) grad phi_I = I).
 template <int Dim, class Shape>
@@ -188,17 +167,10 @@ void check_stencil(int cells, Real size) {
   for (int trial = 0; trial < 2000 && accepted < 300; ++trial) {
     Vec<Dim> x;
     for (int d = 0; d < Dim; ++d) x[d] = g.origin[d] + g.h[d] * u(rng) * g.cells(d);
-    const CornerSet<Dim> c = random_domain<Dim, Shape>(g, x, size, rng);
+    const CornerSet<Dim> c = test::random_domain<Dim, Shape>(g, x, size, rng);
     // The stencil's reach (cpdi.hpp): every corner inside the grid box and in the particle's cell or a
     // neighbouring one. Other samples are the clamped case, tested separately.
-    bool reachable = true;
-    for (int k = 0; k < Element::corners; ++k)
-      for (int d = 0; d < Dim; ++d) {
-        const Real xi_c = (c[k][d] - g.origin[d]) * g.inv_h[d], cell = std::floor((x[d] - g.origin[d]) * g.inv_h[d]);
-        reachable = reachable && xi_c >= 0 && xi_c <= g.cells(d) && xi_c >= cell - Shape::reach &&
-                    xi_c <= cell + 1 + Shape::reach;
-      }
-    if (!reachable) continue;
+    if (!test::within_reach<Dim, Shape>(g, x, c)) continue;
     ++accepted;
     st.compute(VecU<Dim>(x), g, c);
     Real wf[4], wg[4][Dim];
@@ -337,44 +309,6 @@ TEST(Cpdi, ClampedCornersKeepPartitionOfUnity) {
     }
     EXPECT_NEAR(sum, 1, 1e-14) << "domain " << l << " cells";
     EXPECT_LT(sum_grad.norm(), 1e-10) << "domain " << l << " cells";
-  }
-}
-
-}  // namespace
-}  // namespace mpm
-
-namespace mpm {
-namespace {
-
-// The race-free scatter (slab_binning.hpp): two slabs of the same colour (s and s + 2), each
-// Shape::slab_cells thick along x, must never reach a common node, with the stencil block clamped at
-// both faces. Particles with a tiny domain at many positions; slab of a particle = its cell / thickness.
-template <class Shape>
-void check_cpdi_slabs(int cells) {
-  const GridGeometry<2> g(Vec2::Zero(), Vec2(1, 1), {cells, Shape::min_cells + 2});
-  const int slabs = (cells + Shape::slab_cells - 1) / Shape::slab_cells;
-  std::vector<int> lo(slabs, cells + 1), hi(slabs, -1);
-  Stencil<2, Shape> st;
-  for (int k = 0; k <= 8 * cells; ++k) {
-    const Vec2 x(k / 8.0, 1.5);
-    const Vec2 e(1e-3, 1e-3);
-    st.compute(VecU<2>(x), g,
-               {Vec2(x - e), Vec2(x[0] + e[0], x[1] - e[1]), Vec2(x + e), Vec2(x[0] - e[0], x[1] + e[1])});
-    const int slab = std::min(static_cast<int>(x[0]), cells - 1) / Shape::slab_cells;
-    for (int a = 0; a < st.count; ++a) {
-      const int i = g.node_indices(st.node[a])[0];
-      lo[slab] = std::min(lo[slab], i);
-      hi[slab] = std::max(hi[slab], i);
-    }
-  }
-  for (int s = 0; s + 2 < slabs; ++s)
-    EXPECT_LT(hi[s], lo[s + 2]) << Shape::name << ": slabs " << s << " and " << s + 2 << " share a node";
-}
-
-TEST(Cpdi, SlabThickness) {
-  for (int cells : {9, 10, 23, 40}) {
-    check_cpdi_slabs<CpdiQ4>(cells);  // reach 2
-    check_cpdi_slabs<CpdiT3>(cells);
   }
 }
 

@@ -1,9 +1,9 @@
 // Quadratic Lagrange (finite-element) shape function of the 000 paper (Nuttall 2025, eq. 28 with three
-// equally spaced abscissae) on elements of two grid cells: partition of unity, gradients summing to zero,
-// linear and quadratic reproduction in 1D/2D/3D (tensor product), the Kronecker property at every node,
-// the element formulas and the negative lobe (-1/8), derivatives against finite differences, the slab
-// thickness of the race-free scatter, positive row-sum nodal masses for the particle fillings the
-// verification uses, and the registration (tlmpm only, even cell counts).
+// equally spaced abscissae) on elements of two grid cells: the Kronecker property at every node, the element
+// formulas and the negative lobe (-1/8), the 3D stencil gradient against finite differences, positive
+// row-sum nodal masses for the particle fillings the verification uses, and the registration (tlmpm only,
+// even cell counts). Partition of unity, linear and quadratic reproduction, the lobe bound, 1D derivatives
+// and the slab thickness are checked with every listed function in test_shape_function_properties.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,7 +16,6 @@
 #include "mpm/scheme.hpp"
 #include "mpm/shape/lagrange_quadratic.hpp"
 #include "mpm/shape/stencil.hpp"
-#include "shape_properties.hpp"
 
 namespace mpm {
 namespace {
@@ -33,73 +32,6 @@ void weight_of(Real xi, int nodes, int node, Real& w, Real& dw) {
     w = ws[node - base];
     dw = ds[node - base];
   }
-}
-
-/// Axis d gets cells + 2 d cells (even). Random points, a fifth in the first/last cell, a fifth on nodes
-/// and half-cells (faces included).
-template <int Dim>
-void check_properties(int cells) {
-  Vec<Dim> origin, h;
-  std::array<int, Dim> n{};
-  for (int d = 0; d < Dim; ++d) {
-    origin[d] = -0.3 * (d + 1);
-    h[d] = 0.1 + 0.05 * d;
-    n[d] = cells + 2 * d;
-  }
-  const GridGeometry<Dim> g(origin, h, n);
-  std::mt19937 rng(17);
-  std::uniform_real_distribution<Real> u(0, 1);
-  Stencil<Dim, Shape> st;
-  Real min_w = 1;
-  for (int trial = 0; trial < 3000; ++trial) {
-    VecU<Dim> x;
-    for (int d = 0; d < Dim; ++d) {
-      Real xi = u(rng) * n[d];
-      if (trial % 5 == 1) xi = u(rng);
-      if (trial % 5 == 2) xi = n[d] - u(rng);
-      if (trial % 5 == 4) xi = std::floor(xi * 2) / 2;
-      x[d] = origin[d] + xi * h[d];
-    }
-    if (trial == 0) x = VecU<Dim>(origin);
-    if (trial == 5) x = VecU<Dim>(g.upper());
-    st.compute(x, g);
-    Real sum_w = 0;
-    Vec<Dim> sum_grad = Vec<Dim>::Zero(), reproduced = Vec<Dim>::Zero(), reproduced2 = Vec<Dim>::Zero();
-    Mat<Dim> grad_x = Mat<Dim>::Zero(), grad_x2 = Mat<Dim>::Zero();
-    for (int a = 0; a < st.count; ++a) {
-      ASSERT_GE(st.node[a], 0);
-      ASSERT_LT(st.node[a], g.node_count());
-      const Vec<Dim> xI = g.node_position(g.node_indices(st.node[a]));
-      Vec<Dim> grad;
-      for (int d = 0; d < Dim; ++d) grad[d] = st.grad[a][d];
-      min_w = std::min(min_w, st.w[a]);
-      sum_w += st.w[a];
-      sum_grad += grad;
-      reproduced += st.w[a] * xI;
-      reproduced2 += st.w[a] * xI.cwiseProduct(xI);
-      grad_x += xI * grad.transpose();
-      grad_x2 += xI.cwiseProduct(xI) * grad.transpose();
-    }
-    const Vec<Dim> xp(x);
-    ASSERT_NEAR(sum_w, 1, 1e-13);
-    ASSERT_LT(sum_grad.norm(), 1e-11);
-    ASSERT_LT((reproduced - xp).norm(), 1e-12);
-    ASSERT_LT((grad_x - Mat<Dim>::Identity()).norm(), 1e-11);
-    // Quadratic reproduction: sum phi_I x_I^2 = x^2 and sum x_I^2 grad phi_I = 2 x (per axis).
-    ASSERT_LT((reproduced2 - xp.cwiseProduct(xp)).norm(), 1e-12);
-    const Mat<Dim> expect2 = Mat<Dim>((2 * xp).asDiagonal());
-    ASSERT_LT((grad_x2 - expect2).norm(), 1e-10);
-  }
-  EXPECT_LT(min_w, 0) << "the Lagrange basis has negative lobes; the sample should have found one";
-  EXPECT_GE(min_w, -0.125 - 1e-14);
-}
-
-TEST(LagrangeQuadratic, Properties1D) { check_properties<1>(8); }
-TEST(LagrangeQuadratic, Properties2D) { check_properties<2>(6); }
-TEST(LagrangeQuadratic, Properties3D) { check_properties<3>(4); }
-TEST(LagrangeQuadratic, SingleElement) {
-  check_properties<1>(Shape::min_cells);
-  check_properties<3>(Shape::min_cells);
 }
 
 // Kronecker delta at every node: vertices (even) and mid-points (odd), the grid faces included.
@@ -147,27 +79,9 @@ TEST(LagrangeQuadratic, ElementFormulas) {
   EXPECT_NEAR(w, -0.125, 1e-15);
 }
 
-// Derivatives against central differences (step 1e-6) at points at least 1e-4 from the element vertices.
-TEST(LagrangeQuadratic, DerivativesAgainstFiniteDifferences) {
-  const int cells = 8, nodes = cells + 1;
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<Real> u(0, cells);
-  const Real step = 1e-6;
-  int checked = 0;
-  while (checked < 1000) {
-    const Real xi = u(rng);
-    const Real phase = std::fmod(xi, Real(2));
-    if (std::min(phase, 2 - phase) < 1e-4) continue;
-    ++checked;
-    for (int node = 0; node < nodes; ++node) {
-      Real w, dw, wp, dp, wm, dm;
-      weight_of(xi, nodes, node, w, dw);
-      weight_of(xi + step, nodes, node, wp, dp);
-      weight_of(xi - step, nodes, node, wm, dm);
-      ASSERT_NEAR(dw, (wp - wm) / (2 * step), 1e-8) << "xi = " << xi << ", node " << node;
-    }
-  }
-  // In 3D, the Stencil's physical gradient against finite differences of its weights.
+// The Stencil's physical gradient in 3D against finite differences of its weights (the 1D derivatives are
+// checked with every listed function in test_shape_function_properties.cpp).
+TEST(LagrangeQuadratic, StencilGradientAgainstFiniteDifferences) {
   const GridGeometry<3> g(Vec<3>(-0.2, 0.1, 0), Vec<3>(0.1, 0.15, 0.2), {4, 6, 2});
   Stencil<3, Shape> st, sp, sm;
   const VecU<3> x(0.033, 0.41, 0.27);  // inside elements on every axis
@@ -183,11 +97,6 @@ TEST(LagrangeQuadratic, DerivativesAgainstFiniteDifferences) {
       EXPECT_NEAR(st.grad[a][d], (sp.w[a] - sm.w[a]) / 2e-7, 1e-6) << "axis " << d << ", node " << st.node[a];
     }
   }
-}
-
-// Two slabs of the same colour (2 slabs of slab_cells cells apart) never reach a common node.
-TEST(LagrangeQuadratic, SlabThickness) {
-  for (const int cells : {6, 8, 12, 30}) test::check_slab_thickness<Shape>(cells);
 }
 
 // Row-sum nodal masses sum_p phi_I(X_p) m_p of an element filled at the sub-cell centres: 1 per cell (the

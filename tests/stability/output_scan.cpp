@@ -74,21 +74,24 @@ void scan_vtu(const fs::path& file, OutputScan& scan) {
   }
 }
 
-void scan_energy(const fs::path& file, OutputScan& scan) {
+/// Every cell of a CSV table with a header line; the rows of energy.csv are kept in scan.energy.
+void scan_csv(const fs::path& file, OutputScan& scan) {
   std::ifstream in(file);
   std::string line;
   if (!std::getline(in, line)) return;
   const auto columns = split(line);
+  const std::string name = file.filename().string();
+  const bool energy = name == "energy.csv";
   while (std::getline(in, line)) {
     const auto cells = split(line);
     std::map<std::string, double> row;
     for (std::size_t c = 0; c < cells.size() && c < columns.size(); ++c) {
       // strtod reads "nan" and "inf" too, so a non-finite number written as text is caught here.
       const double v = std::strtod(cells[c].c_str(), nullptr);
-      if (!std::isfinite(v)) scan.bad.push_back("energy.csv: " + columns[c]);
+      if (!std::isfinite(v)) scan.bad.push_back(name + ": " + columns[c]);
       row[columns[c]] = v;
     }
-    scan.energy.push_back(std::move(row));
+    if (energy) scan.energy.push_back(std::move(row));
   }
 }
 
@@ -118,8 +121,9 @@ OutputScan scan_output(const fs::path& dir) {
     if (f.extension() == ".vtu") {
       ++scan.vtu_files;
       scan_vtu(f, scan);
-    } else if (f.filename() == "energy.csv") {
-      scan_energy(f, scan);
+    } else if (f.extension() == ".csv") {
+      ++scan.csv_files;
+      scan_csv(f, scan);
     }
   }
   if (!std::isfinite(scan.min_det_F)) scan.min_det_F = 0;

@@ -1,6 +1,6 @@
 #pragma once
 /// \file output_scan.hpp
-/// Reads back everything a run wrote (every .vtu through VTK's reader, energy.csv as text), so that the
+/// Reads back everything a run wrote (every .vtu through VTK's reader, every .csv as text), so that the
 /// stability cases assert on the files a user opens: no NaN or Inf anywhere (DESIGN.md: "never write NaN into
 /// an output file silently"), the smallest det F of the frames, the energy history.
 
@@ -13,6 +13,7 @@ namespace mpm::verification {
 
 struct OutputScan {
   int vtu_files = 0;
+  int csv_files = 0;             ///< energy.csv and any table a module writes (contact forces)
   long long values = 0;          ///< numbers read from the .vtu files (point coordinates and arrays)
   std::vector<std::string> bad;  ///< "file: array" for every non-finite value found (or unreadable file)
   double min_det_F = 0;          ///< smallest det F over the frames ("deformation_gradient"; 0 if absent)

@@ -4,6 +4,7 @@
 /// `template <> struct EnumNames<E> { static constexpr std::array<std::pair<E, std::string_view>, N> table{...}; }`;
 /// the reader's choice<E>() (yaml_reader.hpp), its "valid values: ..." message and the output derive from it.
 
+#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -41,6 +42,7 @@ constexpr std::optional<E> enum_from_name(std::string_view name) {
 template <NamedEnum E>
 std::vector<std::string> enum_names() {
   std::vector<std::string> names;
+  names.reserve(std::size(EnumNames<E>::table));
   for (const auto& entry : EnumNames<E>::table) names.emplace_back(entry.second);
   return names;
 }

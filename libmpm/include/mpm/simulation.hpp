@@ -48,8 +48,9 @@ class Simulation {
   /// Takes one step of size dt. If the stability guard trips, the state is rolled back to the end of
   /// the previous step (the last good state) and StabilityError is thrown.
   void advance(Real dt);
-  /// Advances until end_time; `after_step` is called after every step (for output and progress).
-  void run(const std::function<void(const Simulation&)>& after_step = {});
+  /// Advances until end_time, or until step() reaches `last_step` when one is given (`mpm run --steps`);
+  /// `after_step` is called after every step (for output and progress).
+  void run(const std::function<void(const Simulation&)>& after_step = {}, std::optional<Index> last_step = {});
   bool finished() const;
 
   Real time() const { return time_; }

@@ -7,7 +7,13 @@
 namespace mpm::io {
 
 std::string unit_suffix(std::string_view unit) {
-  return unit.empty() || unit == "-" ? std::string() : " " + std::string(unit);
+  // Built by append: GCC 12 reports a false -Wrestrict on `" " + std::string(unit)` at -O3 (GCC bug 105329).
+  std::string suffix;
+  if (unit.empty() || unit == "-") return suffix;
+  suffix.reserve(unit.size() + 1);
+  suffix += ' ';
+  suffix += unit;
+  return suffix;
 }
 
 std::string Range::describe(std::string_view unit) const {

@@ -120,7 +120,7 @@ void write_unstructured(const char* where, const std::filesystem::path& path, co
   points->SetData(coords);
 
   vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfTuples(static_cast<vtkIdType>(cell_count + 1));
+  offsets->SetNumberOfTuples(static_cast<vtkIdType>(cell_count) + 1);
   for (vtkIdType i = 0; i <= static_cast<vtkIdType>(cell_count); ++i) offsets->SetValue(i, i * corners);
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfTuples(static_cast<vtkIdType>(n));

@@ -158,7 +158,7 @@ YamlMap::YamlMap(const YamlReader& reader, YamlValue value) : reader_(reader), s
     const YAML::Node key = it->first;
     const YAML::Mark key_mark = mark_of(key, self_.mark);
     if (!key.IsScalar()) reader_.fail(key_mark, self_.path, "keys must be plain names, got " + describe(key));
-    const std::string name = key.Scalar();
+    const std::string& name = key.Scalar();
     const std::string path = path_of(name);
     if (const Entry* first = find_entry(name))
       reader_.fail(key_mark, path,

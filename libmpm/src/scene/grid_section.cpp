@@ -37,7 +37,7 @@ void read_face_condition(const YamlReader& reader, const YamlMap::Entry& face, i
 void read_boundary(const YamlReader& reader, const YamlValue& value, int dimension, GridDescription& grid) {
   const YamlMap faces = reader.map(value);
   const auto& names = GridDescription::face_names;
-  const std::vector<std::string> valid(names.begin(), names.begin() + 2 * dimension);
+  const std::vector<std::string> valid(names.begin(), names.begin() + std::ptrdiff_t{2} * dimension);
   faces.allow(valid, "face", fmt::format(" in {}D", dimension));
   for (const auto& face : faces.entries()) {
     const int index = static_cast<int>(std::find(valid.begin(), valid.end(), face.key) - valid.begin());

@@ -1,14 +1,8 @@
-// The shape-function table (names and grid requirements for the scene loader) and the scheme names.
-// make_scheme<Dim> itself is instantiated per dimension in make_scheme_{1,2,3}d.cpp.
+// The shape-function table (names and grid requirements for the scene loader), derived from ShapeFunctions,
+// and the scheme names.
 
 #include "mpm/scheme.hpp"
-#include "mpm/shape/bernstein_quadratic.hpp"
-#include "mpm/shape/cpdi.hpp"
-#include "mpm/shape/cubic_bspline.hpp"
-#include "mpm/shape/gimp.hpp"
-#include "mpm/shape/lagrange_quadratic.hpp"
-#include "mpm/shape/linear_hat.hpp"
-#include "mpm/shape/quadratic_bspline.hpp"
+#include "mpm/shape/shape_functions.hpp"
 
 namespace mpm {
 
@@ -18,30 +12,23 @@ ShapeFunctionInfo info() {
   ShapeFunctionInfo i;
   i.name = Shape::name;
   i.min_cells = Shape::min_cells;
-  if constexpr (requires { Shape::cell_multiple; }) i.even_cells = Shape::cell_multiple == 2;
-  if constexpr (requires { Shape::uses_domain; }) i.particle_domain = Shape::uses_domain;
-  if constexpr (requires { Shape::tlmpm_only; }) i.tlmpm_only = Shape::tlmpm_only;
-  if constexpr (requires { Shape::corner_domain; }) {
-    i.dimension = Shape::dimension;
+  i.even_cells = shape_cell_multiple<Shape> == 2;
+  i.particle_domain = shape_uses_domain<Shape>;
+  i.tlmpm_only = shape_tlmpm_only<Shape>;
+  i.dimension = shape_dimension<Shape>;
+  if constexpr (shape_corner_domain<Shape>) {
     i.domain_corners = Shape::element::corners;
     i.domain_follows_F = Shape::follows_F_by_default;
   }
   return i;
 }
-// Every shape function, once: the scene loader's list of names and grid checks come from here.
+// Every shape function, once, in the order of ShapeFunctions.
 const std::vector<ShapeFunctionInfo>& shape_functions() {
-  static const std::vector<ShapeFunctionInfo> all = {info<LinearHat>(),
-                                                     info<CubicBSpline>(),
-                                                     info<UGimp>(),
-                                                     info<CpGimp>(),
-                                                     info<QuadraticBSpline>(),
-                                                     info<BernsteinQuadratic>(),
-                                                     info<LagrangeQuadratic>(),
-                                                     info<CpdiL2>(),
-                                                     info<CpdiR4>(),
-                                                     info<CpdiQ4>(),
-                                                     info<CpdiT3>(),
-                                                     info<CpdiTet4>()};
+  static const std::vector<ShapeFunctionInfo> all = [] {
+    std::vector<ShapeFunctionInfo> v;
+    for_each_shape([&]<class Shape>() { v.push_back(info<Shape>()); });
+    return v;
+  }();
   return all;
 }
 }  // namespace

@@ -8,10 +8,7 @@
 
 #include "mpm/expression.hpp"
 #include "mpm/scene_error.hpp"
-#include "mpm/shape/cubic_bspline.hpp"
-#include "mpm/shape/gimp.hpp"
-#include "mpm/shape/linear_hat.hpp"
-#include "mpm/shape/quadratic_bspline.hpp"
+#include "mpm/shape/shape_functions.hpp"
 #include "mpm/thermal/heat_conduction.hpp"
 #include "mpm/thermal/thermal_description.hpp"
 
@@ -101,6 +98,11 @@ inline void check_no_thermal_keys(const SceneDescription& scene) {
   }
 }
 
+/// The shape functions heat conduction runs with: the listed cell-based ones (not the two-cell elements of
+/// Bernstein and Lagrange, not CPDI).
+template <class Shape>
+constexpr bool conduction_supports = shape_cell_multiple<Shape> == 1 && !shape_corner_domain<Shape>;
+
 template <int Dim, class Shape>
 std::shared_ptr<Module<Dim>> make_conduction(ConductionSetup<Dim> setup, const GridGeometry<Dim>& g) {
   auto m = std::make_shared<HeatConduction<Dim, Shape>>(std::move(setup), g);
@@ -152,15 +154,15 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene
     }
   }
   const std::string& shape = scene.solver.shape_function;
-  if (shape == LinearHat::name) return make_conduction<Dim, LinearHat>(std::move(setup), g);
-  if (shape == CubicBSpline::name) return make_conduction<Dim, CubicBSpline>(std::move(setup), g);
-  if (shape == QuadraticBSpline::name) return make_conduction<Dim, QuadraticBSpline>(std::move(setup), g);
-  if (shape == UGimp::name) return make_conduction<Dim, UGimp>(std::move(setup), g);
-  if (shape == CpGimp::name) return make_conduction<Dim, CpGimp>(std::move(setup), g);
-  throw SceneError(td.where, section_key,
-                   fmt::format("heat conduction supports the shape functions linear, cubic_bspline, "
-                               "quadratic_bspline, gimp and cpgimp; the solver uses {}",
-                               shape));
+  std::shared_ptr<Module<Dim>> conduction;
+  dispatch_shape(shape, [&]<class Shape>() {
+    if constexpr (conduction_supports<Shape>) conduction = make_conduction<Dim, Shape>(std::move(setup), g);
+  });
+  if (!conduction)
+    throw SceneError(td.where, section_key,
+                     fmt::format("heat conduction supports the shape functions {}; the solver uses {}",
+                                 shape_function_names_where([]<class S>() { return conduction_supports<S>; }), shape));
+  return conduction;
 }
 
 }  // namespace mpm::thermal

@@ -24,7 +24,9 @@ enum ExitStatus : int {
 struct RunOptions {
   std::optional<std::filesystem::path> output_directory;  ///< overrides the scene's output.directory
   bool progress = false;                                  ///< progress line (on a terminal)
-  bool profile = false;  ///< time the phases of every step and print the breakdown at the end (`--profile`)
+  bool profile = false;            ///< time the phases of every step and print the breakdown at the end (`--profile`)
+  std::optional<long long> steps;  ///< stop after this many steps (`--steps`, >= 1), or at the end time if sooner
+  std::optional<double> end_time;  ///< s, replaces the scene's solver.end_time (`--end-time`, > 0)
 };
 
 struct RunSummary {
@@ -43,8 +45,9 @@ struct RunSummary {
 /// Builds the scene's simulation without running it (throws SceneError like load_scene).
 void check_scene(const SceneDescription& scene, std::ostream& out);
 
-/// Runs the scene to its end time, writing output; returns the summary. Throws SceneError for a scene
-/// that only fails once built and StabilityError (after writing the last good state) if the guard trips.
+/// Runs the scene to its end time (or options.end_time, or options.steps steps), writing output; returns the
+/// summary. Throws SceneError for a scene that only fails once built, StabilityError (after writing the last
+/// good state) if the guard trips, std::invalid_argument for steps < 1 or an end time that is not positive.
 RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& log);
 
 }  // namespace mpm::app

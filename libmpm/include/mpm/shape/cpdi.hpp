@@ -53,7 +53,7 @@ struct Cpdi {
   static constexpr int dimension = Element::dimension;
   static constexpr int reach = Reach;
   static constexpr int support = 2 * Reach + 2;
-  static constexpr int slab_cells = 2 * support - 3;  // 5 for reach 1 (the GIMP block), checked in test_cpdi
+  static constexpr int slab_cells = 2 * support - 3;  // 5 for reach 1 (the GIMP block); typed shape tests
   static constexpr int min_cells = support - 1;
   static constexpr bool corner_domain = true;
   static constexpr bool follows_F_by_default = FollowsF;

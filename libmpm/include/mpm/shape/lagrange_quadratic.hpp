@@ -34,10 +34,12 @@ namespace mpm {
 struct LagrangeQuadratic {
   static constexpr const char* name = "lagrange_quadratic";
   static constexpr int support = 3;
-  static constexpr int slab_cells = 2;      // one element; slabs start at node 0, so they align with elements
-  static constexpr int min_cells = 2;       // one element
-  static constexpr int cell_multiple = 2;   // every axis needs an even number of cells
-  static constexpr bool tlmpm_only = true;  // negative lobes: only at fixed reference positions
+  static constexpr int slab_cells = 2;         // one element; slabs start at node 0, so they align with elements
+  static constexpr int min_cells = 2;          // one element
+  static constexpr int cell_multiple = 2;      // every axis needs an even number of cells
+  static constexpr bool tlmpm_only = true;     // negative lobes: only at fixed reference positions
+  static constexpr Real min_weight = -0.125;   ///< the vertex lobe at |r| = 3/4 (other functions: 0)
+  static constexpr int reproduced_degree = 2;  ///< reproduces quadratics (other functions: linears)
 
   /// `nodes` must be odd (an even number of cells). A particle on an element vertex belongs to the
   /// element above it (the last vertex to the last element).
