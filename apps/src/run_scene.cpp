@@ -22,12 +22,15 @@ void check(const SceneDescription& scene, std::ostream& out) {
   auto sim = build_simulation<Dim>(scene);
   const Real dt = sim->next_time_step();
   fmt::print(out,
-             "{}: valid. {}D, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
+             "{}: valid. {}D{}, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
              "(stable bound {:.6g} s, {}); about {} steps to t = {:.6g} s\n",
-             scene.file, Dim, sim->particle_count(), sim->bodies().size(), sim->grid().size(),
-             enum_name(scene.solver.scheme), scene.solver.shape_function, dt, sim->stable_time_step(),
-             sim->time_step_limiter(), static_cast<long long>(std::ceil(scene.solver.end_time / dt)),
-             scene.solver.end_time);
+             scene.file, Dim,
+             scene.grid.coordinates == Coordinates::axisymmetric
+                 ? " axisymmetric (x = r, y = z; masses, energies and forces per full revolution)"
+                 : "",
+             sim->particle_count(), sim->bodies().size(), sim->grid().size(), enum_name(scene.solver.scheme),
+             scene.solver.shape_function, dt, sim->stable_time_step(), sim->time_step_limiter(),
+             static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
 }
 
 template <int Dim>

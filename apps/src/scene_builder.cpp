@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/cpdi_corner_tracking.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/field_keys.hpp"
@@ -36,7 +37,7 @@ GridGeometry<Dim> grid_geometry(const GridDescription& gd) {
     h[d] = gd.cell_size[d];
     cells[d] = gd.cells[d];
   }
-  return GridGeometry<Dim>(origin, h, cells);
+  return GridGeometry<Dim>(origin, h, cells, gd.coordinates);
 }
 
 /// The output fields that only shape functions with particle domains define (checked before any body is built).
@@ -92,6 +93,14 @@ geometry::CpdiParticles<Dim> particle_elements(const SceneDescription& scene, co
   } else {
     elements.positions = seeds.positions;
     elements.volumes.assign(seeds.positions.size(), seeds.volume);
+    if (geometry.coordinates == Coordinates::axisymmetric)  // the ring of the lattice sub-cell, V = 2 pi r A
+      for (std::size_t k = 0; k < elements.positions.size(); ++k) {
+        const Real r = elements.positions[k][0];
+        if (!(r > 0))
+          throw SceneError(bd.shape.where, shape_key,
+                           fmt::format("body '{}' has a particle at r = {:g} m: on or behind the axis", bd.name, r));
+        elements.volumes[k] = axisym::revolved_volume(r, seeds.sub_cell_volume);
+      }
   }
   return elements;
 }
@@ -160,6 +169,8 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
   if (scene.solver.velocity_transfer == VelocityTransfer::apic)
     body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
+  if constexpr (Dim == 2)
+    if (geometry.coordinates == Coordinates::axisymmetric) axisym::add_hoop_fields(body.particles);  // F_tt, L_tt
   prepare_output_fields<Dim>(scene.output.fields, body);  // what the output reads (displacement: X_p)
   body.material->prepare_particles(body.particles);       // the model's history fields (plasticity), if any
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
@@ -206,7 +217,8 @@ void check_fixed_time_step(const SceneDescription& scene, const Simulation<Dim>&
 template <int Dim>
 std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
   const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
-  auto scheme = make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function);
+  auto scheme = make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function,
+                                 scene.grid.coordinates);
   const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
   check_output_against_shape_function(scene, shape);
 

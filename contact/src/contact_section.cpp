@@ -8,6 +8,7 @@
 #include <set>
 
 #include "mpm/contact/multi_velocity_contact.hpp"
+#include "mpm/expression.hpp"
 #include "mpm/io/yaml_reader.hpp"
 #include "mpm/scene_error.hpp"
 
@@ -95,7 +96,15 @@ std::vector<RigidBodyDescription> read_rigid_bodies(const YamlReader& reader, co
     if (!is_rigid(scene, rigid.body))
       reader.fail(body, "body '" + rigid.body + "' is not rigid: give it a material with model: rigid");
     if (!seen.insert(rigid.body).second) reader.fail(body, "body '" + rigid.body + "' is listed twice");
-    if (const auto v = map.find("velocity")) rigid.velocity = velocity(reader, *v, scene.dimension);
+    if (const auto v = map.find("velocity")) {
+      rigid.velocity = velocity(reader, *v, scene.dimension);
+      const Expression radial(rigid.velocity[0], {"t"});
+      if (scene.grid.coordinates == Coordinates::axisymmetric &&
+          !(radial.is_constant() && radial.constant_value() == 0))
+        reader.fail(*v,
+                    "in axisymmetric coordinates a rigid body cannot move radially (its ring would stretch): "
+                    "the radial velocity (the first component) must be 0");
+    }
     rigid.where = reader.location(item.mark);
     rigid_bodies.push_back(rigid);
   }
@@ -119,6 +128,10 @@ std::vector<PlaneDescription> read_planes(const YamlReader& reader, const YamlVa
     const double length = std::hypot(plane.normal[0], plane.normal[1], plane.normal[2]);
     if (!(length > 0)) reader.fail(normal, "the normal must not be zero");
     for (auto& component : plane.normal) component /= length;
+    if (scene.grid.coordinates == Coordinates::axisymmetric && plane.normal[0] != 0)
+      reader.fail(normal,
+                  "in axisymmetric coordinates a rigid plane must be normal to the axis, normal [0, 1] or "
+                  "[0, -1] (a tilted plane would revolve into a cone)");
     if (const auto friction = map.find("friction")) plane.friction = reader.number(*friction, Range::at_least(0), "");
     if (const auto v = map.find("velocity")) plane.velocity = velocity(reader, *v, scene.dimension);
     plane.where = reader.location(items[i].mark);

@@ -54,6 +54,7 @@ void density_normals(const Body<Dim>& body, const GridGeometry<Dim>& g, const st
   density.assign(n_cells, 0);
   const auto& p = body.particles;
   const Real inv_volume = 1 / g.cell_volume();
+  const bool axisymmetric = g.coordinates == Coordinates::axisymmetric;  // the meridian density m_p / r_p
   for (Index i = 0; i < p.size(); ++i) {
     int base[Dim];
     Real w[Dim][3];
@@ -69,7 +70,7 @@ void density_normals(const Body<Dim>& body, const GridGeometry<Dim>& g, const st
     for (int c = 0; c < combos; ++c) {
       int rest = c;
       Index linear = 0, stride = 1;
-      Real weight = p.mass[i] * inv_volume;
+      Real weight = (axisymmetric ? p.mass[i] / p.x[i][0] : p.mass[i]) * inv_volume;
       bool inside = true;
       for (int d = 0; d < Dim; ++d) {
         const int k = rest % 3, idx = base[d] + k;
@@ -111,7 +112,7 @@ template <int Dim>
 MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, std::vector<Body<Dim>>& bodies,
                                                 const std::string& shape_function, ContactSettings<Dim> settings)
     : bodies_(bodies), settings_(std::move(settings)), body_count_(static_cast<int>(bodies.size())) {
-  passes_ = make_shape_passes<Dim>(shape_function);
+  passes_ = make_shape_passes<Dim>(shape_function, grid.coordinates);
   body_grids_.reserve(body_count_);  // Body::own_grid points into body_grids_: no reallocation after this
   for (int k = 0; k < body_count_; ++k) {
     body_grids_.emplace_back(grid);

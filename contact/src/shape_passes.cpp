@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/shape/shape_functions.hpp"
 #include "mpm/shape/stencil.hpp"
 #include "mpm/slab_binning.hpp"
@@ -15,7 +16,7 @@ namespace {
 template <class Shape>
 constexpr bool contact_supports = !shape_tlmpm_only<Shape> && !shape_corner_domain<Shape>;
 
-template <int Dim, class Shape>
+template <int Dim, class Shape, class Coords>
 class Passes final : public ShapePasses<Dim> {
  public:
   void mass_gradient(const Body<Dim>& body, const GridGeometry<Dim>& g, std::vector<VecU<Dim>>& out) const override {
@@ -23,12 +24,12 @@ class Passes final : public ShapePasses<Dim> {
     VecU<Dim>* n = out.data();
     // Same slab colouring as the P2G scatter: race-free and deterministic.
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
-      Stencil<Dim, Shape> st;
+      axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
         st.compute(p.x[i], g, domain(i));
-        const Real m = p.mass[i];
+        const Real m = Coords::axisymmetric ? p.mass[i] / p.x[i][0] : p.mass[i];
         for (int a = 0; a < st.count; ++a)
           for (int d = 0; d < Dim; ++d) n[st.node[a]][d] += m * st.grad[a][d];
       }
@@ -39,8 +40,9 @@ class Passes final : public ShapePasses<Dim> {
                Real sign, std::vector<Real>& out) const override {
     const auto& p = body.particles;
     Real* e = out.data();
+    const Real* hoop = axisym::hoop_stretch_of(p);
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
-      Stencil<Dim, Shape> st;
+      axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
@@ -48,7 +50,9 @@ class Passes final : public ShapePasses<Dim> {
         bool any = false;
         for (int a = 0; a < st.count; ++a) any |= (flag[st.node[a]] & 1) != 0 && st.w[a] > 0;
         if (!any) continue;
-        const Real half = 0.5 * std::pow(p.volume0[i] * MatU<Dim>(p.F[i]).determinant(), 1.0 / Dim);
+        const Real volume = p.volume0[i] * axisym::volume_ratio(p, i, hoop);
+        const Real size = Coords::axisymmetric ? axisym::meridian_area(volume, p.x[i][0]) : volume;
+        const Real half = 0.5 * std::pow(size, 1.0 / Dim);
         for (int a = 0; a < st.count; ++a) {
           const Index I = st.node[a];
           if (!(flag[I] & 1) || !(st.w[a] > 0)) continue;
@@ -63,10 +67,17 @@ class Passes final : public ShapePasses<Dim> {
 }  // namespace
 
 template <int Dim>
-std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape) {
+std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape, Coordinates coordinates) {
   std::unique_ptr<ShapePasses<Dim>> passes;
   dispatch_shape(shape, [&]<class Shape>() {
-    if constexpr (contact_supports<Shape>) passes = std::make_unique<Passes<Dim, Shape>>();
+    if constexpr (contact_supports<Shape>) {
+      if constexpr (Dim == 2 && shape_axisymmetric<Shape>)
+        if (coordinates == Coordinates::axisymmetric) {
+          passes = std::make_unique<Passes<Dim, Shape, AxisymmetricCoordinates>>();
+          return;
+        }
+      passes = std::make_unique<Passes<Dim, Shape, CartesianCoordinates>>();
+    }
   });
   if (!passes)
     throw std::invalid_argument(
@@ -75,8 +86,8 @@ std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape) {
   return passes;
 }
 
-template std::unique_ptr<ShapePasses<1>> make_shape_passes<1>(const std::string&);
-template std::unique_ptr<ShapePasses<2>> make_shape_passes<2>(const std::string&);
-template std::unique_ptr<ShapePasses<3>> make_shape_passes<3>(const std::string&);
+template std::unique_ptr<ShapePasses<1>> make_shape_passes<1>(const std::string&, Coordinates);
+template std::unique_ptr<ShapePasses<2>> make_shape_passes<2>(const std::string&, Coordinates);
+template std::unique_ptr<ShapePasses<3>> make_shape_passes<3>(const std::string&, Coordinates);
 
 }  // namespace mpm::contact

@@ -28,7 +28,8 @@ ParticleSeeds<Dim> fill_shape(const ShapeDescription& shape, const GridGeometry<
   constexpr const char* axis_names[3] = {"x", "y", "z"};
   for (int d = 0; d < Dim; ++d) {
     const Real tolerance = 1e-9 * (upper[d] - grid.origin[d]);
-    if (box.lo[d] < grid.origin[d] - tolerance || box.hi[d] > upper[d] + tolerance)
+    const bool clipped_at_axis = d == 0 && grid.coordinates == Coordinates::axisymmetric;  // r < 0 is not filled
+    if ((box.lo[d] < grid.origin[d] - tolerance && !clipped_at_axis) || box.hi[d] > upper[d] + tolerance)
       throw GeometryError(file_of(shape),
                           fmt::format("lies outside the grid: on axis {} it spans [{:.6g}, {:.6g}] m, the grid "
                                       "[{:.6g}, {:.6g}] m",

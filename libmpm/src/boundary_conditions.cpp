@@ -1,5 +1,6 @@
 #include "mpm/boundary_conditions.hpp"
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/expression.hpp"
 
 namespace mpm {
@@ -24,17 +25,7 @@ GridBoundary<Dim>::GridBoundary(const GridGeometry<Dim>& g, const std::array<Fac
       k.component = c;
       k.value = std::make_shared<Expression>(*faces[face].traction[c], std::vector<std::string>{"t"});
       k.nodes = nodes;
-      for (Index n : nodes) {
-        // Tributary area: half a cell on each tangential axis, halved again at the face's edges.
-        const auto ijk = g.node_indices(n);
-        Real area = 1;
-        for (int d = 0; d < Dim; ++d) {
-          if (d == axis) continue;
-          const bool edge = ijk[d] == 0 || ijk[d] == g.nodes[d] - 1;
-          area *= edge ? 0.5 * g.h[d] : g.h[d];
-        }
-        k.area.push_back(area);
-      }
+      for (Index n : nodes) k.area.push_back(axisym::face_node_area(g, n, axis));
       tractions_.push_back(std::move(k));
     }
     for (int c = 0; c < Dim; ++c) {

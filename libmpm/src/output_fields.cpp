@@ -8,6 +8,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/field_keys.hpp"
 
 namespace mpm {
@@ -51,23 +52,25 @@ std::deque<OutputField> core_fields() {
       for (double v : {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)}) out.push_back(v);
     });
   }));
-  t.push_back(output_field("deformation_gradient", 9, "-", "deformation gradient F (-)",
-                           [](const auto& b, std::vector<double>& out) {
-                             constexpr int Dim = body_dimension<decltype(b)>;
-                             each(b, [&](Index i) { push_mat3(out, embed<Dim>(b.particles.F[i], 1)); });
-                           }));
+  t.push_back(output_field(
+      "deformation_gradient", 9, "-", "deformation gradient F (-)", [](const auto& b, std::vector<double>& out) {
+        const Real* hoop = axisym::hoop_stretch_of(b.particles);
+        each(b, [&](Index i) { push_mat3(out, axisym::deformation_gradient_3x3(b.particles, i, hoop)); });
+      }));
   t.push_back(output_field("mass", 1, "kg", "particle mass (kg)", [](const auto& b, std::vector<double>& out) {
     each(b, [&](Index i) { out.push_back(b.particles.mass[i]); });
   }));
   t.push_back(
       output_field("volume", 1, "m^3", "current particle volume (m^3)", [](const auto& b, std::vector<double>& out) {
         const auto& p = b.particles;
-        each(b, [&](Index i) { out.push_back(p.volume0[i] * p.F[i].determinant()); });
+        const Real* hoop = axisym::hoop_stretch_of(p);
+        each(b, [&](Index i) { out.push_back(p.volume0[i] * axisym::volume_ratio(p, i, hoop)); });
       }));
   t.push_back(
       output_field("density", 1, "kg/m^3", "current density (kg/m^3)", [](const auto& b, std::vector<double>& out) {
         const auto& p = b.particles;
-        each(b, [&](Index i) { out.push_back(p.mass[i] / (p.volume0[i] * p.F[i].determinant())); });
+        const Real* hoop = axisym::hoop_stretch_of(p);
+        each(b, [&](Index i) { out.push_back(p.mass[i] / (p.volume0[i] * axisym::volume_ratio(p, i, hoop))); });
       }));
   t.push_back(
       output_field("body", 1, "-", "index of the particle's body in `bodies`",
@@ -76,7 +79,11 @@ std::deque<OutputField> core_fields() {
                            [](const auto& b, std::vector<double>& out) {
                              constexpr int Dim = body_dimension<decltype(b)>;
                              const auto& L = b.particles.field(keys::velocity_gradient<Dim>);
-                             each(b, [&](Index i) { push_mat3(out, embed<Dim>(Mat<Dim>(L[i]), 0)); });
+                             const Real* hoop = nullptr;  // L_tt (axisymmetric bodies)
+                             if constexpr (Dim == 2)
+                               if (b.particles.has_field(keys::hoop_velocity_gradient))
+                                 hoop = b.particles.field(keys::hoop_velocity_gradient).data();
+                             each(b, [&](Index i) { push_mat3(out, embed<Dim>(Mat<Dim>(L[i]), hoop ? hoop[i] : 0)); });
                            }));
   t.back().prepare_with([](auto& body) {  // stored by the scheme only when this field exists
     constexpr int Dim = body_dimension<decltype(body)>;

@@ -42,6 +42,8 @@ io::PointCloud OutputWriter<Dim>::particle_cloud(const Simulation<Dim>& sim) con
     const OutputField* field = find_output_field(name);  // the table of output_fields.hpp
     if (!field) throw std::invalid_argument("unknown output field '" + name + "'");
     io::FieldArray f{name, field->components, {}};
+    if (sim.grid().geometry.coordinates == Coordinates::axisymmetric)
+      f.component_names = io::cylindrical_component_names(field->components);
     f.values.reserve(cloud.size() * f.components);
     for (const auto& b : sim.bodies()) append_output_field<Dim>(name, b, f.values);
     cloud.fields.push_back(std::move(f));
@@ -85,6 +87,8 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
       append_padded<Dim>(velocity.values, g.velocity[n].mapped);
       append_padded<Dim>(force.values, g.node[n].force);
     }
+    if (g.geometry.coordinates == Coordinates::axisymmetric)
+      velocity.component_names = force.component_names = io::cylindrical_component_names(3);
     image.fields = {mass, velocity, force};
     for (const auto& [name, values] : g.node_fields)  // modules' nodal fields (thermal: temperature)
       if (static_cast<Index>(values.size()) == g.size()) image.fields.push_back({name, 1, values});

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "mpm/axisymmetric.hpp"
+
 namespace mpm {
 
 StabilityError::StabilityError(const StabilityReport& r)
@@ -169,8 +171,10 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
   StabilityReport r;
   const auto& g = grid_.geometry;
   const Vec<Dim> upper = g.upper();
+  const bool axisymmetric = g.coordinates == Coordinates::axisymmetric;
   for (const auto& b : bodies_) {
     const auto& p = b.particles;
+    const Real* hoop = axisym::hoop_stretch_of(p);
     for (Index i = 0; i < p.size(); ++i) {
       auto fail = [&](const char* field, std::string detail) {
         r.body = b.name;
@@ -184,10 +188,12 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
       } else if (scheme_->positions_must_stay_in_grid() &&
                  ((x.array() < g.origin.array()).any() || (x.array() > upper.array()).any())) {
         fail("position", fmt::format("x = ({}) left the grid box", fmt::join(x.data(), x.data() + Dim, ", ")));
+      } else if (axisymmetric && scheme_->positions_must_stay_in_grid() && !(x[0] > 0)) {
+        fail("position", fmt::format("r = {:.6g} m: on or across the axis of the axisymmetric grid", x[0]));
       } else if (!p.v[i].allFinite()) {
         fail("velocity", "not finite");
-      } else if (!(p.F[i].determinant() > 0)) {
-        fail("deformation_gradient", fmt::format("det F = {:.6g} (inverted or degenerate)", p.F[i].determinant()));
+      } else if (const Real J = axisym::volume_ratio(p, i, hoop); !(J > 0)) {
+        fail("deformation_gradient", fmt::format("det F = {:.6g} (inverted or degenerate)", J));
       } else if (!p.stress[i].full().allFinite()) {
         fail("stress", "not finite");
       } else {

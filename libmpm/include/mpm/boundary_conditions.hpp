@@ -29,7 +29,8 @@ class GridBoundary {
   bool empty() const { return constraints_.empty(); }
   bool has_traction() const { return !tractions_.empty(); }
   /// Adds the prescribed face tractions at time t to the nodal forces: f_I += t(t) A_I, with A_I the
-  /// face area of node I (a cell face shared by its corner nodes; per unit out-of-plane size in 1D/2D).
+  /// face area of node I (a cell face shared by its corner nodes; per unit out-of-plane size in 1D/2D; in
+  /// axisymmetric coordinates the area of the revolved face, axisym::face_node_area).
   /// Nodes without mass get nothing (they are not part of the body).
   void apply_traction(std::vector<NodeRecord<Dim>>& node, Real t) const;
   /// Bounds that keep particles inside the walls: on an axis whose face holds the normal velocity at 0

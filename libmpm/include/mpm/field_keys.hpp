@@ -31,6 +31,10 @@ inline constexpr FieldKey<CornerSet<Dim>> cpdi_corners{"cpdi_corners"};
 /// Original CPDI: the initial corner offsets from the particle, m, convected with F (eq. 3.27).
 template <int Dim>
 inline constexpr FieldKey<CornerSet<Dim>> cpdi_corner_offsets0{"cpdi_corner_offsets0"};
+/// Axisymmetric bodies only (axisymmetric.hpp): the hoop stretch F_tt (-) and the hoop velocity gradient
+/// L_tt = v_r / r of the last step (1/s), which the schemes write and the materials read.
+inline constexpr FieldKey<Real> hoop_stretch{"hoop_stretch"};
+inline constexpr FieldKey<Real> hoop_velocity_gradient{"hoop_velocity_gradient"};
 /// Temperature, K: added by a plastic material with specific_heat and by the thermal module's bodies.
 inline constexpr FieldKey<Real> temperature{"temperature"};
 

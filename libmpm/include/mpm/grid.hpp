@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/coordinates.hpp"
 #include "mpm/types.hpp"
 
 namespace mpm {
@@ -28,10 +29,14 @@ struct GridGeometry {
   Vec<Dim> inv_h = Vec<Dim>::Ones();   ///< 1/m
   std::array<int, Dim> nodes{};        ///< nodes per axis (cells + 1)
   std::array<Index, Dim> stride{};     ///< linear-index stride per axis
+  /// Axisymmetric (2D only): x is the radius, origin[0] = 0 the axis (coordinates.hpp). The kernels take this
+  /// choice at compile time (their Coords parameter); the field is for what is built once (face areas, output).
+  Coordinates coordinates = Coordinates::cartesian;
 
   GridGeometry() = default;
-  GridGeometry(const Vec<Dim>& origin_, const Vec<Dim>& h_, const std::array<int, Dim>& cells)
-      : origin(origin_), h(h_), inv_h(h_.cwiseInverse()) {
+  GridGeometry(const Vec<Dim>& origin_, const Vec<Dim>& h_, const std::array<int, Dim>& cells,
+               Coordinates coordinates_ = Coordinates::cartesian)
+      : origin(origin_), h(h_), inv_h(h_.cwiseInverse()), coordinates(coordinates_) {
     Index s = 1;
     for (int d = 0; d < Dim; ++d) {
       nodes[d] = cells[d] + 1;

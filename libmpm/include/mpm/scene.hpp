@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/coordinates.hpp"
 #include "mpm/solver_options.hpp"
 
 namespace mpm {
@@ -40,6 +41,9 @@ struct GridDescription {
   std::array<double, 3> extent{0, 0, 0};     ///< m, box lengths
   std::array<double, 3> cell_size{0, 0, 0};  ///< m, per axis
   std::array<int, 3> cells{1, 1, 1};         ///< derived: extent / cell_size (checked to divide evenly)
+  /// `grid.coordinates`: axisymmetric only in 2D, with origin x = 0 and the face x_min the axis (slip, set by
+  /// the loader).
+  Coordinates coordinates = Coordinates::cartesian;
   /// Faces in the order of face_names.
   std::array<FaceBoundary, 6> boundary;
 

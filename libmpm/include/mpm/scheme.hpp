@@ -45,9 +45,12 @@ class ShapedScheme : public Scheme<Dim> {
 
 /// A scheme of scheme_names() ("usl", "musl", "usf", "tlmpm") with a shape function of the table
 /// (find_shape_function: "linear", "gimp", "cpgimp", "quadratic_bspline", "cubic_bspline", "bernstein",
-/// "lagrange_quadratic", "cpdi_*"); throws std::invalid_argument listing valid names.
+/// "lagrange_quadratic", "cpdi_*"); throws std::invalid_argument listing valid names. `coordinates`:
+/// axisymmetric in 2D takes the schemes' axisymmetric instantiations (axisymmetric.hpp), on the shape functions
+/// that allow it (ShapeFunctionInfo::axisymmetric).
 template <int Dim>
-std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape_function);
+std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape_function,
+                                         Coordinates coordinates = Coordinates::cartesian);
 
 /// Names accepted by make_scheme.
 std::vector<std::string> scheme_names();
@@ -63,6 +66,7 @@ struct ShapeFunctionInfo {
   int dimension = 0;              ///< the only dimension the function exists in (CPDI elements), 0 for any
   int domain_corners = 0;         ///< CPDI: corners of the particle element (fields "cpdi_corners"/"..._offsets0")
   bool domain_follows_F = false;  ///< CPDI: domains convect with F unless the scene asks for corner tracking
+  bool axisymmetric = false;      ///< usable on an axisymmetric grid (shape_axisymmetric)
 };
 /// The entry for `name`, or nullptr.
 const ShapeFunctionInfo* find_shape_function(const std::string& name);

@@ -60,7 +60,9 @@ vtkSmartPointer<vtkDoubleArray> to_vtk(const FieldArray& f) {
   a->SetNumberOfComponents(f.components);
   a->SetNumberOfTuples(static_cast<vtkIdType>(f.values.size() / static_cast<std::size_t>(f.components)));
   std::copy(f.values.begin(), f.values.end(), a->GetPointer(0));
-  if (f.components == 6) {
+  if (static_cast<int>(f.component_names.size()) == f.components) {
+    for (int c = 0; c < f.components; ++c) a->SetComponentName(c, f.component_names[c].c_str());
+  } else if (f.components == 6) {
     static const char* const names[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
     for (int c = 0; c < 6; ++c) a->SetComponentName(c, names[c]);
   }
@@ -172,6 +174,19 @@ void write_vti(const std::filesystem::path& path, const ImageGrid& grid) {
   vtkNew<vtkXMLImageDataWriter> writer;
   writer->SetInputData(image);
   write_xml(where, path, writer.Get());
+}
+
+std::vector<std::string> cylindrical_component_names(int components) {
+  switch (components) {
+    case 3:
+      return {"r", "z", "theta"};
+    case 6:
+      return {"rr", "zz", "thetatheta", "rz", "ztheta", "rtheta"};
+    case 9:
+      return {"rr", "rz", "rtheta", "zr", "zz", "ztheta", "thetar", "thetaz", "thetatheta"};
+    default:
+      return {};
+  }
 }
 
 }  // namespace mpm::io

@@ -9,7 +9,8 @@
 namespace mpm::sections {
 namespace {
 
-/// Fails unless the shape's bounding box (when the description knows it) lies inside the grid.
+/// Fails unless the shape's bounding box (when the description knows it) lies inside the grid. Axisymmetric: a
+/// shape may cross the axis (its part at r < 0 is not filled: a disk centred on the axis is a sphere).
 void check_inside_grid(const YamlReader& reader, const YamlValue& shape, const BodyDescription& body, int dimension,
                        const GridDescription& grid) {
   const auto box = bounding_box(body.shape, dimension);
@@ -17,7 +18,8 @@ void check_inside_grid(const YamlReader& reader, const YamlValue& shape, const B
     const auto& [lo, hi] = *box;
     const double grid_lo = grid.origin[d], grid_hi = grid.origin[d] + grid.extent[d];
     const double tolerance = geometric_tolerance * grid.extent[d];
-    if (lo[d] < grid_lo - tolerance || hi[d] > grid_hi + tolerance)
+    const bool clipped_at_axis = d == 0 && grid.coordinates == Coordinates::axisymmetric;
+    if ((lo[d] < grid_lo - tolerance && !clipped_at_axis) || hi[d] > grid_hi + tolerance)
       reader.fail(shape, fmt::format("body '{}' lies outside the grid: on axis {} it spans [{:.6g}, {:.6g}] m, the "
                                      "grid [{:.6g}, {:.6g}] m",
                                      body.name, axis_names[d], lo[d], hi[d], grid_lo, grid_hi));

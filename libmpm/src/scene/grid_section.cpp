@@ -70,7 +70,7 @@ int read_dimension(const YamlReader& reader, const YamlMap& top) {
 
 GridDescription read_grid(const YamlReader& reader, const YamlValue& value, int dimension) {
   const YamlMap map = reader.map(value);
-  map.allow({"origin", "extent", "cell_size", "boundary"});
+  map.allow({"origin", "extent", "cell_size", "boundary", "coordinates"});
   GridDescription grid;
   if (const auto origin = map.find("origin")) grid.origin = reader.vector(*origin, dimension, Range::any(), "m");
   grid.extent = reader.vector(map.required("extent"), dimension, Range::above(0), "m");
@@ -87,6 +87,7 @@ GridDescription read_grid(const YamlReader& reader, const YamlValue& value, int 
     grid.cells[d] = static_cast<int>(cells);
   }
   if (const auto boundary = map.find("boundary")) read_boundary(reader, *boundary, dimension, grid);
+  read_coordinates(reader, map, dimension, grid);
   return grid;
 }
 

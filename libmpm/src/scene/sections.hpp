@@ -30,6 +30,9 @@ inline bool contains(const std::vector<std::string>& items, const std::string& i
 int read_dimension(const io::YamlReader& reader, const io::YamlMap& top);
 /// `grid:` with its `boundary:` (grid_section.cpp).
 GridDescription read_grid(const io::YamlReader& reader, const io::YamlValue& value, int dimension);
+/// `grid.coordinates` and the axisymmetric rules (axisymmetric_grid.cpp): called by read_grid once the origin and
+/// the boundary are read; holds the radial velocity on the axis face.
+void read_coordinates(const io::YamlReader& reader, const io::YamlMap& map, int dimension, GridDescription& grid);
 /// `materials:`, checked against the registered models (materials_section.cpp).
 std::map<std::string, MaterialDescription> read_materials(const io::YamlReader& reader, const io::YamlValue& value);
 /// `bodies:`, with their shapes (bodies_section.cpp); needs the grid and the materials.

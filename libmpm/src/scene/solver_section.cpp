@@ -17,6 +17,13 @@ void check_shape_function(const YamlReader& reader, const YamlValue& key, const 
     reader.fail(key, fmt::format("{} is a {}D shape function; this scene is {}D (CPDI elements: cpdi_l2 in 1D, "
                                  "cpdi_r4, cpdi_q4 and cpdi_t3 in 2D, cpdi_tet4 in 3D)",
                                  info.name, info.dimension, dimension));
+  if (scene.grid.coordinates == Coordinates::axisymmetric && !info.axisymmetric) {
+    std::string valid;
+    for (const auto& name : shape_function_names())
+      if (find_shape_function(name)->axisymmetric) valid += (valid.empty() ? "" : ", ") + name;
+    reader.fail(key, fmt::format("{} is not available in axisymmetric coordinates; the shape functions there are {}",
+                                 info.name, valid));
+  }
   if (info.tlmpm_only && !is_total_lagrangian(solver.scheme))
     reader.fail(key, fmt::format("{} has negative weights and is only valid with scheme: tlmpm (particles at "
                                  "fixed reference positions); the scheme is {}",

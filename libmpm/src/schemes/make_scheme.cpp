@@ -8,7 +8,17 @@
 namespace mpm {
 
 template <int Dim>
-std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape) {
+std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape, Coordinates coordinates) {
+  if (coordinates == Coordinates::axisymmetric) {
+    if constexpr (Dim == 2) {
+      if (auto made = detail::make_axisymmetric_scheme_for(scheme, shape)) return made;
+      throw std::invalid_argument("shape function '" + shape +
+                                  "' is not available in axisymmetric coordinates (valid: " +
+                                  shape_function_names_where([]<class S>() { return shape_axisymmetric<S>; }) + ")");
+    } else {
+      throw std::invalid_argument("axisymmetric coordinates exist in 2D only, not in " + std::to_string(Dim) + "D");
+    }
+  }
   std::unique_ptr<Scheme<Dim>> made;
   const bool listed = dispatch_shape(shape, [&]<class Shape>() {
     if constexpr (shape_exists_in<Shape, Dim>)
@@ -24,8 +34,8 @@ std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::s
   return made;
 }
 
-template std::unique_ptr<Scheme<1>> make_scheme<1>(const std::string&, const std::string&);
-template std::unique_ptr<Scheme<2>> make_scheme<2>(const std::string&, const std::string&);
-template std::unique_ptr<Scheme<3>> make_scheme<3>(const std::string&, const std::string&);
+template std::unique_ptr<Scheme<1>> make_scheme<1>(const std::string&, const std::string&, Coordinates);
+template std::unique_ptr<Scheme<2>> make_scheme<2>(const std::string&, const std::string&, Coordinates);
+template std::unique_ptr<Scheme<3>> make_scheme<3>(const std::string&, const std::string&, Coordinates);
 
 }  // namespace mpm

@@ -10,9 +10,13 @@
 
 namespace mpm::detail {
 
-/// The scheme named `scheme` on `Shape`; throws std::invalid_argument for an unknown scheme or one the
-/// shape function does not allow (tlmpm_only).
-template <int Dim, class Shape>
+/// The scheme named `scheme` on `Shape` in the coordinates `Coords`; throws std::invalid_argument for an unknown
+/// scheme or one the shape function does not allow (tlmpm_only).
+template <int Dim, class Shape, class Coords = CartesianCoordinates>
 std::unique_ptr<Scheme<Dim>> make_scheme_for(const std::string& scheme);
+
+/// The axisymmetric schemes on a shape function of ShapeFunctions that has shape_axisymmetric, or nullptr
+/// (make_axisymmetric_scheme.cpp).
+std::unique_ptr<Scheme<2>> make_axisymmetric_scheme_for(const std::string& scheme, const std::string& shape);
 
 }  // namespace mpm::detail

@@ -16,6 +16,7 @@ ShapeFunctionInfo info() {
   i.particle_domain = shape_uses_domain<Shape>;
   i.tlmpm_only = shape_tlmpm_only<Shape>;
   i.dimension = shape_dimension<Shape>;
+  i.axisymmetric = shape_axisymmetric<Shape>;
   if constexpr (shape_corner_domain<Shape>) {
     i.domain_corners = Shape::element::corners;
     i.domain_follows_F = Shape::follows_F_by_default;

@@ -103,9 +103,9 @@ inline void check_no_thermal_keys(const SceneDescription& scene) {
 template <class Shape>
 constexpr bool conduction_supports = shape_cell_multiple<Shape> == 1 && !shape_corner_domain<Shape>;
 
-template <int Dim, class Shape>
+template <int Dim, class Shape, class Coords = CartesianCoordinates>
 std::shared_ptr<Module<Dim>> make_conduction(ConductionSetup<Dim> setup, const GridGeometry<Dim>& g) {
-  auto m = std::make_shared<HeatConduction<Dim, Shape>>(std::move(setup), g);
+  auto m = std::make_shared<HeatConduction<Dim, Shape, Coords>>(std::move(setup), g);
   m->set_cell_size(g);
   return m;
 }
@@ -156,7 +156,14 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene
   const std::string& shape = scene.solver.shape_function;
   std::shared_ptr<Module<Dim>> conduction;
   dispatch_shape(shape, [&]<class Shape>() {
-    if constexpr (conduction_supports<Shape>) conduction = make_conduction<Dim, Shape>(std::move(setup), g);
+    if constexpr (conduction_supports<Shape>) {
+      if constexpr (Dim == 2 && shape_axisymmetric<Shape>)
+        if (g.coordinates == Coordinates::axisymmetric) {
+          conduction = make_conduction<Dim, Shape, AxisymmetricCoordinates>(std::move(setup), g);
+          return;
+        }
+      conduction = make_conduction<Dim, Shape>(std::move(setup), g);
+    }
   });
   if (!conduction)
     throw SceneError(td.where, section_key,

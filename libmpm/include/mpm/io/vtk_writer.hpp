@@ -18,7 +18,15 @@ struct FieldArray {
   std::string name;
   int components = 1;
   std::vector<double> values;
+  /// Names of the components for ParaView (empty: XX YY ZZ XY YZ XZ for 6 components, VTK's defaults
+  /// otherwise); the cylindrical names of an axisymmetric run (cylindrical_component_names).
+  std::vector<std::string> component_names = {};
 };
+
+/// The components of a 3-vector (r z theta), a symmetric tensor (rr zz thetatheta rz ztheta rtheta) or a 3x3
+/// tensor by rows (rr rz rtheta zr zz ztheta thetar thetaz thetatheta) in the cylindrical axes of an axisymmetric
+/// run (x = r, y = z, out of plane = theta); empty for other component counts.
+std::vector<std::string> cylindrical_component_names(int components);
 
 /// Points (always 3 coordinates per point, z = 0 in 2D) and their fields.
 struct PointCloud {

@@ -14,7 +14,7 @@ namespace mpm::kernels {
 
 /// Bins particles, maps mass, momentum and force to the grid (P2G), computes v^t and the updated
 /// velocity, and applies boundary conditions and module hooks at both stages.
-template <int Dim, class Shape>
+template <int Dim, class Shape, class Coords = CartesianCoordinates>
 void map_and_update_grid(StepContext<Dim>& ctx) {
   {
     PhaseTimer timer(ctx.profile, StepPhase::p2g);
@@ -25,7 +25,7 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
     }
     reset_grid(ctx.grid);
     reset_own_grids(ctx.bodies);
-    for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape>(body, ctx.grid);
+    for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape, true, true, Coords>(body, ctx.grid);
   }
   PhaseTimer timer(ctx.profile, StepPhase::grid_update);
   if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(ctx.grid.node, ctx.time);

@@ -4,19 +4,20 @@
 /// the trial grid velocity, mapped back to the grid with the old weights (eq. 2.64) and the velocity
 /// gradient is computed from that re-mapped velocity (eq. 2.65), which removes the small-mass problem.
 /// The particle-velocity update and the second mapping are fused into one pass over the particles.
+/// Axisymmetric (Coords): L_tt = sum T_I v_rI^{t+dt} of the re-mapped velocity, like L (axisymmetric.hpp).
 
 #include "mpm/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
 
 namespace mpm {
 
-template <int Dim, class Shape>
+template <int Dim, class Shape, class Coords = CartesianCoordinates>
 class Musl final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "musl"; }
 
   void advance(StepContext<Dim>& ctx) override {
-    kernels::map_and_update_grid<Dim, Shape>(ctx);
+    kernels::map_and_update_grid<Dim, Shape, Coords>(ctx);
     {
       PhaseTimer timer(ctx.profile, StepPhase::p2g);  // the second mapping (with the particle velocity update)
       clear_momentum(ctx.grid);
@@ -51,7 +52,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     const Real alpha = ctx.settings.flip_fraction;
     MatU<Dim>* affine = kernels::affine_of(p);
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
-      Stencil<Dim, Shape> st;
+      axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
@@ -109,11 +110,17 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
-    Stencil<Dim, Shape> st;
+    [[maybe_unused]] const axisym::HoopFields hoop =
+        Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
+    axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
       st.compute(p.x[i], g, domain(i));
+      if constexpr (Coords::axisymmetric) {
+        hoop.rate[i] = axisym::hoop_rate(st, [&](Index n) { return vel[n].mapped; });
+        ok &= axisym::update_hoop_stretch(hoop.stretch[i], hoop.rate[i], dt);
+      }
       Vec<Dim> v_move = Vec<Dim>::Zero();
       Mat<Dim> L = Mat<Dim>::Zero();
       for (int a = 0; a < st.count; ++a) {
@@ -125,8 +132,8 @@ class Musl final : public ShapedScheme<Dim, Shape> {
       kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
       L_out[i - begin] = L;
       if (affine) affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].mapped); });
-      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
-            std::isfinite(p.v[i].sum());
+      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) &&
+            kernels::inside<Dim, Coords>(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
     }
     return ok;
   }

@@ -12,6 +12,10 @@
 /// never reordered (the cache is in particle order). There is no automatic contact between bodies.
 /// The cache holds tensor-product stencils in factored form (factored_stencil.hpp): the three particle
 /// passes per step read it, and at 104 B per particle (hats, 3D) instead of 368 B it stays in cache.
+/// Axisymmetric (Coords), the reference-radius form: dF_tt/dt = sum phi_I(X_p) v_rI / R_p, F_tt += dt dF_tt/dt
+/// (so F_tt = r/R with x_p moved by the same velocity), L_tt = dF_tt/dt / F_tt; the nominal stress is
+/// F_tt sigma cof(F) in plane and P_tt = det(F) sigma_tt, whose force is -V_0 P_tt phi_I(X_p) / R_p
+/// (axisymmetric.hpp). The cache is then the full stencil with its hoop weights.
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -23,7 +27,7 @@
 
 namespace mpm {
 
-template <int Dim, class Shape>
+template <int Dim, class Shape, class Coords = CartesianCoordinates>
 class Tlmpm final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "tlmpm"; }
@@ -110,7 +114,8 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
   }
 
  private:
-  using Cache = std::vector<ReferenceStencil<Dim, Shape>>;
+  using Cache = std::vector<
+      std::conditional_t<Coords::axisymmetric, axisym::StencilFor<Dim, Shape, Coords>, ReferenceStencil<Dim, Shape>>>;
 
   /// cof(F) = J F^-T, without a division (the nominal stress needs J F^-T, the inverse cof^T / J).
   static Mat<Dim> cofactor(const Mat<Dim>& F) {
@@ -135,17 +140,25 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     const auto& geometry = grid.geometry;
     NodeRecord<Dim>* node = grid.node.data();
     const VecU<Dim>* body_force = kernels::body_force_of(p);
+    const Real* hoop_stretch = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
     for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
         // First Piola-Kirchhoff stress P = J sigma F^-T = sigma cof(F) (review Table 4), times V0.
-        const Mat<Dim> vP = p.volume0[i] * (p.stress[i].block() * cofactor(p.F[i]));
+        Real V0 = p.volume0[i];
+        [[maybe_unused]] Real v_hoop = 0;  // V0 P_tt
+        if constexpr (Coords::axisymmetric) {
+          v_hoop = V0 * axisym::nominal_hoop_stress(p.F[i], p.stress[i].c[2]);
+          V0 *= hoop_stretch[i];  // J F^-T = F_tt cof(F) in plane
+        }
+        const Mat<Dim> vP = V0 * (p.stress[i].block() * cofactor(p.F[i]));
         const Vec<Dim> mv = p.mass[i] * p.v[i];
         const Vec<Dim> mb = body_force ? Vec<Dim>(p.mass[i] * body_force[i]) : Vec<Dim>::Zero();
-        for_each_node(cache[i], geometry, [&](Index a, Real w, const Vec<Dim>& grad) {
+        axisym::for_each_node_with_hoop<Coords>(cache[i], geometry, [&](Index a, Real w, const Vec<Dim>& grad, Real T) {
           NodeRecord<Dim>& n = node[a];
           n.momentum += w * mv;
           n.force += w * mb - vP * grad;
+          if constexpr (Coords::axisymmetric) n.force[0] += axisym::hoop_force(v_hoop, T);
         });
       }
     });
@@ -180,6 +193,8 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
                      MatU<Dim>* L_out, Vec<Dim>& max_row_norm2) {
     auto& p = body.particles;
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
+    [[maybe_unused]] const axisym::HoopFields hoop =
+        Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
       Mat<Dim> Fdot = Mat<Dim>::Zero();
@@ -193,6 +208,12 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
       const Mat<Dim> F = Mat<Dim>(p.F[i]) + ctx.dt * Fdot;
       p.F[i] = F;
       const Real J = F.determinant();
+      if constexpr (Coords::axisymmetric) {  // dF_tt/dt = sum phi_I(X) v_rI / R (the reference-radius form)
+        const Real hoop_dot = axisym::hoop_rate(cache[i], [&](Index n) { return vel[n].mapped; });
+        hoop.stretch[i] += ctx.dt * hoop_dot;
+        hoop.rate[i] = hoop_dot / hoop.stretch[i];
+        ok &= hoop.stretch[i] > 0 && std::isfinite(hoop.rate[i]);
+      }
       ok &= J > 0 && std::isfinite(J) && p.x[i].allFinite() && std::isfinite(p.v[i].sum());
       const Mat<Dim> F_inv = cofactor(F).transpose() * (1 / J);
       L_out[i - begin] = Fdot * F_inv;

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/field_keys.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/stencil.hpp"
@@ -80,7 +81,8 @@ Mat<Dim> affine_matrix(const Stencil<Dim, Shape>& st, NodeVelocityOf&& velocity_
 
 /// P2G (eqs 2.40, 2.43, 2.36): nodal mass, momentum and internal force f_I = -sum V_p sigma_p grad phi.
 /// USF maps mass and momentum first and the force of the updated stress later: the two flags select.
-template <int Dim, class Shape, bool MassMomentum = true, bool Force = true>
+/// Axisymmetric (Coords): V_p includes F_tt and f_rI gains the hoop term -V_p sigma_tt T_I (eq. G.2).
+template <int Dim, class Shape, bool MassMomentum = true, bool Force = true, class Coords = CartesianCoordinates>
 void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
   Grid<Dim>& grid = grid_of(body, shared_grid);
   const auto& p = body.particles;
@@ -88,15 +90,19 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
   NodeRecord<Dim>* node = grid.node.data();
   const VecU<Dim>* body_force = Force ? body_force_of(p) : nullptr;
   const MatU<Dim>* affine = MassMomentum ? affine_of(body.particles) : nullptr;
+  const Real* hoop_stretch = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
   for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
-    Stencil<Dim, Shape> st;
+    axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
     for (Index k = 0; k < count; ++k) {
       const Index i = index[k];
       st.compute(p.x[i], g, domain(i));
       const Real m = p.mass[i];
       const Vec<Dim> mv = m * p.v[i];
-      const Mat<Dim> vs = (p.volume0[i] * p.F[i].determinant()) * p.stress[i].block();
+      Real V = p.volume0[i] * p.F[i].determinant();
+      if constexpr (Coords::axisymmetric) V *= hoop_stretch[i];
+      const Mat<Dim> vs = V * p.stress[i].block();
+      [[maybe_unused]] const Real v_hoop = Coords::axisymmetric ? V * p.stress[i].c[2] : 0;  // V sigma_tt
       // Scalar loops on the packed record: Eigen's vectorised form mixes 128-bit stores with
       // overlapping 256-bit loads of the same record (a store-forwarding stall per node).
       Real mvs[Dim], vss[Dim][Dim];
@@ -127,6 +133,7 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
               for (int c = 0; c < Dim; ++c) f += vss[r][c] * st.grad[a][c];
               n.force[r] -= f;
             }
+            if constexpr (Coords::axisymmetric) n.force[0] += axisym::hoop_force(v_hoop, st.hoop[a]);
           }
         }
       };
@@ -179,11 +186,13 @@ inline void keep_inside_walls(VecU<Dim>& x, const Vec<Dim>& lower, const Vec<Dim
   }
 }
 
-/// True when x is inside the grid box (false for NaN).
-template <int Dim>
+/// True when x is inside the grid box (false for NaN); axisymmetric: also off the axis, r > 0 (the hoop terms
+/// divide by r).
+template <int Dim, class Coords = CartesianCoordinates>
 inline bool inside(const VecU<Dim>& x, const GridGeometry<Dim>& g, const Vec<Dim>& upper) {
   bool ok = true;
   for (int d = 0; d < Dim; ++d) ok = ok && x[d] >= g.origin[d] && x[d] <= upper[d];
+  if constexpr (Coords::axisymmetric) ok = ok && x[0] > 0;
   return ok;
 }
 

@@ -6,13 +6,14 @@
 ///   P2G m_I, (mv)_I -> v_I^t;  L_p = sum v_I^t (x) grad phi;  F, sigma updated;
 ///   f_I = -sum V_p sigma_p grad phi + m_I g;  v_I^{t+dt} = v_I^t + dt f_I/m_I;
 ///   v_p = alpha (v_p + sum phi (v^{t+dt} - v^t)) + (1 - alpha) sum phi v^{t+dt};  x_p += dt sum phi v^{t+dt}.
+/// Axisymmetric (Coords): L_tt = sum T_I v_rI^t and F_tt with L and F (axisymmetric.hpp).
 
 #include "mpm/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
 
 namespace mpm {
 
-template <int Dim, class Shape>
+template <int Dim, class Shape, class Coords = CartesianCoordinates>
 class Usf final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "usf"; }
@@ -27,7 +28,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
       }
       kernels::reset_grid(grid);
       kernels::reset_own_grids(ctx.bodies);
-      for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, true, false>(body, grid);
+      for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, true, false, Coords>(body, grid);
     }
     {
       PhaseTimer timer(ctx.profile, StepPhase::grid_update);
@@ -41,7 +42,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
 
     {
       PhaseTimer timer(ctx.profile, StepPhase::p2g);
-      for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, false, true>(body, grid);
+      for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, false, true, Coords>(body, grid);
     }
     {
       PhaseTimer timer(ctx.profile, StepPhase::grid_update);
@@ -61,11 +62,17 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
-    Stencil<Dim, Shape> st;
+    [[maybe_unused]] const axisym::HoopFields hoop =
+        Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
+    axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
       st.compute(p.x[i], g, domain(i));
+      if constexpr (Coords::axisymmetric) {
+        hoop.rate[i] = axisym::hoop_rate(st, [&](Index n) { return vel[n].mapped; });
+        ok &= axisym::update_hoop_stretch(hoop.stretch[i], hoop.rate[i], ctx.dt);
+      }
       Mat<Dim> L = Mat<Dim>::Zero();
       for (int a = 0; a < st.count; ++a)
         for (int c = 0; c < Dim; ++c) L.col(c) += vel[st.node[a]].mapped * st.grad[a][c];
@@ -101,7 +108,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
-      Stencil<Dim, Shape> st;
+      axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       bool ok = true;
       for (Index i = r.begin(); i != r.end(); ++i) {
@@ -120,7 +127,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
         }
         p.x[i] += dt * v_pic;
         kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
-        ok &= kernels::inside(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
+        ok &= kernels::inside<Dim, Coords>(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
       }
       if (!ok) ctx.guard_tripped = true;
     });

@@ -1,20 +1,21 @@
 #pragma once
 /// \file usl.hpp
 /// Update Stress Last (review §2.5.3, Algorithm 1) with the PIC/FLIP blend (eq. 2.53) and the
-/// small-mass cut-off (eq. 2.63): one mapping to the grid, one transfer back.
+/// small-mass cut-off (eq. 2.63): one mapping to the grid, one transfer back. Axisymmetric (Coords): the hoop
+/// rate L_tt = sum T_I v_rI^{t+dt} and stretch F_tt with the in-plane L and F (axisymmetric.hpp).
 
 #include "mpm/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
 
 namespace mpm {
 
-template <int Dim, class Shape>
+template <int Dim, class Shape, class Coords = CartesianCoordinates>
 class Usl final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "usl"; }
 
   void advance(StepContext<Dim>& ctx) override {
-    kernels::map_and_update_grid<Dim, Shape>(ctx);
+    kernels::map_and_update_grid<Dim, Shape, Coords>(ctx);
     kernels::transfer_and_update_stress(ctx, [&](Body<Dim>& body, Index begin, Index end, MatU<Dim>* L) {
       return grid_to_particles(body, ctx, begin, end, L);
     });
@@ -34,11 +35,17 @@ class Usl final : public ShapedScheme<Dim, Shape> {
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
-    Stencil<Dim, Shape> st;
+    [[maybe_unused]] const axisym::HoopFields hoop =
+        Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
+    axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
       st.compute(p.x[i], g, domain(i));
+      if constexpr (Coords::axisymmetric) {
+        hoop.rate[i] = axisym::hoop_rate(st, [&](Index n) { return vel[n].updated; });
+        ok &= axisym::update_hoop_stretch(hoop.stretch[i], hoop.rate[i], dt);
+      }
       Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
       Mat<Dim> L = Mat<Dim>::Zero();
       for (int a = 0; a < st.count; ++a) {
@@ -57,8 +64,8 @@ class Usl final : public ShapedScheme<Dim, Shape> {
       p.x[i] += dt * v_pic;
       kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
       L_out[i - begin] = L;
-      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) && kernels::inside(p.x[i], g, upper) &&
-            std::isfinite(p.v[i].sum());
+      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) &&
+            kernels::inside<Dim, Coords>(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
     }
     return ok;
   }

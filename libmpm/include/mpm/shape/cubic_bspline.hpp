@@ -17,6 +17,7 @@ struct CubicBSpline {
   static constexpr int support = 4;
   static constexpr int slab_cells = 5;  // a particle in cell c reaches nodes c-2..c+3 near the faces
   static constexpr int min_cells = 4;
+  static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)
 
   /// Type 1, eq. 3.18 (symmetric in r).
   static inline void boundary(Real r, Real& w, Real& dw) {

@@ -38,10 +38,7 @@ struct FactoredStencil {
     for (int d = 0; d < Dim; ++d) {
       const Real xi = (x[d] - g.origin[d]) * g.inv_h[d];
       int b = 0;
-      if constexpr (requires { Shape::uses_domain; })
-        Shape::evaluate(xi, g.nodes[d], half[d] * g.inv_h[d], b, w[d], dw[d]);
-      else
-        Shape::evaluate(xi, g.nodes[d], b, w[d], dw[d]);
+      evaluate_axis<Shape>(xi, g.nodes[d], half[d] * g.inv_h[d], b, w[d], dw[d]);
       for (int k = 0; k < per_axis; ++k) dw[d][k] *= g.inv_h[d];
       base += b * g.stride[d];
     }

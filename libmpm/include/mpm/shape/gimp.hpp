@@ -39,6 +39,34 @@ inline void evaluate(Real xi, int nodes, Real a, int& base, Real* w, Real* dw) {
     dw[k] = (hat(r + a) - hat(r - a)) * inv;
   }
 }
+/// The moments of the hat over [-1, s] that the r-weighted averages need: M(s) = int N(t) t dt and
+/// P(s) = int N'(t) t dt (both 0 below -1; M(1) = 0, P(1) = -1).
+inline Real hat_first_moment(Real s) {
+  if (s <= -1 || s >= 1) return 0;
+  return s <= 0 ? s * s / 2 + s * s * s / 3 - Real(1) / 6 : s * s / 2 - s * s * s / 3 - Real(1) / 6;
+}
+inline Real hat_slope_moment(Real s) {
+  if (s <= -1) return 0;
+  if (s >= 1) return -1;
+  return s <= 0 ? (s * s - 1) / 2 : -(1 + s * s) / 2;
+}
+/// Axisymmetric weights of nodes base..base+3 on the radial axis, the grid starting on the axis (xi = r/h):
+/// the averages over the domain [xi - a, xi + a] weighted by r (Nairn & Guilkey 2015), with u = xi - xi_I,
+///   w_I  = int N_I r dr / int r dr  = (xi_I [G(u + a) - G(u - a)] + M(u + a) - M(u - a)) / (2 a xi),
+///   dw_I = int N_I' r dr / int r dr = (xi_I [N(u + a) - N(u - a)] + P(u + a) - P(u - a)) / (2 a xi),
+/// and in w_planar the unweighted averages of `evaluate` (the hoop weight is w_planar / r).
+inline void evaluate_radial(Real xi, int nodes, Real a, int& base, Real* w, Real* dw, Real* w_planar) {
+  Real unused[4];
+  evaluate(xi, nodes, a, base, w_planar, unused);
+  a = std::clamp<Real>(a, 1e-12, 1);
+  const Real inv = 1 / (2 * a * xi);
+  for (int k = 0; k < 4; ++k) {
+    const Real node = base + k, u = xi - node;
+    w[k] =
+        (node * (hat_integral(u + a) - hat_integral(u - a)) + hat_first_moment(u + a) - hat_first_moment(u - a)) * inv;
+    dw[k] = (node * (hat(u + a) - hat(u - a)) + hat_slope_moment(u + a) - hat_slope_moment(u - a)) * inv;
+  }
+}
 }  // namespace gimp_detail
 
 /// Shape functions whose weights depend on a particle domain provide `uses_domain = true`, an
@@ -50,6 +78,10 @@ struct GimpFunctions {
   static constexpr bool uses_domain = true;
   static inline void evaluate(Real xi, int nodes, Real a, int& base, Real* w, Real* dw) {
     gimp_detail::evaluate(xi, nodes, a, base, w, dw);
+  }
+  /// The radial axis of an axisymmetric grid (axisymmetric.hpp): r-weighted averages, and the plain ones.
+  static inline void evaluate_radial(Real xi, int nodes, Real a, int& base, Real* w, Real* dw, Real* w_planar) {
+    gimp_detail::evaluate_radial(xi, nodes, a, base, w, dw, w_planar);
   }
 };
 
@@ -66,6 +98,7 @@ struct UGimp : GimpFunctions {
 
 struct CpGimp : GimpFunctions {
   static constexpr const char* name = "cpgimp";
+  static constexpr bool axisymmetric = true;  ///< with the r-weighted radial averages (evaluate_radial)
   /// Half-lengths l_p(0)/2 F_aa (m), eq. 3.14.
   template <int Dim>
   struct Domain {

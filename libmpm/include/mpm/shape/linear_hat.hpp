@@ -12,9 +12,10 @@ namespace mpm {
 
 struct LinearHat {
   static constexpr const char* name = "linear";
-  static constexpr int support = 2;     ///< nodes per axis that can be non-zero
-  static constexpr int slab_cells = 2;  ///< slab thickness for the race-free scatter (>= nodes reached - 1)
-  static constexpr int min_cells = 1;   ///< cells an axis needs
+  static constexpr int support = 2;           ///< nodes per axis that can be non-zero
+  static constexpr int slab_cells = 2;        ///< slab thickness for the race-free scatter (>= nodes reached - 1)
+  static constexpr int min_cells = 1;         ///< cells an axis needs
+  static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)
 
   /// Weights and derivatives (per unit of the normalised coordinate) of the `support` nodes starting at
   /// `base` on one axis. `xi` = (x - origin)/h; `nodes` = node count on this axis. A particle exactly on

@@ -45,6 +45,7 @@ struct QuadraticBSpline {
   static constexpr int support = 3;
   static constexpr int slab_cells = 3;  // a particle in cell c reaches nodes c-1..c+2
   static constexpr int min_cells = 2;
+  static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)
 
   /// Type 3, the uniform quadratic B-spline B(r).
   static inline void interior(Real r, Real& w, Real& dw) {

@@ -86,6 +86,13 @@ inline constexpr bool shape_corner_domain = requires {
   Shape::corner_domain;
 };
 
+/// Usable on an axisymmetric grid (axisymmetric.hpp): grid functions as they are (review Remark 42), cpGIMP with
+/// the r-weighted radial averages of Nairn & Guilkey (2015). The others are refused in axisymmetric scenes.
+template <class Shape>
+inline constexpr bool shape_axisymmetric = requires {
+  Shape::axisymmetric;
+};
+
 // ---- walking the list ----
 
 namespace detail {

@@ -20,6 +20,17 @@ requires Shape::uses_domain struct ParticleDomain<Dim, Shape> : Shape::template 
   using Shape::template Domain<Dim>::Domain;
 };
 
+/// One axis of a shape function: the weights w and derivatives dw (per cell) of the `Shape::support` nodes from
+/// `base`, at the normalised coordinate xi = (x - origin)/h on an axis of `nodes` nodes; `a` is the domain
+/// half-length in cells, read only by domain-based functions (GIMP).
+template <class Shape>
+inline void evaluate_axis(Real xi, int nodes, Real a, int& base, Real* w, Real* dw) {
+  if constexpr (requires { Shape::uses_domain; })
+    Shape::evaluate(xi, nodes, a, base, w, dw);
+  else
+    Shape::evaluate(xi, nodes, base, w, dw);
+}
+
 template <int Dim, class Shape>
 struct Stencil {
   static constexpr int per_axis = Shape::support;
@@ -46,15 +57,23 @@ struct Stencil {
     Real wa[Dim][per_axis], da[Dim][per_axis];
     for (int d = 0; d < Dim; ++d) {
       const Real xi = (x[d] - g.origin[d]) * g.inv_h[d];
-      if constexpr (requires { Shape::uses_domain; })
-        Shape::evaluate(xi, g.nodes[d], half[d] * g.inv_h[d], base[d], wa[d], da[d]);
-      else
-        Shape::evaluate(xi, g.nodes[d], base[d], wa[d], da[d]);
-      for (int k = 0; k < per_axis; ++k) {
-        da[d][k] *= g.inv_h[d];
-        offset[d][k] = (base[d] + k - xi) * g.h[d];
-      }
+      evaluate_axis<Shape>(xi, g.nodes[d], half[d] * g.inv_h[d], base[d], wa[d], da[d]);
+      scale_and_offset(d, xi, g, base[d], da[d]);
     }
+    combine(base, wa, da, g);
+  }
+
+ protected:
+  /// Derivatives of axis d from per cell to per metre; the node offsets of the axis.
+  inline void scale_and_offset(int d, Real xi, const GridGeometry<Dim>& g, int base, Real* da) {
+    for (int k = 0; k < per_axis; ++k) {
+      da[k] *= g.inv_h[d];
+      offset[d][k] = (base + k - xi) * g.h[d];
+    }
+  }
+  /// The tensor products of the 1D weights and derivatives (review eq. 3.17), x fastest.
+  inline void combine(const int base[Dim], const Real wa[Dim][per_axis], const Real da[Dim][per_axis],
+                      const GridGeometry<Dim>& g) {
     if constexpr (Dim == 1) {
       for (int i = 0; i < per_axis; ++i) {
         node[i] = base[0] + i;

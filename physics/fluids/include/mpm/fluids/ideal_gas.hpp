@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/fluids/field_keys.hpp"
 #include "mpm/material.hpp"
 
@@ -43,16 +44,18 @@ class IdealGas final : public Material<Dim> {
 
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
     auto& energy = p.field(keys::internal_energy);
+    const axisym::HoopFields hoop = axisym::hoop_fields(p);  // axisymmetric: F_tt in J, L_tt in tr D
     WaveSpeedBound<Dim> bound;
     for (Index i = begin; i != end; ++i) {
-      const Real J = p.F[i].determinant();
+      const Real J = axisym::volume_ratio(p, i, hoop.stretch);
       const Real rho = params_.density / J;
-      const Real trD = Mat<Dim>(L[i - begin]).trace();
+      const Real trD = Mat<Dim>(L[i - begin]).trace() + (hoop ? hoop.rate[i] : 0);
       const Real e = energy[i];
       const Real a = std::sqrt(std::max<Real>(0, params_.gamma * (params_.gamma - 1) * e));
       Real q = 0;
-      if (trD < 0) {
-        const Real length = std::pow(p.volume0[i] * J, Real(1) / Dim);
+      if (trD < 0) {  // L_e: the particle's length, from its meridian area when axisymmetric
+        const Real size = hoop ? axisym::meridian_area(p.volume0[i] * J, p.x[i][0]) : p.volume0[i] * J;
+        const Real length = std::pow(size, Real(1) / Dim);
         q = rho * length * (params_.viscosity_quadratic * length * trD * trD - params_.viscosity_linear * a * trD);
       }
       const Real e_new = (e - dt * q * trD / rho) / (1 + dt * (params_.gamma - 1) * trD);

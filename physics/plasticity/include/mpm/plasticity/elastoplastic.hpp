@@ -66,7 +66,8 @@ inline void set_lane(Pack& v, int l, Real x) { v[l] = x; }
 template <int Dim, class T>
 struct PointLanes {
   T F[Dim][Dim], L[Dim][Dim];
-  T J, volume;
+  T L_hoop;     ///< 2D: the out-of-plane rate, 0 in plane strain and L_tt = v_r / r on an axisymmetric body
+  T J, volume;  ///< volume: the particle's size for the viscosity length (its meridian area when axisymmetric)
   T q[4];
   T plastic_strain, plastic_strain_rate, damage, damage_initiation, plastic_work, hardening;
   T temperature;
@@ -141,17 +142,20 @@ struct Elastoplastic {
   using Params = ElastoplasticParams<Flow, Eos>;
 
   /// One step of one point: F, L = velocity gradient and J = det F at t + dt, `volume` = current volume
-  /// (for the artificial viscosity length). Reads and overwrites `state`, `*temperature` (K; nullptr when
-  /// not tracked) and `stress` (Cauchy, Pa). To evaluate a trial deformation, call it on copies.
+  /// (for the artificial viscosity length; the meridian area of an axisymmetric particle). Reads and overwrites
+  /// `state`, `*temperature` (K; nullptr when not tracked) and `stress` (Cauchy, Pa). `hoop_rate`: L_tt of an
+  /// axisymmetric particle (2D; J then includes F_tt). To evaluate a trial deformation, call it on copies.
   template <int Dim>
   static inline void update_point(const Params& c, const Mat<Dim>& F, const Mat<Dim>& L, Real J, Real dt, Real volume,
-                                  PlasticState<Dim>& state, Real* temperature, SymTensor<Dim>& stress) {
+                                  PlasticState<Dim>& state, Real* temperature, SymTensor<Dim>& stress,
+                                  Real hoop_rate = 0) {
     PointLanes<Dim, Real> p;
     for (int i = 0; i < Dim; ++i)
       for (int j = 0; j < Dim; ++j) {
         p.F[i][j] = F(i, j);
         p.L[i][j] = L(i, j);
       }
+    p.L_hoop = hoop_rate;
     p.J = J;
     p.volume = volume;
     p.load_state(state, 0);
@@ -235,7 +239,7 @@ struct Elastoplastic {
     }
   }
 
-  /// Step 1, rate: d = dev(D), D = sym(L), in the current frame; returns tr D.
+  /// Step 1, rate: d = dev(D), D = sym(L) (with L_tt out of plane in 2D), in the current frame; returns tr D.
   template <int Dim, class T>
   static inline T deviatoric_rate(const PointLanes<Dim, T>& p, T d[6]) {
     d[0] = p.L[0][0];
@@ -244,6 +248,7 @@ struct Elastoplastic {
       d[1] = p.L[1][1];
       d[3] = 0.5 * (p.L[0][1] + p.L[1][0]);
     }
+    if constexpr (Dim == 2) d[2] = p.L_hoop;
     if constexpr (Dim == 3) {
       d[2] = p.L[2][2];
       d[4] = 0.5 * (p.L[1][2] + p.L[2][1]);

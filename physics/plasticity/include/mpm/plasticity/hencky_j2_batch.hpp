@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/material.hpp"
 #include "mpm/plasticity/field_keys.hpp"
 #include "mpm/plasticity/hencky_j2.hpp"
@@ -34,10 +35,11 @@ class HenckyJ2Batch final : public Material<Dim> {
 
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>*, Real dt) override {
     State* state = p.field(state_field).data();
-    Real max_c = 0, sum = 0;  // finite stresses have a finite sum
+    const Real* hoop = axisym::hoop_stretch_of(p);  // axisymmetric: F_tt out of plane
+    Real max_c = 0, sum = 0;                        // finite stresses have a finite sum
     Vec<Dim> max_v = Vec<Dim>::Zero();
     for (Index i = begin; i != end; ++i) {
-      const Mat3 F = embed<Dim>(Mat<Dim>(p.F[i]), 1);
+      const Mat3 F = axisym::deformation_gradient_3x3(p, i, hoop);
       const Real J = F.determinant();
       const HenckyJ2Update<Dim> u = HenckyJ2::evaluate<Dim>(params_, state[i], F, dt);
       HenckyJ2::commit(state[i], u);
@@ -55,9 +57,10 @@ class HenckyJ2Batch final : public Material<Dim> {
   }
 
   WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override {
+    const Real* hoop = axisym::hoop_stretch_of(p);
     WaveSpeedBound<Dim> bound;
     for (Index i = 0; i < p.size(); ++i) {
-      const Real c = wave_speed(p.F[i].determinant());
+      const Real c = wave_speed(axisym::volume_ratio(p, i, hoop));
       bound.max_speed = bound.max_speed.cwiseMax((p.v[i].cwiseAbs().array() + c).matrix());
     }
     return bound;
@@ -67,9 +70,10 @@ class HenckyJ2Batch final : public Material<Dim> {
   Real strain_energy(const ParticleSet<Dim>& p) const override {
     const auto& state = p.field(state_field);
     const Real G = params_.shear_modulus, H = params_.hardening_modulus;
+    const Real* hoop = axisym::hoop_stretch_of(p);
     Real e = 0;  // serial: fixed summation order
     for (Index i = 0; i < p.size(); ++i) {
-      const Real J = p.F[i].determinant();
+      const Real J = axisym::volume_ratio(p, i, hoop);
       const Mat3 s = p.stress[i].full();
       const Mat3 dev_tau = J * (s - s.trace() / 3 * Mat3::Identity());
       const Real w = dev_tau.squaredNorm() / (4 * G) + 0.5 * H * state[i].xi * state[i].xi + volumetric_.energy(J);

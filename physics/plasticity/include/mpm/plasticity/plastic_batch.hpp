@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/field_keys.hpp"
 #include "mpm/material.hpp"
 #include "mpm/plasticity/elastoplastic.hpp"
@@ -38,45 +39,26 @@ class PlasticBatch final : public Material<Dim> {
   /// Whole packs of lane_count particles run the vector law; the last few particles of a block the
   /// scalar one (the same arithmetic, lanes.hpp).
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
-    State* state = p.field(state_field).data();
-    Real* temperature = params_.thermal ? p.field(mpm::keys::temperature).data() : nullptr;
-    Real max_c2 = 0;
-    Index i = begin;
-    for (; i + lane_count <= end; i += lane_count)
-      max_c2 = std::max(max_c2, update_pack(p, i, L + (i - begin), dt, state, temperature));
-    for (; i != end; ++i) {
-      const Mat<Dim> F = p.F[i];
-      const Real J = F.determinant();
-      Model::template update_point<Dim>(params_, F, Mat<Dim>(L[i - begin]), J, dt, p.volume0[i] * J, state[i],
-                                        temperature ? temperature + i : nullptr, p.stress[i]);
-      max_c2 = std::max(max_c2, Model::wave_speed_squared(params_, J));
-    }
-    Real sum = 0;  // finite stresses have a finite sum
-    Vec<Dim> max_v = Vec<Dim>::Zero();
-    for (Index k = begin; k != end; ++k) {
-      for (Real c : p.stress[k].c) sum += c;
-      max_v = max_v.cwiseMax(VecU<Dim>(p.v[k].cwiseAbs()));
-    }
-    // max_a (|v_a| + c) <= max |v_a| + max c: one square root per block (slightly conservative)
-    WaveSpeedBound<Dim> bound;
-    bound.max_speed = (max_v.array() + std::sqrt(max_c2)).matrix();
-    bound.finite = std::isfinite(sum);
-    return bound;
+    if constexpr (Dim == 2)  // axisymmetric bodies: F_tt and L_tt join the law (one test per block)
+      if (const axisym::HoopFields hoop = axisym::hoop_fields(p)) return update_block<true>(p, begin, end, L, dt, hoop);
+    return update_block<false>(p, begin, end, L, dt, {});
   }
 
   WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override {
+    const Real* hoop = axisym::hoop_stretch_of(p);
     WaveSpeedBound<Dim> bound;
     for (Index i = 0; i < p.size(); ++i) {
-      const Real c = Model::wave_speed(params_, p.F[i].determinant());
+      const Real c = Model::wave_speed(params_, axisym::volume_ratio(p, i, hoop));
       bound.max_speed = bound.max_speed.cwiseMax((p.v[i].cwiseAbs().array() + c).matrix());
     }
     return bound;
   }
 
   Real strain_energy(const ParticleSet<Dim>& p) const override {
+    const Real* hoop = axisym::hoop_stretch_of(p);
     Real e = 0;  // serial: fixed summation order
     for (Index i = 0; i < p.size(); ++i)
-      e += p.volume0[i] * Model::energy_density(params_, p.F[i].determinant(), p.stress[i].full());
+      e += p.volume0[i] * Model::energy_density(params_, axisym::volume_ratio(p, i, hoop), p.stress[i].full());
     return e;
   }
 
@@ -97,21 +79,67 @@ class PlasticBatch final : public Material<Dim> {
   }
 
  private:
+  /// J (with F_tt when `Hoop`) and the particle size of the viscosity length: the current volume, or the
+  /// meridian area of an axisymmetric particle.
+  template <bool Hoop>
+  static void size_of(const ParticleSet<Dim>& p, Index i, [[maybe_unused]] const axisym::HoopFields& hoop, Real& J,
+                      Real& size) {
+    J = p.F[i].determinant();
+    if constexpr (Hoop) {
+      J *= hoop.stretch[i];
+      size = axisym::meridian_area(p.volume0[i] * J, p.x[i][0]);
+    } else {
+      size = p.volume0[i] * J;
+    }
+  }
+
+  template <bool Hoop>
+  WaveSpeedBound<Dim> update_block(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt,
+                                   const axisym::HoopFields& hoop) {
+    State* state = p.field(state_field).data();
+    Real* temperature = params_.thermal ? p.field(mpm::keys::temperature).data() : nullptr;
+    Real max_c2 = 0;
+    Index i = begin;
+    for (; i + lane_count <= end; i += lane_count)
+      max_c2 = std::max(max_c2, update_pack<Hoop>(p, i, L + (i - begin), dt, state, temperature, hoop));
+    for (; i != end; ++i) {
+      Real J = 0, size = 0;
+      size_of<Hoop>(p, i, hoop, J, size);
+      Model::template update_point<Dim>(params_, Mat<Dim>(p.F[i]), Mat<Dim>(L[i - begin]), J, dt, size, state[i],
+                                        temperature ? temperature + i : nullptr, p.stress[i],
+                                        Hoop ? hoop.rate[i] : Real(0));
+      max_c2 = std::max(max_c2, Model::wave_speed_squared(params_, J));
+    }
+    Real sum = 0;  // finite stresses have a finite sum
+    Vec<Dim> max_v = Vec<Dim>::Zero();
+    for (Index k = begin; k != end; ++k) {
+      for (Real c : p.stress[k].c) sum += c;
+      max_v = max_v.cwiseMax(VecU<Dim>(p.v[k].cwiseAbs()));
+    }
+    // max_a (|v_a| + c) <= max |v_a| + max c: one square root per block (slightly conservative)
+    WaveSpeedBound<Dim> bound;
+    bound.max_speed = (max_v.array() + std::sqrt(max_c2)).matrix();
+    bound.finite = std::isfinite(sum);
+    return bound;
+  }
+
   /// Particles i .. i + lane_count - 1 (L: their velocity gradients) through the vector law; returns the
   /// largest squared wave speed among them.
-  Real update_pack(ParticleSet<Dim>& p, Index i, const MatU<Dim>* L, Real dt, State* state, Real* temperature) const {
+  template <bool Hoop>
+  Real update_pack(ParticleSet<Dim>& p, Index i, const MatU<Dim>* L, Real dt, State* state, Real* temperature,
+                   [[maybe_unused]] const axisym::HoopFields& hoop) const {
     PointLanes<Dim, Pack> lanes;
+    if constexpr (!Hoop) lanes.L_hoop = Pack::Zero();
     for (int l = 0; l < lane_count; ++l) {
       const Index k = i + l;
       const Mat<Dim> F = p.F[k];
-      const Real J = F.determinant();
       for (int r = 0; r < Dim; ++r)
         for (int c = 0; c < Dim; ++c) {
           lanes.F[r][c][l] = F(r, c);
           lanes.L[r][c][l] = L[l](r, c);
         }
-      lanes.J[l] = J;
-      lanes.volume[l] = p.volume0[k] * J;
+      if constexpr (Hoop) lanes.L_hoop[l] = hoop.rate[k];
+      size_of<Hoop>(p, k, hoop, lanes.J[l], lanes.volume[l]);
       lanes.load_state(state[k], l);
       lanes.temperature[l] = temperature ? temperature[k] : params_.room_temperature;
       for (int c = 0; c < SymTensor<Dim>::size; ++c) lanes.stress[c][l] = p.stress[k].c[c];

@@ -17,6 +17,9 @@
 /// the thermal strain the packed law cannot see (out-of-plane axes in 1D/2D) after it.
 /// TLMPM: the grid is the reference configuration; grad T = F^-T grad_0 T and the heat flow uses the
 /// pulled-back flux J F^-1 q with the reference volume (the nominal flux, like P for the force).
+/// Axisymmetric (Coords): the same equations with the particles' ring masses and volumes (so capacity and
+/// conductance are r-weighted; a scalar field has no hoop term), J with F_tt, face fluxes per unit area of the
+/// revolved face, and the hoop rate joins the thermal expansion (axisymmetric.hpp).
 
 #include <tbb/parallel_for.h>
 
@@ -26,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/axisymmetric.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/field_keys.hpp"
 #include "mpm/module.hpp"
@@ -35,7 +39,8 @@
 
 namespace mpm::thermal {
 
-/// Nodes of one face of the grid box with their tributary areas (lengths in 2D, 1 in 1D), for the flux.
+/// Nodes of one face of the grid box with their tributary areas (lengths in 2D, 1 in 1D; the revolved face's
+/// in axisymmetric coordinates), for the flux.
 struct FaceNodes {
   std::vector<Index> node;
   std::vector<Real> area;  ///< m^2 (m in 2D, 1 in 1D)
@@ -50,7 +55,7 @@ struct ConductionSetup {
   bool total_lagrangian = false;                ///< TLMPM: weights at the reference positions
 };
 
-template <int Dim, class Shape>
+template <int Dim, class Shape, class Coords = CartesianCoordinates>
 class HeatConduction final : public Module<Dim> {
  public:
   HeatConduction(ConductionSetup<Dim> setup, const GridGeometry<Dim>& g)
@@ -144,12 +149,16 @@ class HeatConduction final : public Module<Dim> {
       const auto& dT = increment(ctx.bodies[b].particles);
       for (std::size_t i = 0; i < L.size(); ++i)
         for (int d = 0; d < Dim; ++d) L[i](d, d) -= alpha * dT[i] / ctx.dt;
+      if constexpr (Coords::axisymmetric) {  // the hoop strain expands freely too
+        const axisym::HoopFields hoop = axisym::hoop_fields(ctx.bodies[b].particles);
+        for (std::size_t i = 0; i < L.size(); ++i) hoop.rate[i] -= alpha * dT[i] / ctx.dt;
+      }
     }
   }
   /// The thermal strain the in-plane velocity gradient cannot carry: with eps^T = alpha dT I in 3D, the
   /// linear law gives lambda tr(eps^T) over all three axes and 2 mu eps^T on the out-of-plane ones.
   void after_stress(StepContext<Dim>& ctx) override {
-    if constexpr (Dim < 3) {
+    if constexpr (Dim < 3 && !Coords::axisymmetric) {  // axisymmetric: L_tt carried the hoop part
       for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
         const auto& tb = setup_.bodies[b];
         if (tb.expansion == 0) continue;
@@ -170,13 +179,9 @@ class HeatConduction final : public Module<Dim> {
     const int layer = face % 2 == 0 ? 0 : g.nodes[axis] - 1;
     FaceNodes f;
     for (Index n = 0; n < g.node_count(); ++n) {
-      const auto ijk = g.node_indices(n);
-      if (ijk[axis] != layer) continue;
-      Real area = 1;
-      for (int d = 0; d < Dim; ++d)
-        if (d != axis) area *= (ijk[d] == 0 || ijk[d] == g.nodes[d] - 1) ? 0.5 * g.h[d] : g.h[d];
+      if (g.node_indices(n)[axis] != layer) continue;
       f.node.push_back(n);
-      f.area.push_back(area);
+      f.area.push_back(axisym::face_node_area(g, n, axis));  // revolved face when axisymmetric
     }
     return f;
   }
@@ -228,6 +233,7 @@ class HeatConduction final : public Module<Dim> {
       const VecU<Dim>* x = positions(p);
       const auto& T = p.field(mpm::keys::temperature);
       const auto& q = p.field(keys::heat_flux<Dim>);
+      [[maybe_unused]] const Real* hoop = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
       // gamma* per particle, evaluated serially (an Expression is not thread-safe), only when it varies
       if (heat_flow && !constant_source) {
         gamma_.resize(p.size());
@@ -238,7 +244,7 @@ class HeatConduction final : public Module<Dim> {
         }
       }
       for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
-        Stencil<Dim, Shape> st;
+        axisym::StencilFor<Dim, Shape, Coords> st;
         const ParticleDomain<Dim, Shape> domain(p);
         for (Index k = 0; k < count; ++k) {
           const Index i = index[k];
@@ -250,7 +256,8 @@ class HeatConduction final : public Module<Dim> {
           }
           if (!heat_flow) continue;
           const Mat<Dim> F = p.F[i];
-          const Real J = F.determinant();
+          Real J = F.determinant();
+          if constexpr (Coords::axisymmetric) J *= hoop[i];
           // current volume and flux; TLMPM: reference volume and nominal flux J F^-1 q
           Real V = p.volume0[i] * J;
           Vec<Dim> qv = q[i];
@@ -285,7 +292,7 @@ class HeatConduction final : public Module<Dim> {
     std::vector<Real> held;
     for (const auto& r : region_) held.push_back(r(0, 0, 0, t1));
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
-      Stencil<Dim, Shape> st;
+      axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index i = r.begin(); i != r.end(); ++i) {
         st.compute(x[i], g, domain(i));
@@ -308,7 +315,7 @@ class HeatConduction final : public Module<Dim> {
       const VecU<Dim>* x = positions(p);
       const Mat<Dim> k = setup_.bodies[b].conductivity;
       tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
-        Stencil<Dim, Shape> st;
+        axisym::StencilFor<Dim, Shape, Coords> st;
         const ParticleDomain<Dim, Shape> domain(p);
         for (Index i = r.begin(); i != r.end(); ++i) {
           st.compute(x[i], g, domain(i));
