@@ -4,7 +4,8 @@
 // runner tests/verification/taylor_anvil.hpp, so the numbers are those the test and the example use.
 //
 //   bench_taylor [--scheme tlmpm|musl|usl] [--shape linear|cubic_bspline] [--h 0.25e-3] [--ppc N]
-//                [--cfl 0.5] [--C 0.013] [--threads 1] [--output DIR] [--csv FILE] [--print-scene]
+//                [--cfl 0.5] [--C 0.013] [--axisymmetric] [--threads 1] [--output DIR] [--csv FILE] [--print-scene]
+// --axisymmetric: the same rod as a 2D axisymmetric run (issue 16; examples/16_axisymmetric_taylor).
 // --print-scene writes the scene file of that configuration (for `mpm run`) instead of running.
 // Defaults: the full case of the review, TLMPM with hats, h = 0.25 mm (74,052 particles), one thread.
 #include <tbb/global_control.h>
@@ -52,9 +53,11 @@ int main(int argc, char** argv) {
         csv = value();
       else if (a == "--print-scene")
         print_scene = true;
+      else if (a == "--axisymmetric")
+        spec.axisymmetric = true;
       else if (a == "-h" || a == "--help") {
         std::cout << "usage: bench_taylor [--scheme tlmpm|musl|usl] [--shape linear|cubic_bspline] [--h M] [--ppc N] "
-                     "[--cfl F] [--C C] [--threads N] [--output DIR] [--csv FILE] [--print-scene]\n";
+                     "[--cfl F] [--C C] [--axisymmetric] [--threads N] [--output DIR] [--csv FILE] [--print-scene]\n";
         return 0;
       } else
         throw std::invalid_argument("unknown option " + a);
@@ -69,8 +72,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-  std::fprintf(stderr, "Taylor anvil: %s/%s, h = %g mm, cfl %g, C = %g, %d thread(s)...\n", spec.scheme.c_str(),
-               spec.shape_function.c_str(), spec.h * 1e3, spec.cfl, spec.strain_rate_coefficient, threads);
+  std::fprintf(stderr, "Taylor anvil%s: %s/%s, h = %g mm, cfl %g, C = %g, %d thread(s)...\n",
+               spec.axisymmetric ? " (axisymmetric)" : "", spec.scheme.c_str(), spec.shape_function.c_str(),
+               spec.h * 1e3, spec.cfl, spec.strain_rate_coefficient, threads);
   const mpm::TaylorResult r = mpm::run_taylor_anvil(spec);
   if (!r.failure.empty()) std::fprintf(stderr, "stopped: %s\n", r.failure.c_str());
   std::printf(

@@ -203,6 +203,7 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
       candidates_.push_back(I);
     }
   }
+  if (settings_.onset == Onset::particle_gap) plane_reach(g);
   bool pairs = false;
   for (const Index I : candidates_) pairs |= (is_candidate_[I] & body_pair) != 0;
   if (!pairs) return;
@@ -252,6 +253,33 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
   for (int k = 0; k < body_count_; ++k) {
     gap_upper_[k].assign(extent_[k].size(), -std::numeric_limits<Real>::infinity());
     passes_->extents(bodies_[k], g, is_candidate_.data(), pair_normal_.data(), -1, gap_upper_[k]);
+  }
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::plane_reach(const GridGeometry<Dim>& g) {
+  const std::size_t planes = settings_.planes.size();
+  if (planes == 0) return;
+  const Index nodes = g.node_count();
+  plane_flag_.assign(nodes, 0);
+  plane_normal_.assign(nodes, VecU<Dim>::Zero());
+  plane_reach_.resize(planes * body_count_);
+  for (std::size_t P = 0; P < planes; ++P) {
+    const Vec<Dim> n = settings_.planes[P].normal;
+    std::vector<Index> behind;
+    for (const Index I : candidates_)
+      if ((is_candidate_[I] & behind_plane) && (g.node_position(g.node_indices(I)) - plane_point_[P]).dot(n) <= 0) {
+        plane_flag_[I] = 1;  // the bit extents() scans
+        plane_normal_[I] = -n;
+        behind.push_back(I);
+      }
+    for (int k = 0; k < body_count_; ++k) {
+      auto& reach = plane_reach_[P * body_count_ + k];
+      reach.assign(nodes, -std::numeric_limits<Real>::infinity());
+      if (rigid_of_[k] < 0 && !behind.empty())
+        passes_->extents(bodies_[k], g, plane_flag_.data(), plane_normal_.data(), 1, reach);
+    }
+    for (const Index I : behind) plane_flag_[I] = 0;
   }
 }
 
@@ -406,11 +434,16 @@ bool MultiVelocityContact<Dim>::correct_planes(const CorrectionPass& pass, Index
   for (std::size_t P = 0; P < settings_.planes.size(); ++P) {
     const auto& plane = settings_.planes[P];
     if ((x - plane_point_[P]).dot(plane.normal) > 0) continue;
-    for (const int k : present)
-      if (rigid_of_[k] < 0)
-        corrected = apply_correction(pass, I, k, body_count_ + static_cast<int>(P), pass.plane_velocity[P],
-                                     -plane.normal, plane.friction) ||
-                    corrected;
+    for (const int k : present) {
+      if (rigid_of_[k] >= 0) continue;
+      // particle_gap: only where the body's particles reach the plane (surface = centre - half the size along n)
+      if (settings_.onset == Onset::particle_gap &&
+          !(plane_reach_[P * body_count_ + k][I] >= -Vec<Dim>(plane_point_[P]).dot(plane.normal)))
+        continue;
+      corrected = apply_correction(pass, I, k, body_count_ + static_cast<int>(P), pass.plane_velocity[P], -plane.normal,
+                                   plane.friction) ||
+                  corrected;
+    }
   }
   return corrected;
 }

@@ -129,4 +129,47 @@ AxisymmetricResult run_cylinder_cooling(const AxisymmetricSpec& s) {
       });
 }
 
+namespace {
+
+CaseRun case_run(const AxisymmetricResult& r) {
+  CaseRun run;
+  run.error = r.error;
+  run.failure = r.failure;
+  run.wall_seconds = r.wall_seconds;
+  run.steps = r.steps;
+  run.particles = r.particles;
+  run.h = r.h;
+  return run;
+}
+
+}  // namespace
+
+void add_axisymmetric_cases(std::vector<VerificationCase>& list, bool quick, int refinements) {
+  std::vector<int> ladder{8, 16, 32};
+  if (quick) ladder.resize(1);
+  for (int r = 0; !quick && r < refinements; ++r) ladder.push_back(2 * ladder.back());
+  for (const std::string scheme : {"usl", "musl", "usf", "tlmpm"})
+    for (const std::string shape : {"linear", "quadratic_bspline", "cubic_bspline", "cpgimp"})
+      add_case(list, "radial_vibration_axisym", 2,
+               "first root of x J0(x)/J1(x) = (1 - 2 nu)/(1 - nu), period 2 pi R / (x c_L) (Graff 1975, §8.2)",
+               "|period - exact| / exact (-)", scheme, shape, ladder, [scheme, shape](int n) {
+                 AxisymmetricSpec s;
+                 s.scheme = scheme;
+                 s.shape_function = shape;
+                 s.cells = n;
+                 return case_run(run_radial_vibration(s));
+               });
+#ifdef MPM_WITH_THERMAL
+  for (const std::string shape : {"linear", "cubic_bspline", "cpgimp"})
+    add_case(list, "cylinder_cooling_axisym", 2, "Bessel series, Carslaw & Jaeger 1959 §7.4 (alpha t / R^2 = 0.2)",
+             "|T_centre - exact| / exact (-)", "musl", shape, ladder, [shape](int n) {
+               AxisymmetricSpec s;
+               s.shape_function = shape;
+               s.cells = n;
+               s.cfl = 0.8;
+               return case_run(run_cylinder_cooling(s));
+             });
+#endif
+}
+
 }  // namespace mpm::verification

@@ -13,6 +13,9 @@
 ///   (Carslaw & Jaeger, Conduction of Heat in Solids, 1959, §7.4 eq. 4), at alpha t / R^2 = 0.2.
 
 #include <string>
+#include <vector>
+
+#include "catalogue.hpp"
 
 namespace mpm::verification {
 
@@ -40,5 +43,10 @@ double cylinder_cooling_centre(double tau);
 
 AxisymmetricResult run_radial_vibration(const AxisymmetricSpec& spec);
 AxisymmetricResult run_cylinder_cooling(const AxisymmetricSpec& spec);
+
+/// The catalogue's families: `radial_vibration_axisym` (every scheme and axisymmetric shape function; error the
+/// relative period error) and, with the thermal module, `cylinder_cooling_axisym` (MUSL; the relative error of
+/// the centre temperature). Resolution = cells across the radius.
+void add_axisymmetric_cases(std::vector<VerificationCase>& list, bool quick, int refinements);
 
 }  // namespace mpm::verification

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "axisymmetric_cases.hpp"
 #include "mms.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/scene_loader.hpp"
@@ -193,6 +194,7 @@ std::vector<std::pair<std::string, std::string>> methods(int dimension) {
 std::vector<VerificationCase> catalogue(bool quick, int refinements) {
   std::vector<VerificationCase> list;
   add_elastic_cases(list, quick, refinements);
+  add_axisymmetric_cases(list, quick, refinements);
   // Optional modules register their cases here, one explicit call each (see catalogue.hpp).
 #ifdef MPM_WITH_FLUIDS
   add_fluids_cases(list, quick, refinements);

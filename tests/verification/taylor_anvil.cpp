@@ -30,11 +30,12 @@ struct Shape {
 };
 
 /// Extents of the particle centres: axial span, largest diameter, largest diameter in the band
-/// |z - 0.2 L0| < h/2 (0 if the band is empty).
-Shape centre_extents(const ParticleSet<3>& p, double h) {
+/// |z - 0.2 L0| < h/2 (0 if the band is empty). 3D: axis z; axisymmetric 2D: r = x, z = y.
+template <int Dim>
+Shape centre_extents(const ParticleSet<Dim>& p, double h) {
   double z_min = 1e300, z_max = -1e300, r_max = 0, r_band = 0;
   for (Index i = 0; i < p.size(); ++i) {
-    const double z = p.x[i][2], r = std::hypot(p.x[i][0], p.x[i][1]);
+    const double z = p.x[i][Dim - 1], r = Dim == 3 ? std::hypot(p.x[i][0], p.x[i][1]) : std::abs(p.x[i][0]);
     z_min = std::min(z_min, z);
     z_max = std::max(z_max, z);
     r_max = std::max(r_max, r);
@@ -50,15 +51,7 @@ std::string taylor_anvil_scene(const TaylorSpec& s) {
   const int ppc = s.particles_per_cell > 0 ? s.particles_per_cell : (tl ? 1 : 2);
   const double half = tl ? 4e-3 : 8e-3;
   const double height = (std::ceil(L0 / s.h - 1e-9) + (tl ? 0 : 1)) * s.h;  // whole cells above the rod
-  return fmt::format(
-      "# Taylor anvil (review 6.3.1, Table 5): OFHC copper, L0 = 25.4 mm, D0 = 7.6 mm, 190 m/s onto a rigid\n"
-      "# frictionless wall at z = 0. Written by bench_taylor --print-scene (tests/verification/taylor_anvil.cpp).\n"
-      "dimension: 3\n"
-      "grid:\n"
-      "  origin: [{0:.6g}, {0:.6g}, 0]\n"
-      "  extent: [{1:.6g}, {1:.6g}, {2:.6g}]\n"
-      "  cell_size: {3:.6g}\n"
-      "  boundary: {{z_min: slip}}\n"
+  const std::string material =
       "materials:\n"
       "  copper:\n"
       "    model: johnson_cook\n"
@@ -67,32 +60,76 @@ std::string taylor_anvil_scene(const TaylorSpec& s) {
       "    poisson_ratio: 0.31\n"
       "    yield_stress: 65.0e6           # A, Pa\n"
       "    hardening_coefficient: 356.0e6  # B, Pa\n"
-      "    hardening_exponent: 0.37        # n\n"
-      "    strain_rate_coefficient: {4:g}  # C (reference_strain_rate: 1/s)\n"
+      "    hardening_exponent: 0.37        # n\n" +
+      fmt::format("    strain_rate_coefficient: {:g}  # C (reference_strain_rate: 1/s)\n", s.strain_rate_coefficient) +
       "    bulk_sound_speed: 3933          # c0, m/s (Mie-Gruneisen)\n"
       "    hugoniot_slope: 1.5             # S\n"
-      "    gruneisen_gamma: 0              # Gamma0\n"
-      "bodies:\n"
-      "  - name: rod\n"
-      "    material: copper\n"
-      "    shape: {{type: cylinder, center: [0, 0, 0], radius: 3.8e-3, length: 25.4e-3, axis: z}}\n"
-      "    particles_per_cell: {5}\n"
-      "    velocity: [0, 0, -190]\n"
+      "    gruneisen_gamma: 0              # Gamma0\n";
+  const std::string solver_output = fmt::format(
       "solver:\n"
-      "  scheme: {6}\n"
-      "  shape_function: {7}\n"
-      "  cfl: {8:g}\n"
-      "  end_time: {9:g}\n"
+      "  scheme: {}\n"
+      "  shape_function: {}\n"
+      "  cfl: {:g}\n"
+      "  end_time: {:g}\n"
       "output:\n"
       "  interval: 10.0e-6\n"
       "  fields: [velocity, plastic_strain, plastic_strain_rate, pressure, von_mises_stress, displacement]\n",
-      -half, 2 * half, height, s.h, s.strain_rate_coefficient, ppc, s.scheme, s.shape_function, s.cfl, s.max_time);
+      s.scheme, s.shape_function, s.cfl, s.max_time);
+  if (s.axisymmetric)
+    return fmt::format(
+               "# Taylor anvil (review 6.3.1, Table 5) as an axisymmetric run (x = r, y = z): OFHC copper, L0 = 25.4 "
+               "mm,\n"
+               "# D0 = 7.6 mm, 190 m/s onto a rigid frictionless wall at z = 0. Written by bench_taylor "
+               "--axisymmetric\n"
+               "# --print-scene (tests/verification/taylor_anvil.cpp).\n"
+               "dimension: 2\n"
+               "grid:\n"
+               "  coordinates: axisymmetric\n"
+               "  extent: [{0:.6g}, {1:.6g}]\n"
+               "  cell_size: {2:.6g}\n"
+               "  boundary: {{y_min: slip}}\n",
+               half, height, s.h) +
+           material +
+           fmt::format(
+               "bodies:\n"
+               "  - name: rod\n"
+               "    material: copper\n"
+               "    shape: {{type: box, min: [0, 0], max: [3.8e-3, 25.4e-3]}}\n"
+               "    particles_per_cell: {}\n"
+               "    velocity: [0, -190]\n",
+               ppc) +
+           solver_output;
+  return fmt::format(
+             "# Taylor anvil (review 6.3.1, Table 5): OFHC copper, L0 = 25.4 mm, D0 = 7.6 mm, 190 m/s onto a rigid\n"
+             "# frictionless wall at z = 0. Written by bench_taylor --print-scene "
+             "(tests/verification/taylor_anvil.cpp).\n"
+             "dimension: 3\n"
+             "grid:\n"
+             "  origin: [{0:.6g}, {0:.6g}, 0]\n"
+             "  extent: [{1:.6g}, {1:.6g}, {2:.6g}]\n"
+             "  cell_size: {3:.6g}\n"
+             "  boundary: {{z_min: slip}}\n",
+             -half, 2 * half, height, s.h) +
+         material +
+         fmt::format(
+             "bodies:\n"
+             "  - name: rod\n"
+             "    material: copper\n"
+             "    shape: {{type: cylinder, center: [0, 0, 0], radius: 3.8e-3, length: 25.4e-3, axis: z}}\n"
+             "    particles_per_cell: {}\n"
+             "    velocity: [0, 0, -190]\n",
+             ppc) +
+         solver_output;
 }
 
-TaylorResult run_taylor_anvil(const TaylorSpec& spec) {
+namespace {
+
+template <int Dim>
+TaylorResult run(const TaylorSpec& spec) {
+  constexpr int axis = Dim - 1;
   app::register_modules();
   TaylorResult r;
-  auto sim = app::build_simulation<3>(parse_scene(taylor_anvil_scene(spec), "taylor_anvil.yaml"));
+  auto sim = app::build_simulation<Dim>(parse_scene(taylor_anvil_scene(spec), "taylor_anvil.yaml"));
   auto& body = sim->bodies()[0];
   r.particles = body.particles.size();
   const Shape initial = centre_extents(body.particles, spec.h);
@@ -106,7 +143,7 @@ TaylorResult run_taylor_anvil(const TaylorSpec& spec) {
   auto axial_momentum = [&] {
     double m = 0;
     const auto& p = body.particles;
-    for (Index i = 0; i < p.size(); ++i) m += p.mass[i] * p.v[i][2];
+    for (Index i = 0; i < p.size(); ++i) m += p.mass[i] * p.v[i][axis];
     return m;
   };
   const double k0 = kinetic();
@@ -138,11 +175,15 @@ TaylorResult run_taylor_anvil(const TaylorSpec& spec) {
   body.material->append_output("plastic_strain", body.particles, eps);
   for (double e : eps) r.max_plastic_strain = std::max(r.max_plastic_strain, e);
   if (!spec.output_directory.empty()) {
-    OutputWriter<3> writer(spec.output_directory, "particles",
-                           {"velocity", "plastic_strain", "pressure", "von_mises_stress"}, false, 0);
+    OutputWriter<Dim> writer(spec.output_directory, "particles",
+                             {"velocity", "plastic_strain", "pressure", "von_mises_stress"}, false, 0);
     writer.write(*sim);
   }
   return r;
 }
+
+}  // namespace
+
+TaylorResult run_taylor_anvil(const TaylorSpec& spec) { return spec.axisymmetric ? run<2>(spec) : run<3>(spec); }
 
 }  // namespace mpm

@@ -11,6 +11,7 @@
 ///   tlmpm: just encloses the cylinder, x, y in [-4, 4] mm, z in [0, ceil(L0/h) h] (25.5 mm and the review's
 ///          74,052 particles at h = 0.25 mm, 1 particle per cell);
 ///   usl/musl: covers the deformed shape, x, y in [-8, 8] mm, z up to one more cell (8 particles per cell).
+///   axisymmetric: the same extents in r (from the axis) and z, particles per cell per axis as in 3D.
 ///
 /// The run stops when the kinetic energy falls below 1% of its initial value, or when the axial momentum
 /// reaches zero (the rod has stopped; with UL-MPM the elastic ringing that remains keeps about 1.2% of the
@@ -36,6 +37,9 @@ struct TaylorSpec {
   double strain_rate_coefficient = 0.013;  ///< Johnson-Cook C (Table 5; Karamelo's input uses 0)
   double max_time = 80e-6;                 ///< s, the run stops here at the latest (the scene's end_time)
   std::string output_directory;            ///< non-empty: write the final state there (ParaView)
+  /// The same rod as a 2D axisymmetric run (`grid.coordinates: axisymmetric`, x = r in [0, 4 or 8 mm], y = z):
+  /// the box r <= R0, 0 <= z <= L0 of the same cell size and particles per cell (issue 16).
+  bool axisymmetric = false;
 };
 
 struct TaylorResult {

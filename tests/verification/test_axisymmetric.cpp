@@ -1,6 +1,7 @@
 // Axisymmetric verification (issue 16; runners and references in axisymmetric_cases.hpp): the radial vibration of
 // a long elastic cylinder against its Bessel-root frequency, for every explicit scheme and axisymmetric shape
-// function, with the error falling on refinement.
+// function, with the error falling on refinement; the cooling of a long cylinder (thermal module) against the
+// Bessel series, converging at order about 2.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -51,6 +52,7 @@ TEST(RadialVibration, ErrorFallsOnRefinement) {
   }
 }
 
+#ifdef MPM_WITH_THERMAL
 // Issue 16: the centre temperature of a cooling cylinder within 1% of the Bessel series, converging at order 2.
 TEST(CylinderCooling, CentreTemperatureAgainstBesselSeries) {
   // The series itself, against scipy (jn_zeros(0, 200), j1): 0.5014868606073982 at tau = 0.2.
@@ -77,6 +79,8 @@ TEST(CylinderCooling, CentreTemperatureAgainstBesselSeries) {
     EXPECT_LT(rate, 2.4) << shape;
   }
 }
+
+#endif
 
 }  // namespace
 }  // namespace mpm::verification

@@ -83,6 +83,8 @@ class MultiVelocityContact final : public Module<Dim> {
 
  private:
   void find_candidates(StepContext<Dim>& ctx);
+  /// Onset particle_gap with planes: plane_reach_ of every deformable body at the candidate nodes behind each plane.
+  void plane_reach(const GridGeometry<Dim>& g);
   void body_velocities(StepContext<Dim>& ctx, GridStage stage);
   /// What one correction pass (at one grid-velocity stage) reads: the nodal velocity it corrects, whether the
   /// forces of the step are recorded (the `updated` stage), and the planes' velocities at t + dt.
@@ -132,6 +134,11 @@ class MultiVelocityContact final : public Module<Dim> {
   std::vector<std::vector<Real>> extent_;         ///< per body, per node: max of x.n + half size (gap)
   std::vector<std::vector<Real>> gap_upper_;      ///< per body, per node: max of -x.n + half size (gap)
   std::vector<VecU<Dim>> pair_normal_;            ///< per node: unit normal from the lower to the higher body
+  /// Onset particle_gap: per (plane, body), per node behind the plane: max over the body's particles of
+  /// -x_p.n + half their size; the body touches the plane there when it is >= -point.n.
+  std::vector<std::vector<Real>> plane_reach_;
+  std::vector<std::uint8_t> plane_flag_;  ///< scratch of plane_reach: the nodes behind the plane being scanned
+  std::vector<VecU<Dim>> plane_normal_;   ///< scratch of plane_reach: -n of that plane at those nodes
   // Forces
   std::vector<Vec<Dim>> impulse_;  ///< per (body, other slot): impulse since the last CSV row, N s
   std::vector<Real> impulse_n_;
