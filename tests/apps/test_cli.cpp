@@ -69,6 +69,23 @@ TEST(Cli, CheckValidScene) {
   fs::remove_all(dir);
 }
 
+// `mpm check` names the axisymmetric mode and says what its numbers are per (issue 16).
+TEST(Cli, CheckNamesTheAxisymmetricMode) {
+  const auto dir = scratch("check_axisymmetric");
+  std::ofstream(dir / "scene.yaml")
+      << "dimension: 2\n"
+         "grid: {coordinates: axisymmetric, extent: [1, 1], cell_size: 0.1}\n"
+         "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}\n"
+         "bodies: [{material: m, shape: {type: disk, center: [0, 0.5], radius: 0.3}}]\n"
+         "solver: {cfl: 0.5, end_time: 0.01}\n";
+  const auto r = mpm("check " + (dir / "scene.yaml").string(), dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("2D axisymmetric (x = r, y = z; masses, energies and forces per full revolution)"),
+            std::string::npos)
+      << r.out;
+  fs::remove_all(dir);
+}
+
 #if defined(MPM_WITH_PLASTICITY) && defined(MPM_WITH_FLUIDS)
 // Every scene shipped in examples/ is valid (built, not run), so that a change of the scene format cannot
 // leave an example behind.

@@ -171,6 +171,27 @@ TEST(Axisymmetric, FaceNodeAreasAddUpToTheRevolvedFaces) {
   EXPECT_EQ(axis, 0);
 }
 
+// Face tractions act per unit area of the revolved face (issue 16): on a body filling the grid, a radial traction
+// t_r on the face r = R and an axial t_z on the face z = H push with 2 pi R H t_r and pi R^2 t_z, so one step from
+// rest (zero stress: the internal forces add to nothing) gives the particles exactly that momentum times dt.
+TEST(Axisymmetric, TractionsActOnTheRevolvedFaceAreas) {
+  const Real R = 0.6, H = 1.0, t_r = 2e3, t_z = -3e3, dt = 1e-4;
+  for (const char* shape : {"linear", "cubic_bspline"}) {
+    auto sim = test::simulation_from_yaml<2>(fmt::format(R"(dimension: 2
+grid: {{coordinates: axisymmetric, extent: [0.6, 1.0], cell_size: 0.1,
+       boundary: {{x_max: {{traction: [{}, 0]}}, y_max: {{traction: [0, {}]}}}}}}
+materials: {{steel: {{model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}}}
+bodies: [{{material: steel, shape: {{type: box, min: [0, 0], max: [0.6, 1.0]}}}}]
+solver: {{scheme: usl, shape_function: {}, dt: 1.0e-4, end_time: 1}}
+)",
+                                                         t_r, t_z, shape));
+    sim->advance(dt);
+    const auto momentum = sim->energy().momentum;
+    EXPECT_NEAR(momentum[0], dt * t_r * 2 * pi * R * H, 1e-12 * dt * t_r * 2 * pi * R * H) << shape;
+    EXPECT_NEAR(momentum[1], dt * t_z * pi * R * R, 1e-12 * std::abs(dt * t_z * pi * R * R)) << shape;
+  }
+}
+
 // The .vtu of an axisymmetric run names the components of the stress, vectors and 3x3 tensors in cylindrical axes.
 TEST(Axisymmetric, OutputNamesCylindricalComponents) {
   auto sim = test::simulation_from_yaml<2>(cylinder_scene("musl", "linear", 2, "[0, 0]"));

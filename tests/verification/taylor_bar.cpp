@@ -16,7 +16,7 @@ namespace mpm {
 namespace {
 
 constexpr double R0 = 3.2e-3, L0 = 32.4e-3;
-constexpr double E = 116.9e9, nu = 0.35, rho = 8930, yield = 0.4e9, hardening = 0.1e9;
+constexpr double E = 116.9e9, nu = 0.35;  // the scene text gives rho = 8930 kg/m^3, sigma_Y = 0.4 GPa, H = 0.1 GPa
 
 /// Axial extent and largest radius of the particle centres (r = x, z = y).
 std::pair<double, double> extents(const ParticleSet<2>& p) {
@@ -33,20 +33,19 @@ std::string material(const std::string& model) {
   if (model == "hencky_j2")  // K = E / (3 (1 - 2 nu)), G = E / (2 (1 + nu))
     return fmt::format(
         "    model: hencky_j2\n"
-        "    density: {}          # kg/m^3\n"
-        "    bulk_modulus: {:.6g}  # Pa, E / (3 (1 - 2 nu)), E = 116.9 GPa, nu = 0.35\n"
-        "    shear_modulus: {:.6g} # Pa, E / (2 (1 + nu))\n"
-        "    yield_stress: {:g}       # Pa\n"
-        "    hardening_modulus: {:g}  # Pa, linear\n",
-        rho, E / (3 * (1 - 2 * nu)), E / (2 * (1 + nu)), yield, hardening);
-  return fmt::format(
-      "    model: {}\n"
-      "    density: {}            # kg/m^3\n"
-      "    youngs_modulus: {:g}  # Pa\n"
-      "    poisson_ratio: {}\n"
-      "    yield_stress: {:g}       # Pa\n"
-      "    hardening_modulus: {:g}  # Pa, linear\n",
-      model, rho, E, nu, yield, hardening);
+        "    density: 8930             # kg/m^3\n"
+        "    bulk_modulus: {:.6g}e9   # Pa, E / (3 (1 - 2 nu)) with E = 116.9 GPa, nu = 0.35\n"
+        "    shear_modulus: {:.6g}e9  # Pa, E / (2 (1 + nu))\n"
+        "    yield_stress: 0.4e9       # Pa\n"
+        "    hardening_modulus: 0.1e9  # Pa, linear\n",
+        E / (3 * (1 - 2 * nu)) / 1e9, E / (2 * (1 + nu)) / 1e9);
+  return "    model: " + model +
+         "\n"
+         "    density: 8930             # kg/m^3\n"
+         "    youngs_modulus: 116.9e9   # Pa\n"
+         "    poisson_ratio: 0.35\n"
+         "    yield_stress: 0.4e9       # Pa\n"
+         "    hardening_modulus: 0.1e9  # Pa, linear\n";
 }
 
 }  // namespace

@@ -5,8 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "axisymmetric_cases.hpp"
+#include "mpm/app/modules.hpp"
+#include "mpm/app/scene_builder.hpp"
+#include "mpm/scene_loader.hpp"
 
 namespace mpm::verification {
 namespace {
@@ -80,6 +84,26 @@ TEST(CylinderCooling, CentreTemperatureAgainstBesselSeries) {
   }
 }
 
+// Heat fluxes act per unit area of the revolved face (issue 16): a flux q into the mantle r = R of a cylinder whose
+// other faces are insulated raises its heat content sum m c (T - T0) by q 2 pi R H t exactly (conduction only
+// moves heat inside, review §5.3.2).
+TEST(CylinderCooling, FaceFluxEntersThroughTheRevolvedArea) {
+  const double q = 50, R = 1, H = 0.25, end = 0.05;
+  app::register_modules();
+  auto sim = app::build_simulation<2>(parse_scene(R"(dimension: 2
+grid: {coordinates: axisymmetric, extent: [1, 0.25], cell_size: 0.0625}
+materials: {m: {model: linear_elastic, density: 1, youngs_modulus: 1.0e-9, poisson_ratio: 0, specific_heat: 1,
+                thermal_conductivity: 1}}
+bodies: [{material: m, shape: {type: box, min: [0, 0], max: [1, 0.25]}}]
+solver: {scheme: musl, cfl: 0.8, end_time: 0.05}
+thermal: {initial_temperature: 0, boundary: {x_max: {flux: -50}}}
+)",
+                                                  "flux.yaml"));
+  const double e0 = sim->energy().thermal;
+  sim->run();
+  EXPECT_NEAR(sim->time(), end, 1e-9);
+  EXPECT_NEAR(sim->energy().thermal - e0, q * 2 * std::numbers::pi * R * H * end, 1e-10 * q * R * H * end);
+}
 #endif
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "taylor_anvil.hpp"
 #include "taylor_bar.hpp"
@@ -69,6 +71,33 @@ TEST(LoveSulskyTaylorBar, ExplicitSchemesWithinTwoPercentOfFiniteElements) {
     EXPECT_LT(r.energy_error, 0.01);      // kinetic + stored + plastic work
     EXPECT_LT(r.kinetic_fraction, 0.01);  // at rest by 80 us (the paper's observation)
   }
+}
+
+// The examples' scene files are the runners' scenes (so `mpm run` on them gives what the benchmarks measure);
+// regenerate them with bench_taylor --axisymmetric --print-scene [...] and bench_taylor_bar --print-scene [...].
+TEST(AxisymmetricTaylorAnvil, ExampleScenesAreTheRunnerScenes) {
+  const auto read = [](const std::string& path) {
+    std::ifstream in(std::string(MPM_SOURCE_DIR) + "/examples/" + path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  TaylorSpec tl;
+  tl.h = 0.25e-3;
+  tl.axisymmetric = true;
+  EXPECT_EQ(read("16_axisymmetric_taylor/tlmpm.yaml"), taylor_anvil_scene(tl));
+  TaylorSpec musl = tl;
+  musl.scheme = "musl";
+  musl.h = 0.5e-3;
+  EXPECT_EQ(read("16_axisymmetric_taylor/musl.yaml"), taylor_anvil_scene(musl));
+  musl.shape_function = "cubic_bspline";
+  EXPECT_EQ(read("16_axisymmetric_taylor/bsmpm.yaml"), taylor_anvil_scene(musl));
+  TaylorBarSpec bar;
+  EXPECT_EQ(read("17_love_sulsky_bar/musl.yaml"), taylor_bar_scene(bar));
+  bar.scheme = "tlmpm";
+  bar.particles_per_cell = 1;
+  bar.model = "j2_plasticity";
+  EXPECT_EQ(read("17_love_sulsky_bar/tlmpm.yaml"), taylor_bar_scene(bar));
 }
 
 }  // namespace
