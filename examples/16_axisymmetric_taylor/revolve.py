@@ -76,7 +76,7 @@ if args.picture:
     ax3.scatter(points[:, 0] * 1e3, points[:, 1] * 1e3, points[:, 2] * 1e3, c=np.tile(field, len(angles)), s=1,
                 cmap="viridis", depthshade=False)
     ax3.set_box_aspect((1, 1, np.ptp(z) / max(2 * r.max(), 1e-12)))
-    ax3.view_init(elev=15, azim=-60)
+    ax3.view_init(elev=20, azim=-45)
     ax3.set_axis_off()
     ax3.set_title(f"revolved over {args.angle:g} degrees")
     fig.savefig(args.picture, dpi=80, bbox_inches="tight")
