@@ -217,6 +217,11 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
     } else {
       density_normals<Dim>(bodies_[k], g, candidates_, grad, density);
     }
+    // On the axis of an axisymmetric scene the normal is axial by symmetry; the one-sided stencil there (no
+    // particles at r < 0) would tilt it, and the correction would then push the axis nodes radially.
+    if (g.coordinates == Coordinates::axisymmetric)
+      for (const Index I : candidates_)
+        if (g.node_indices(I)[0] == 0) grad[I][0] = 0;
   }
   for (const Index I : candidates_) {
     if (!(is_candidate_[I] & body_pair)) continue;
