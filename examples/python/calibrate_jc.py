@@ -20,7 +20,7 @@ def main():
     p.add_argument("--target", type=float, default=taylor.EXPERIMENT["final_length"], help="final length, m")
     p.add_argument("--velocity", type=float, default=taylor.EXPERIMENT["velocity"], help="impact velocity, m/s")
     p.add_argument("--h", type=float, default=1e-3, help="cell size, m")
-    p.add_argument("--low", type=float, default=10e6, help="lower bracket of A, Pa")
+    p.add_argument("--low", type=float, default=2e6, help="lower bracket of A, Pa")
     p.add_argument("--high", type=float, default=65e6, help="upper bracket of A, Pa")
     p.add_argument("--tolerance", type=float, default=0.05e-3, help="stop when |L_f - target| is below this, m")
     p.add_argument("--iterations", type=int, default=8, help="at most this many bisection steps")

@@ -97,7 +97,7 @@ class Simulation:
             raise ValueError(f"advance(to=...): expected a finite time in seconds, got {to!r}")
         if to < self.time:
             raise ValueError(f"advance(to={to!r}): the simulation is already at t = {self.time!r} s")
-        self._handle.advance_to(float(to))
+        self._handle.advance_to(float(to))  # polls for Ctrl-C every 0.25 s
 
     def run(self, progress=False, every=1, callback=None, steps=None):
         """Runs to the end time, as ``mpm run`` does (the scene's output: the frames that are due and one

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,13 +79,30 @@ py::dict energy_dict(const EnergyBalance& e) {
   return d;
 }
 
+/// A poll function for the stepping calls: with the interpreter lock, raises KeyboardInterrupt on Ctrl-C (the
+/// signal handler runs only when Python runs), then calls `poll` unless it is None. `poll` must outlive it.
+std::function<void()> python_poll(const py::object& poll) {
+  return [&poll] {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (!poll.is_none()) poll();
+  };
+}
+
 void bind_simulation(py::module_& m) {
   using H = SimulationHandle;
   py::class_<H>(m, "_Simulation")
       .def(py::init(&build), py::arg("scene"), py::arg("threads") = 0, py::arg("output_directory") = "")
       .def_property_readonly("dimension", &H::dimension)
       .def("step", &H::step, py::call_guard<py::gil_scoped_release>())
-      .def("advance_to", &H::advance_to, py::arg("t"), py::call_guard<py::gil_scoped_release>())
+      .def(
+          "advance_to",
+          [](H& h, double t, const py::object& poll, double poll_seconds) {
+            const std::function<void()> check = python_poll(poll);
+            py::gil_scoped_release release;
+            h.advance_to(t, check, poll_seconds);
+          },
+          py::arg("t"), py::arg("poll") = py::none(), py::arg("poll_seconds") = 0.25)
       .def(
           "run",
           [](H& h, std::optional<Index> steps, Index every, const py::object& callback, const py::object& poll,
@@ -102,12 +120,7 @@ void bind_simulation(py::module_& m) {
                 if (stop < 0) throw py::error_already_set();
                 return stop == 1;
               };
-            if (!poll.is_none())
-              control.poll = [&poll] {
-                py::gil_scoped_acquire gil;
-                if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C
-                poll();
-              };
+            control.poll = python_poll(poll);
             py::gil_scoped_release release;
             return h.run(control);
           },

@@ -17,6 +17,23 @@ namespace {
 /// Thrown by run()'s step callback to leave Simulation::run() when the Python callback asks to stop.
 struct StopRequested {};
 
+/// Calls `poll` when `seconds` of wall time have passed since the last call (a clock read per step).
+class Poller {
+ public:
+  Poller(const std::function<void()>& poll, double seconds) : poll_(poll), interval_(seconds) {}
+  void poll_if_due() {
+    if (!poll_ || Clock::now() - last_ < interval_) return;
+    poll_();
+    last_ = Clock::now();
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  const std::function<void()>& poll_;
+  std::chrono::duration<double> interval_;
+  Clock::time_point last_ = Clock::now();
+};
+
 /// The particle fields every body has (ParticleSet's typed members), by the names the stability guard's
 /// report uses; `id` is read-only.
 template <int Dim>
@@ -82,22 +99,23 @@ class SimulationFor final : public SimulationHandle {
     });
   }
 
-  void advance_to(double t) override {
+  void advance_to(double t, const std::function<void()>& poll, double poll_seconds) override {
+    Poller poller(poll, poll_seconds);
     stepping([&] {
       const bool was_finished = sim_->finished();
       while (!sim_->reached(t)) {
         sim_->advance(sim_->time_step_toward(t));
         after_step();
+        poller.poll_if_due();
+        apply_changes();
       }
       if (!was_finished && sim_->finished()) write_final_frame();
     });
   }
 
   bool run(const RunControl& control) override {
-    using Clock = std::chrono::steady_clock;
     bool stopped = false;
-    auto last_poll = Clock::now();
-    const auto poll_interval = std::chrono::duration<double>(control.poll_seconds);
+    Poller poller(control.poll, control.poll_seconds);
     stepping([&] {
       std::optional<Index> last_step;
       if (control.steps) last_step = sim_->step() + *control.steps;
@@ -106,10 +124,7 @@ class SimulationFor final : public SimulationHandle {
             [&](const Simulation<Dim>& s) {
               after_step();
               if (control.callback && s.step() % control.every == 0 && control.callback()) throw StopRequested{};
-              if (control.poll && Clock::now() - last_poll >= poll_interval) {
-                control.poll();
-                last_poll = Clock::now();
-              }
+              poller.poll_if_due();
               apply_changes();  // made by the callback through views, before the next step
             },
             last_step);

@@ -53,8 +53,8 @@ class SimulationHandle {
   // the frames of the scene's output that are due, as `mpm run` does before its first step.
   /// One step toward the end time (landing on it); past the end time, a step of the stable size.
   virtual void step() = 0;
-  /// Steps until time t, the last step landing on t.
-  virtual void advance_to(double t) = 0;
+  /// Steps until time t, the last step landing on t; `poll` (if set) as in RunControl, every `poll_seconds`.
+  virtual void advance_to(double t, const std::function<void()>& poll, double poll_seconds) = 0;
   /// Steps to the end time (or RunControl::steps more steps, or until the callback stops it), writing the
   /// frames that are due and a last frame where it stops, like `mpm run`. Returns whether the callback stopped it.
   virtual bool run(const RunControl& control) = 0;

@@ -42,7 +42,9 @@ message(STATUS "external program: ${app_line} (= mpm run --steps 10)")
 
 if(PYTHON)
   set(ENV{PYTHONPATH} ${prefix}/${PYTHON_DIR})
-  run(${PYTHON} -c "import mpm; print(mpm.__version__, mpm.__file__)")
+  # (no ';' in the arguments: run() passes them on as a CMake list)
+  run(${PYTHON} -c "import mpm
+print(mpm.__version__, mpm.__file__)")
   string(STRIP "${out}" python_line)
   if(NOT python_line MATCHES "^${VERSION} ${prefix}/")
     message(FATAL_ERROR "the installed Python package says '${python_line}', expected version ${VERSION} from ${prefix}")
