@@ -28,7 +28,10 @@ class _Source:
 
     def check(self):
         if self.probe() != self.token:
-            raise StaleViewError(
+            self.fail()
+
+    def fail(self):
+        raise StaleViewError(
                 f"{self.what} is stale: the simulation reordered or moved these values after the view was made "
                 f"(at step {self.step}; now step {self.step_now()}); take a new view with field(name)")
 
@@ -77,9 +80,9 @@ class FieldView(np.ndarray):
     _mpm_source = None
 
     def __array_finalize__(self, obj):
-        # Views of a view share its memory and its check; arrays with their own data (copies) do not.
+        # Views of a view share its memory and its check; arrays with their own data (copies, base None) do not.
         source = getattr(obj, "_mpm_source", None)
-        self._mpm_source = source if source is not None and not self.flags.owndata else None
+        self._mpm_source = source if source is not None and self.base is not None else None
 
     def _check(self):
         if self._mpm_source is not None:
@@ -90,9 +93,14 @@ class FieldView(np.ndarray):
         if s is not None and s.on_write is not None:
             s.on_write()
 
-    def __getitem__(self, index):
-        self._check()
-        return _unwrap(super().__getitem__(index))
+    def __getitem__(self, index):  # the most frequent use: kept short
+        s = self._mpm_source
+        if s is not None and s.probe() != s.token:
+            s.fail()
+        result = np.ndarray.__getitem__(self, index)
+        if type(result) is FieldView and result._mpm_source is None:  # fancy indexing: a copy
+            return result.view(np.ndarray)
+        return result
 
     def __setitem__(self, index, value):
         self._check()

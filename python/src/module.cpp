@@ -34,7 +34,8 @@ py::array array_over(const FieldArray& a, py::handle owner) {
 }
 
 void translate_exceptions() {
-  py::register_exception_translator([](std::exception_ptr p) {
+  // pybind11 takes a function pointer of this exact signature
+  py::register_exception_translator([](std::exception_ptr p) {  // NOLINT(performance-unnecessary-value-param)
     try {
       if (p) std::rethrow_exception(p);
     } catch (const SceneError& e) {
@@ -140,7 +141,7 @@ void bind_simulation(py::module_& m) {
       .def("body_size", &H::body_size)
       .def("particle_fields", &H::particle_fields)
       .def("particle_field",
-           [](py::object self, int body, const std::string& name) {
+           [](const py::object& self, int body, const std::string& name) {
              return array_over(self.cast<H&>().particle_field(body, name), self);
            })
       .def("field_writable",
@@ -168,8 +169,9 @@ void bind_simulation(py::module_& m) {
            [](H& h, const std::string& name) {
              return reinterpret_cast<std::uintptr_t>(h.grid_field(name).storage.data);
            })
-      .def("grid_field",
-           [](py::object self, const std::string& name) { return array_over(self.cast<H&>().grid_field(name), self); });
+      .def("grid_field", [](const py::object& self, const std::string& name) {
+        return array_over(self.cast<H&>().grid_field(name), self);
+      });
 }
 
 }  // namespace

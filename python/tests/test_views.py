@@ -124,3 +124,30 @@ def test_output_fields_are_copies_of_what_the_writer_writes():
     assert vm == pytest.approx(expected, rel=1e-12, abs=1e-15)
     packed = body.field("stress")  # xx yy zz xy in 2D
     assert np.array_equal(s[:, [0, 1, 2, 3]], packed)
+
+
+def test_an_initial_stress_set_before_the_first_step_is_the_initial_state(tmp_path):
+    # A hydrostatic pressure p in one disk: stored energy V0 p^2 / (2 K) with K = E / (3 (1 - 2 nu)) (the linear
+    # elastic energy density J (tr(s)^2 / (18 K) + |dev s|^2 / (4 mu)), J = 1), in mpm.energy and in frame 0 of the
+    # output; the stressed disk then pushes outwards.
+    d = two_disks()
+    d["output"] = {"fields": ["stress"]}
+    sim = mpm.Simulation(mpm.Scene.from_dict(d), output=tmp_path)
+    body = sim.bodies["upper_right"]
+    p, E, nu = 50.0, 1000.0, 0.3
+    body.field("stress")[:, :3] = -p
+    expected = body.field("reference_volume").sum() * p ** 2 / (2 * E / (3 * (1 - 2 * nu)))
+    assert mpm.energy(sim).strain == pytest.approx(expected, rel=1e-12)
+    sim.step()
+    first = (tmp_path / "energy.csv").read_text().splitlines()[1].split(",")
+    assert float(first[3]) == pytest.approx(expected, rel=1e-12)  # strain_energy of frame 0 (t = 0)
+    x, v = body.field("position"), body.field("velocity")
+    outward = ((x - x.mean(axis=0)) * (v - [-0.1, -0.1])).sum(axis=1)
+    assert (outward > 0).mean() > 0.9
+
+
+def test_a_progress_bar_on_the_terminal_line(capsys):
+    sim = sim_of(two_disks(end_time=0.02))
+    sim.run(progress=True)
+    err = capsys.readouterr().err
+    assert err.startswith("\r[") and "100.0%  step 10  t = 0.02 s" in err and err.endswith("\n")
