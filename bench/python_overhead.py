@@ -1,17 +1,18 @@
 """What driving the engine from Python costs (docs/PERFORMANCE.md §8). Not a test: timings depend on the machine.
 
     PYTHONPATH=build/python /usr/bin/python3 bench/python_overhead.py [--build build] [--rounds 3]
-        [--cases 2d_linear_usl,3d_linear_usl] [--quick] [--part run,step,hook,field]
+        [--cases 2d_linear_usl,3d_linear_usl] [--quick] [--part run,step,hook,field] [--steps N] [--threads N]
 
 - run:   `sim.run(steps=N)` against `mpm run --steps N` on the throughput cases of bench_throughput (the scene of
          `bench_throughput --print-scene CASE`, 1e6 particles; --quick: 2.5e5), in alternating rounds. Both time
          only the stepping (the program's "done: ... in X s wall"; Python around sim.run with output=False, the
-         program writing no frame inside its loop either: output.fields is empty and the interval 0).
+         program writing no frame inside its loop either: output.fields is empty and the interval 0), one thread
+         by default (--threads).
 - step:  the cost of one `sim.step()` call from a Python loop beyond the step itself: a loop of N step() calls
-         against sim.run(steps=N) on a 64-particle scene, where the step itself is a few microseconds.
+         against sim.run(steps=N) on a 4-particle scene, where the step itself is a few microseconds.
 - hook:  the cost of a callback that does nothing: sim.run(steps=N, callback=lambda s: None) against
          sim.run(steps=N) on the same small scene, per call, and as a share of a 1e6-particle step.
-- field: Body.field("velocity") on 64 and on 1e6 particles (O(1): no copy), and the check a view adds to an
+- field: Body.field("velocity") on 4 and on 1e6 particles (O(1): no copy), and the check a view adds to an
          element read (v[i] on a view against a plain array).
 """
 
@@ -31,13 +32,13 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
 def small_scene(end_time=1e9):
-    """Two elastic disks of 32 particles each on a 10 x 10 grid (a step takes a few microseconds)."""
-    disk = lambda name, c, v: {"name": name, "material": "m", "shape": {"type": "disk", "center": c, "radius": 0.15},
-                               "particles_per_cell": 2, "velocity": v}
+    """A 1D elastic bar of 4 particles on 4 cells, at rest (a step takes a few microseconds: what is measured
+    around it is the overhead)."""
     return mpm.Scene.from_dict({
-        "dimension": 2, "grid": {"extent": [1, 1], "cell_size": 0.1},
-        "materials": {"m": {"model": "linear_elastic", "density": 1000, "youngs_modulus": 1000, "poisson_ratio": 0.3}},
-        "bodies": [disk("a", [0.3, 0.3], [0.01, 0.01]), disk("b", [0.7, 0.7], [-0.01, -0.01])],
+        "dimension": 1, "grid": {"extent": [1], "cell_size": 0.25},
+        "materials": {"m": {"model": "linear_elastic", "density": 1000, "youngs_modulus": 1000, "poisson_ratio": 0}},
+        "bodies": [{"name": "bar", "material": "m", "shape": {"type": "box", "min": [0.25], "max": [0.75]},
+                    "particles_per_cell": 2}],
         "solver": {"scheme": "musl", "shape_function": "linear", "dt": 1e-4, "end_time": end_time}})
 
 
@@ -53,37 +54,41 @@ def spread(values):
 
 def part_run(args, build):
     print("\n## sim.run() against mpm run (stepping wall time, s)\n")
-    print("| case | particles | steps | mpm run (median, min-max) | sim.run (median, min-max) | Python / program |")
-    print("|---|---|---|---|---|---|")
+    print(f"{args.threads} thread(s), {args.rounds} alternating rounds\n")
+    print("| case | particles | steps | mpm run | sim.run | Python / program (fastest runs) | Python / program "
+          "(median of the rounds) |")
+    print("|---|---|---|---|---|---|---|")
     for case in args.cases.split(","):
         with tempfile.TemporaryDirectory() as tmp:
             path = pathlib.Path(tmp) / f"{case}.yaml"
             path.write_text(throughput_scene(build, case, args.quick))
             scene = mpm.Scene.from_yaml(str(path))
-            # steps: about 2 s per run on 2 threads
-            probe = mpm.Simulation(scene, output=False)
+            # steps: about 3 s per run (a probe of 3 steps after 3 warm-up steps), unless --steps
+            probe = mpm.Simulation(scene, threads=args.threads, output=False)
+            probe.run(steps=3)
             start = time.perf_counter()
-            probe.run(steps=2)
-            steps = max(5, int(2.0 / ((time.perf_counter() - start) / 2)))
+            probe.run(steps=3)
+            steps = args.steps or max(10, int(3.0 / ((time.perf_counter() - start) / 3)))
             particles = probe.particle_count
             del probe
             program, python = [], []
             for _ in range(args.rounds):
-                out = subprocess.run([str(build / "apps/mpm"), "run", str(path), "--steps", str(steps), "-o",
-                                      str(pathlib.Path(tmp) / "out")], check=True, capture_output=True, text=True).stderr
+                out = subprocess.run([str(build / "apps/mpm"), "run", str(path), "--steps", str(steps), "--threads",
+                                      str(args.threads), "-o", str(pathlib.Path(tmp) / "out")],
+                                     check=True, capture_output=True, text=True).stderr
                 program.append(float(re.search(r"done: \d+ steps .* in ([0-9.]+) s wall", out).group(1)))
-                sim = mpm.Simulation(scene, output=False)
+                sim = mpm.Simulation(scene, threads=args.threads, output=False)
                 start = time.perf_counter()
                 sim.run(steps=steps)
                 python.append(time.perf_counter() - start)
                 del sim
-            ratio = statistics.median(python) / statistics.median(program)
-            print(f"| {case} | {particles} | {steps} | {spread(program)} | {spread(python)} | {ratio:.4f} |",
-                  flush=True)
+            rounds = statistics.median(p / q for p, q in zip(python, program))
+            print(f"| {case} | {particles} | {steps} | {spread(program)} | {spread(python)} | "
+                  f"{min(python) / min(program):.4f} | {rounds:.4f} |", flush=True)
 
 
 def part_step(args):
-    print("\n## sim.step() from a Python loop (64 particles)\n")
+    print("\n## sim.step() from a Python loop (4 particles)\n")
     n = 20000
     loop, inside = [], []
     for _ in range(args.rounds):
@@ -115,7 +120,7 @@ def part_hook(args, build):
             sim.run(steps=n, callback=callback)
             times.append((time.perf_counter() - start) / n)
     cost = [1e6 * (h - p) for h, p in zip(hooked, plain)]
-    print(f"per call: {spread(cost)} us (64 particles: {1e6 * statistics.median(plain):.2f} us per step without it)")
+    print(f"per call: {spread(cost)} us (4 particles: {1e6 * statistics.median(plain):.2f} us per step without it)")
     with tempfile.TemporaryDirectory() as tmp:
         path = pathlib.Path(tmp) / "block.yaml"
         path.write_text(throughput_scene(build, "2d_linear_usl", args.quick))
@@ -135,7 +140,7 @@ def part_field(args, build):
     with tempfile.TemporaryDirectory() as tmp:
         path = pathlib.Path(tmp) / "block.yaml"
         path.write_text(throughput_scene(build, "2d_linear_usl", args.quick))
-        sims = {"64 particles": mpm.Simulation(small_scene(), output=False),
+        sims = {"4 particles": mpm.Simulation(small_scene(), output=False),
                 "block": mpm.Simulation(mpm.Scene.from_yaml(str(path)), output=False)}
         for label, sim in sims.items():
             body = next(iter(sim.bodies.values()))
@@ -165,6 +170,9 @@ def main():
     p.add_argument("--cases", default="2d_linear_usl,3d_linear_usl")
     p.add_argument("--quick", action="store_true", help="the quick blocks (2.5e5 particles)")
     p.add_argument("--part", default="run,step,hook,field")
+    p.add_argument("--steps", type=int, help="run: steps per timed run (default: about 3 s)")
+    p.add_argument("--threads", type=int, default=1, help="run: threads of both (default 1: robust on a shared "
+                   "machine)")
     args = p.parse_args()
     build = pathlib.Path(args.build)
     print(f"mpm {mpm.__version__} from {os.path.dirname(mpm.__file__)}; Python {sys.version.split()[0]}; "

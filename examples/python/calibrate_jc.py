@@ -2,7 +2,7 @@
 anvil, by bisection.
 
     /usr/bin/python3 examples/python/calibrate_jc.py [--target 16.2e-3] [--velocity 190] [--h 1e-3]
-                                                     [--low 10e6] [--high 65e6] [--tolerance 0.05e-3] [--quick]
+                                                     [--low 2e6] [--high 65e6] [--tolerance 0.02e-3] [--quick]
 
 The final length grows with A (a stronger rod shortens less), so bisection on [low, high] converges; each
 iteration is one run (about a second at h = 1 mm). The default target is the experiment's 16.2 mm at 190 m/s;
@@ -22,7 +22,7 @@ def main():
     p.add_argument("--h", type=float, default=1e-3, help="cell size, m")
     p.add_argument("--low", type=float, default=2e6, help="lower bracket of A, Pa")
     p.add_argument("--high", type=float, default=65e6, help="upper bracket of A, Pa")
-    p.add_argument("--tolerance", type=float, default=0.05e-3, help="stop when |L_f - target| is below this, m")
+    p.add_argument("--tolerance", type=float, default=0.02e-3, help="stop when |L_f - target| is below this, m")
     p.add_argument("--iterations", type=int, default=8, help="at most this many bisection steps")
     p.add_argument("--quick", action="store_true", help="h = 2 mm and 3 iterations: a smoke run")
     args = p.parse_args()

@@ -121,3 +121,30 @@ def test_the_guard_raises_stability_error_with_the_programs_report(tmp_path):
     assert x[:, 0].max() <= 1.0
     for name in ("energy.csv", "particles.pvd"):
         assert (tmp_path / "python" / name).read_bytes() == (tmp_path / "program" / name).read_bytes()
+
+
+def test_other_python_threads_run_while_the_engine_steps():
+    # The interpreter lock is released while the engine steps: a Python thread spinning meanwhile makes progress
+    # (were it held, the spinner could not run at all until run() returned).
+    import threading
+
+    d = two_disks(end_time=100)
+    for body in d["bodies"]:
+        body["velocity"] = [0, 0]  # at rest: 20000 steps stay in the grid
+    sim = sim_of(d)
+    sim.run(steps=10)
+    count, stop = [0], threading.Event()
+
+    def spin():
+        while not stop.is_set():
+            count[0] += 1
+    spinner = threading.Thread(target=spin)
+    spinner.start()
+    try:
+        before = count[0]
+        sim.run(steps=20000)
+        during = count[0] - before
+    finally:
+        stop.set()
+        spinner.join()
+    assert during > 1000
