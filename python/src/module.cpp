@@ -42,12 +42,14 @@ void translate_exceptions() {
       const py::object cls = py::module_::import("mpm._errors").attr("SceneError");
       const bool located = !e.where.file.empty();
       // A dict scene has no file: "key: message", as the program's message without its location.
-      const std::string text = located ? std::string(e.what()) : (e.key.empty() ? e.message : e.key + ": " + e.message);
+      const std::string note = app::missing_module_note(e, app::missing_modules());  // as the program's message
+      const std::string text =
+          (located ? std::string(e.what()) : (e.key.empty() ? e.message : e.key + ": " + e.message)) + note;
       const py::object error =
           cls(text, located ? py::object(py::str(e.where.file)) : py::none(),
               e.where.line > 0 ? py::object(py::int_(e.where.line)) : py::none(),
               e.where.line > 0 ? py::object(py::int_(e.where.column > 0 ? e.where.column : 1)) : py::none(), e.key,
-              e.message);
+              e.message + note);
       PyErr_SetObject(cls.ptr(), error.ptr());
     } catch (const StabilityError& e) {
       const py::object cls = py::module_::import("mpm._errors").attr("StabilityError");
