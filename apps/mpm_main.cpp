@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     run_scene(scene, options, std::cerr);
     return exit_ok;
   } catch (const mpm::SceneError& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    std::cerr << "error: " << e.what() << missing_module_note(e, missing_modules()) << '\n';
     return exit_bad_input;
   } catch (const mpm::StabilityError& e) {
     std::cerr << "error: " << e.what() << "\nThe last good state was written to the output.\n";

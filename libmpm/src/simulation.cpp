@@ -24,10 +24,14 @@ Simulation<Dim>::Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<
       boundary_(std::move(boundary)),
       settings_(settings) {
   scheme_->initialize(bodies_, grid_);
-  for (auto& b : bodies_) {
-    wave_speed_.merge(b.material->wave_speed_bound(b.particles));
-    kinematic_viscosity_ = std::max(kinematic_viscosity_, b.material->kinematic_viscosity());
-  }
+  for (auto& b : bodies_) kinematic_viscosity_ = std::max(kinematic_viscosity_, b.material->kinematic_viscosity());
+  particles_changed();
+}
+
+template <int Dim>
+void Simulation<Dim>::particles_changed() {
+  wave_speed_ = WaveSpeedBound<Dim>{};
+  for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
   take_snapshot();
 }
 
@@ -80,8 +84,18 @@ Real Simulation<Dim>::next_time_step() const {
 
 template <int Dim>
 bool Simulation<Dim>::finished() const {
-  // A step that lands within a millionth of a step of end_time counts as the last one.
-  return time_ >= settings_.end_time - 1e-6 * next_time_step();
+  return reached(settings_.end_time);
+}
+
+template <int Dim>
+bool Simulation<Dim>::reached(Real target_time) const {
+  // A step that lands within a millionth of a step of the target counts as the last one.
+  return time_ >= target_time - 1e-6 * next_time_step();
+}
+
+template <int Dim>
+Real Simulation<Dim>::time_step_toward(Real target_time) const {
+  return std::min(next_time_step(), target_time - time_ + 1e-12 * target_time);
 }
 
 template <int Dim>
@@ -135,7 +149,7 @@ void Simulation<Dim>::advance(Real dt) {
 template <int Dim>
 void Simulation<Dim>::run(const std::function<void(const Simulation&)>& after_step, std::optional<Index> last_step) {
   while (!finished() && !(last_step && step_ >= *last_step)) {
-    advance(std::min(next_time_step(), settings_.end_time - time_ + 1e-12 * settings_.end_time));
+    advance(time_step_toward(settings_.end_time));
     if (after_step) after_step(*this);
   }
 }

@@ -6,7 +6,10 @@
 /// only some scenes need (reference position for displacement, temperature, plastic strain, ...) are
 /// added on demand by key (field_keys.hpp; or by name) with add_field() and resolved to a std::vector once
 /// per step, never looked up per particle. Every field follows reordering (sort by cell) and snapshots.
+/// generation() tells code that holds the address of a field's values (the Python package's NumPy views)
+/// when that address or the order of the particles may have changed.
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <iterator>
@@ -19,6 +22,7 @@
 #include <vector>
 
 #include "mpm/field_key.hpp"
+#include "mpm/field_layout.hpp"
 #include "mpm/grid.hpp"
 
 namespace mpm {
@@ -43,6 +47,7 @@ struct FieldBase {
   /// sizes agree (snapshots are taken every few steps into the same buffers).
   virtual bool assign(const FieldBase& o) = 0;
   virtual std::size_t bytes_per_particle() const = 0;
+  virtual FieldStorage storage() = 0;
 };
 template <class T>
 struct TypedField final : FieldBase {
@@ -59,6 +64,34 @@ struct TypedField final : FieldBase {
     return true;
   }
   std::size_t bytes_per_particle() const override { return sizeof(T); }
+  FieldStorage storage() override { return field_storage(data); }
+};
+/// A value that is new, different from every value any particle set had before, whenever the set is created,
+/// copied, moved (both sides) or bump()ed: a set's generation() changes with the addresses of its values.
+class StorageGeneration {
+ public:
+  StorageGeneration() = default;
+  StorageGeneration(const StorageGeneration& /*other*/) {}
+  StorageGeneration(StorageGeneration&& other) noexcept { other.bump(); }
+  StorageGeneration& operator=(const StorageGeneration& other) {
+    if (this != &other) bump();
+    return *this;
+  }
+  StorageGeneration& operator=(StorageGeneration&& other) noexcept {
+    bump();
+    other.bump();
+    return *this;
+  }
+  ~StorageGeneration() = default;
+  std::uint64_t value() const { return value_; }
+  void bump() { value_ = next(); }
+
+ private:
+  static std::uint64_t next() {
+    static std::atomic<std::uint64_t> counter{0};
+    return counter.fetch_add(1, std::memory_order_relaxed) + 1;
+  }
+  std::uint64_t value_ = next();
 };
 }  // namespace detail
 
@@ -79,6 +112,7 @@ class ParticleSet {
   ParticleSet(const ParticleSet& o) { *this = o; }
   ParticleSet& operator=(const ParticleSet& o) {
     if (this == &o) return *this;
+    generation_.bump();
     x = o.x;
     v = o.v;
     mass = o.mass;
@@ -110,6 +144,7 @@ class ParticleSet {
     stress.push_back(SymTensor<Dim>{});
     id.push_back(static_cast<std::uint32_t>(id.size()));
     for (auto& [name, f] : extra_) f->resize(x.size());
+    generation_.bump();
   }
 
   /// Adds (or returns) an on-demand field with an initial value (give one explicitly for Eigen types,
@@ -166,6 +201,26 @@ class ParticleSet {
     detail::gather_vector(stress, order);
     detail::gather_vector(id, order);
     for (auto& [name, f] : extra_) f->gather(order);
+    generation_.bump();
+  }
+
+  /// Changes whenever the particles may have moved in memory or been reordered: gather() (the sort by cell
+  /// every `solver.sort_interval` steps; TLMPM sorts once, at the start), add() (the vectors may grow), and
+  /// assignment (the stability guard's roll-back restores a snapshot) or a move. The values of a field and
+  /// its address are unchanged between two calls that return the same number; adding an on-demand field
+  /// moves none of the others.
+  std::uint64_t generation() const { return generation_.value(); }
+  /// Names of the on-demand fields, in name order.
+  std::vector<std::string> field_names() const {
+    std::vector<std::string> names;
+    for (const auto& [name, f] : extra_) names.push_back(name);
+    return names;
+  }
+  /// Where the values of an on-demand field lie (field_layout.hpp); throws std::out_of_range as field().
+  FieldStorage storage(std::string_view name) {
+    auto it = extra_.find(name);
+    if (it == extra_.end()) throw std::out_of_range("particle field '" + std::string(name) + "' was not allocated");
+    return it->second->storage();
   }
 
   /// State bytes per particle: the core fields plus the on-demand fields this scene allocated.
@@ -184,6 +239,7 @@ class ParticleSet {
     return *t;
   }
   std::map<std::string, std::unique_ptr<detail::FieldBase>, std::less<>> extra_;  ///< by name (ordered as strings)
+  detail::StorageGeneration generation_;
 };
 
 }  // namespace mpm

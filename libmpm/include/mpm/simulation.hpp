@@ -51,7 +51,17 @@ class Simulation {
   /// Advances until end_time, or until step() reaches `last_step` when one is given (`mpm run --steps`);
   /// `after_step` is called after every step (for output and progress).
   void run(const std::function<void(const Simulation&)>& after_step = {}, std::optional<Index> last_step = {});
+  /// reached(end_time).
   bool finished() const;
+  /// Call after changing particle data between steps from outside the step (the Python package's writable
+  /// views): the time-step bound is recomputed from the changed state and the stability guard's snapshot is
+  /// taken again, so that a roll-back restores the changed state rather than the one before the change.
+  void particles_changed();
+  /// Whether time() has reached `target_time` (a step that lands within a millionth of a step of it counts).
+  bool reached(Real target_time) const;
+  /// The size of the next step toward `target_time`: next_time_step(), shortened to land on target_time
+  /// (run() steps toward end_time with it).
+  Real time_step_toward(Real target_time) const;
 
   Real time() const { return time_; }
   Index step() const { return step_; }
