@@ -87,6 +87,11 @@ SceneDescription refined(const SceneDescription& base, double factor, std::vecto
   std::vector<double> sizes;
   for (int d = 0; d < s.dimension; ++d) {
     s.grid.cells[d] = static_cast<int>(std::lround(base.grid.cells[d] * factor));
+    if (s.grid.cells[d] < 1)
+      throw BadOption(
+          fmt::format("the coarsest run would have no cell along {} ({} cells / {:g}): use fewer runs or a "
+                      "smaller --ratio",
+                      "xyz"[d], base.grid.cells[d], 1 / factor));
     s.grid.cell_size[d] = s.grid.extent[d] / s.grid.cells[d];
     sizes.push_back(s.grid.cell_size[d]);
   }
@@ -194,11 +199,12 @@ VerifyReport run_verification(const VerifyOptions& o, std::ostream& log) {
   report.ratio = o.ratio;
   std::vector<std::string> quantity_names;
   for (const auto& q : quantities) quantity_names.push_back("--quantity " + q.text);
-  report.command = fmt::format("mpm verify {} --refine {} --ratio {:g} {}", o.scene.string(), o.runs, o.ratio,
-                               fmt::join(quantity_names, " "));
+  report.command = fmt::format("mpm verify {} --refine {} --ratio {:g}{} {}", o.scene.string(), o.runs, o.ratio,
+                               o.scene_is_finest ? " --finest" : "", fmt::join(quantity_names, " "));
   for (int level = 0; level < o.runs; ++level) {
     std::vector<std::string> changes;
-    SceneDescription s = refined(scene, std::pow(o.ratio, level), changes);
+    const int finer = o.scene_is_finest ? level - (o.runs - 1) : level;  // <= 0 with --finest
+    SceneDescription s = refined(scene, std::pow(o.ratio, finer), changes);
     const fs::path dir = o.output / fmt::format("run_{}", level + 1);
     s.output.directory = dir.string();  // modules' own files (contact forces) too
     fmt::print(log, "run {} of {}: h = {:.6g} m, cells {}\n", level + 1, o.runs, representative_h(s),

@@ -42,7 +42,7 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
 template <int Dim>
 class ExtentHistory final : public History<Dim> {
  public:
-  explicit ExtentHistory(ExtentSpec s) : s_(std::move(s)) {}
+  explicit ExtentHistory(const ExtentSpec& s) : s_(s) {}
 
   std::vector<std::string> columns() const override {
     if (s_.radial) return {column_name("radius_min", "m"), column_name("radius_max", "m"), column_name("count", "-")};

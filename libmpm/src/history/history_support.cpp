@@ -28,6 +28,7 @@ std::array<double, 3> read_point_in_grid(const YamlReader& reader, const YamlVal
   for (int d = 0; d < scene.dimension; ++d)
     if (x[d] < g.origin[d] || x[d] > g.origin[d] + g.extent[d]) {
       std::vector<std::string> box;
+      box.reserve(static_cast<std::size_t>(scene.dimension));
       for (int a = 0; a < scene.dimension; ++a)
         box.push_back(fmt::format("[{:g}, {:g}]", g.origin[a], g.origin[a] + g.extent[a]));
       reader.fail(value, fmt::format("the {} ({:g}) is outside the grid {}", what,

@@ -30,8 +30,9 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
                 "give exactly one of face (a grid face with a velocity condition), plane (a rigid plane) or body (a "
                 "rigid body)");
   if (face) {
-    std::vector<std::string> faces(GridDescription::face_names.begin(),
-                                   GridDescription::face_names.begin() + 2 * scene.dimension);
+    std::vector<std::string> faces(
+        GridDescription::face_names.begin(),
+        GridDescription::face_names.begin() + 2 * static_cast<std::ptrdiff_t>(scene.dimension));
     const std::string name = reader.choice(*face, faces);
     s.face = static_cast<int>(std::find(faces.begin(), faces.end(), name) - faces.begin());
     const auto& held = scene.grid.boundary[static_cast<std::size_t>(s.face)].component;
@@ -126,6 +127,7 @@ class ReactionHistory final : public History<Dim> {
 
   std::vector<std::string> columns() const override {
     std::vector<std::string> names;
+    names.reserve(Dim + 3);
     const char* axis[] = {"x", "y", "z"};
     for (int d = 0; d < Dim; ++d)
       names.push_back(column_name(std::string("force_") + axis[d], extensive_unit("N", Dim)));

@@ -1,9 +1,9 @@
 #pragma once
 /// \file verify_command.hpp
-/// `mpm verify SCENE --refine K --quantity HISTORY.COLUMN[@TIME] ... [--ratio R] [-o DIR]`: solution
+/// `mpm verify SCENE --refine K --quantity HISTORY.COLUMN[@TIME] ... [--ratio R] [--finest] [-o DIR]`: solution
 /// verification of any scene (docs/verify.md). Runs the scene K times, the grid's cell size divided by R per
-/// run (particles per cell unchanged, so the particle spacing follows; the CFL time step follows by itself, a
-/// fixed dt is scaled with h), measures each quantity (a column of one of the scene's output.histories, at a
+/// run (or, with --finest, the scene as the finest run and the others coarser; particles per cell unchanged, so
+/// the particle spacing follows; the CFL time step follows by itself, a fixed dt is scaled with h), measures each quantity (a column of one of the scene's output.histories, at a
 /// time or at the end), and reports per quantity the observed order, Richardson's extrapolation, the GCI band on
 /// the finest run and the wall time of every run (solution_verification.hpp), or why the runs give no number.
 /// Writes DIR/verify.md, DIR/verify_runs.csv, DIR/verify.png (plotted by DIR/plot_verify.py with
@@ -28,6 +28,9 @@ struct VerifyOptions {
   std::filesystem::path output = "verify";  ///< -o
   std::optional<double> order;              ///< --order: assumed order (needed with two runs)
   bool plot = true;                         ///< --no-plot: skip the PNG
+  /// --finest: the scene is the finest run and the others are coarser (cell size times R, R^2, ...); by default
+  /// it is the coarsest and the others are finer.
+  bool scene_is_finest = false;
 };
 
 /// Runs the scene at every resolution and analyses the quantities (progress to `log`); writes each run's
