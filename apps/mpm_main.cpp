@@ -123,6 +123,8 @@ int main(int argc, char** argv) {
   verify_cmd->add_option("--threads", threads, "number of threads (default: all cores)")->check(CLI::PositiveNumber);
   verify_cmd->add_flag(
       "--no-plot", [&](std::int64_t) { verify.plot = false; }, "do not draw verify.png");
+  verify_cmd->add_flag("--finest", verify.scene_is_finest,
+                       "the scene is the finest run, the others coarser (default: the coarsest, the others finer)");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -103,7 +103,8 @@ std::string markdown(const VerifyReport& r, const std::string& plot_note) {
   fmt::print(md,
              "Each run divides the previous run's cell size by {:g} (rounded to whole cells per axis); the particles "
              "per cell stay, so the particle spacing follows, and the time step follows the CFL condition (a fixed "
-             "`dt` is scaled with h). h is the geometric mean of the cell sizes.\n\n",
+             "`dt` is scaled with h). h is the geometric mean of the cell sizes. The estimated errors are "
+             "|value − extrapolated| when the runs are in the asymptotic range.\n\n",
              r.ratio);
   fmt::print(md, "## Runs\n\n| run | cells | h (m) | particles | steps | wall time (s) |\n|---|---|---|---|---|---|\n");
   for (std::size_t k = 0; k < r.runs.size(); ++k) {
@@ -117,7 +118,9 @@ std::string markdown(const VerifyReport& r, const std::string& plot_note) {
     const auto& q = r.quantities[qi];
     const auto& res = q.result;
     fmt::print(md, "\n## {} ({}, {})\n\n", q.name, q.column, when(q));
-    fmt::print(md, "| run | h (m) | value | |value − extrapolated| | wall time (s) |\n|---|---|---|---|---|\n");
+    fmt::print(md,
+               "| run | h (m) | value | estimated error \\|value − extrapolated\\| | wall time (s) "
+               "|\n|---|---|---|---|---|\n");
     for (std::size_t k = 0; k < r.runs.size(); ++k)
       fmt::print(md, "| {} | {:.6g} | {:.10g} | {} | {:.3f} |\n", k + 1, r.runs[k].h, r.runs[k].values[qi],
                  res.asymptotic ? fmt::format("{:.3g}", res.estimated_error[r.runs.size() - 1 - k]) : "–",

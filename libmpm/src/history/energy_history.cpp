@@ -65,15 +65,8 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
 }  // namespace
 
 HistoryKind energy_kind() {
-  HistoryKind k;
-  k.type = "energy";
-  k.description = "energies, momentum, mass and centre of mass of one body (or of all, as energy.csv)";
-  k.keys = {"body"};
-  k.parse = parse;
-  k.make_1d = make<1>;
-  k.make_2d = make<2>;
-  k.make_3d = make<3>;
-  return k;
+  return history_kind("energy", "energies, momentum, mass and centre of mass of one body (or of all, as energy.csv)",
+                      {"body"}, parse, make<1>, make<2>, make<3>);
 }
 
 }  // namespace mpm::history

@@ -99,17 +99,10 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
 }  // namespace
 
 HistoryKind extent_kind() {
-  HistoryKind k;
-  k.type = "extent";
-  k.description =
-      "smallest and largest coordinate of the particles along an axis (a front, a length), or distance "
-      "from an axis line (a radius), of one body or all, optionally within a box";
-  k.keys = {"body", "axis", "radial", "box"};
-  k.parse = parse;
-  k.make_1d = make<1>;
-  k.make_2d = make<2>;
-  k.make_3d = make<3>;
-  return k;
+  return history_kind("extent",
+                      "smallest and largest coordinate of the particles along an axis (a front, a length), or distance "
+                      "from an axis line (a radius), of one body or all, optionally within a box",
+                      {"body", "axis", "radial", "box"}, parse, make<1>, make<2>, make<3>);
 }
 
 }  // namespace mpm::history

@@ -18,6 +18,22 @@ using io::YamlMap;
 using io::YamlReader;
 using io::YamlValue;
 
+/// A kind from its parts (the makers are one template's instantiations, `make<1>, make<2>, make<3>`).
+inline HistoryKind history_kind(std::string type, std::string description, std::vector<std::string> keys,
+                                HistoryParser parse, HistoryMaker<1> make_1d, HistoryMaker<2> make_2d,
+                                HistoryMaker<3> make_3d, HistoryFields fields = nullptr) {
+  HistoryKind k;
+  k.type = std::move(type);
+  k.description = std::move(description);
+  k.keys = std::move(keys);
+  k.parse = parse;
+  k.fields = fields;
+  k.make_1d = make_1d;
+  k.make_2d = make_2d;
+  k.make_3d = make_3d;
+  return k;
+}
+
 /// The core's kinds, registered by history_kind.cpp (one file each).
 HistoryKind probe_kind();
 HistoryKind reaction_kind();

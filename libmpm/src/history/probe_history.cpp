@@ -331,18 +331,11 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
 }  // namespace
 
 HistoryKind probe_kind() {
-  HistoryKind k;
-  k.type = "probe";
-  k.description =
-      "output fields at a point (from the particles within a radius, or from the grid) or over the "
-      "particles of a box (mean, min, max, sum)";
-  k.keys = {"fields", "body", "point", "from", "radius", "box", "statistics"};
-  k.parse = parse;
-  k.fields = fields_of;
-  k.make_1d = make<1>;
-  k.make_2d = make<2>;
-  k.make_3d = make<3>;
-  return k;
+  return history_kind("probe",
+                      "output fields at a point (from the particles within a radius, or from the grid) or over the "
+                      "particles of a box (mean, min, max, sum)",
+                      {"fields", "body", "point", "from", "radius", "box", "statistics"}, parse, make<1>, make<2>,
+                      make<3>, fields_of);
 }
 
 }  // namespace mpm::history

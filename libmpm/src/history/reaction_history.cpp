@@ -190,17 +190,10 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
 }  // namespace
 
 HistoryKind reaction_kind() {
-  HistoryKind k;
-  k.type = "reaction";
-  k.description =
-      "the force (and moment about a point) a grid face with a velocity condition, a rigid plane or a "
-      "rigid body exerts on the bodies, mean over the interval";
-  k.keys = {"face", "plane", "body", "moment_about"};
-  k.parse = parse;
-  k.make_1d = make<1>;
-  k.make_2d = make<2>;
-  k.make_3d = make<3>;
-  return k;
+  return history_kind("reaction",
+                      "the force (and moment about a point) a grid face with a velocity condition, a rigid plane or a "
+                      "rigid body exerts on the bodies, mean over the interval",
+                      {"face", "plane", "body", "moment_about"}, parse, make<1>, make<2>, make<3>);
 }
 
 }  // namespace mpm::history

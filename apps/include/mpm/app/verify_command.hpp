@@ -3,11 +3,12 @@
 /// `mpm verify SCENE --refine K --quantity HISTORY.COLUMN[@TIME] ... [--ratio R] [--finest] [-o DIR]`: solution
 /// verification of any scene (docs/verify.md). Runs the scene K times, the grid's cell size divided by R per
 /// run (or, with --finest, the scene as the finest run and the others coarser; particles per cell unchanged, so
-/// the particle spacing follows; the CFL time step follows by itself, a fixed dt is scaled with h), measures each quantity (a column of one of the scene's output.histories, at a
-/// time or at the end), and reports per quantity the observed order, Richardson's extrapolation, the GCI band on
-/// the finest run and the wall time of every run (solution_verification.hpp), or why the runs give no number.
-/// Writes DIR/verify.md, DIR/verify_runs.csv, DIR/verify.png (plotted by DIR/plot_verify.py with
-/// /usr/bin/python3 and matplotlib) and each run's history CSVs in DIR/run_K/.
+/// the particle spacing follows; the CFL time step follows by itself, a fixed dt is scaled with h), measures each
+/// quantity (a column of one of the scene's output.histories, at a time or at the end), and reports per quantity the
+/// observed order, Richardson's extrapolation, the GCI band on the finest run and the wall time of every run
+/// (solution_verification.hpp), or why the runs give no number. Writes DIR/verify.md, DIR/verify_runs.csv,
+/// DIR/verify.png (plotted by DIR/plot_verify.py with /usr/bin/python3 and matplotlib) and each run's history CSVs in
+/// DIR/run_K/.
 
 #include <filesystem>
 #include <iosfwd>
