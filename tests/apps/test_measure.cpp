@@ -236,6 +236,17 @@ TEST(VerifyCommand, WritesTheReportAndThePlot) {
     EXPECT_TRUE(fs::exists(dir / "v" / "verify.png")) << slurp(dir / "v" / "plot_verify.log");
     EXPECT_NE(md.find("![value against h"), std::string::npos);
   }
+  // --finest: the scene (10 x 10 cells of 0.1 m) is the last run, the others coarser by 2 and 4 (rounded to
+  // whole cells per axis: 3 x 3 and 5 x 5).
+  const auto f = mpm("verify " + (dir / "disks.yaml").string() + " --finest --no-plot --quantity front.x_max -o " +
+                         (dir / "f").string(),
+                     dir);
+  ASSERT_EQ(f.status, 0) << f.err;
+  const std::string finest = slurp(dir / "f" / "verify.md");
+  EXPECT_NE(finest.find("| 1 | 3 × 3 |"), std::string::npos) << finest;
+  EXPECT_NE(finest.find("| 2 | 5 × 5 | 0.2 |"), std::string::npos) << finest;
+  EXPECT_NE(finest.find("| 3 | 10 × 10 | 0.1 |"), std::string::npos) << finest;
+  EXPECT_NE(finest.find("--finest"), std::string::npos) << finest;
   fs::remove_all(dir);
 }
 
