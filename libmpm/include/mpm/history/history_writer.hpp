@@ -2,9 +2,9 @@
 /// \file history_writer.hpp
 /// Writes the scene's histories (`output.histories`) during a run: one CSV per history, NAME.csv beside the
 /// frames, a header `time [s],step,<the history's columns with units>` and one row every `interval` (the
-/// first at the start, the last at the end), through io::CsvLog (atomic rewrites: the file on disk is always
-/// complete). Histories due at the same time share one output-field cache. A scene without histories builds
-/// nothing here.
+/// first at the start, the last at the end), through io::CsvLog (each row appended and flushed: the file on
+/// disk holds every row written, and a history written every step costs time linear in the steps). Histories
+/// due at the same time share one output-field cache. A scene without histories builds nothing here.
 
 #include <filesystem>
 #include <string>
