@@ -42,7 +42,7 @@ for round in $(seq 1 "$rounds"); do
     /usr/bin/time -f '%U %S %e' -o "$dir/time" "$build/apps/mpm" run "$dir/$variant.yaml" -o "$out" \
       --threads 1 --steps "$steps" --profile > "$dir/log" 2>&1
     read -r user sys wall < "$dir/time"
-    output=$(sed -n 's/^ *output *\([0-9.e+-]*\) *s.*/\1/p' "$dir/log" | head -1)
+    output=$(sed -n 's/^output *\([0-9.e+-]*\) .*/\1/p' "$dir/log" | head -1)
     printf '%-11s %5d %9.2f %9.2f %10s\n' "$variant" "$round" "$(echo "$user + $sys" | bc)" "$wall" "${output:-?}"
   done
 done
