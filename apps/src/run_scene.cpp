@@ -9,7 +9,9 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "mpm/app/run_description.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/history/history_writer.hpp"
 #include "mpm/output_writer.hpp"
 
 namespace mpm::app {
@@ -20,6 +22,9 @@ using Clock = std::chrono::steady_clock;
 template <int Dim>
 void check(const SceneDescription& scene, std::ostream& out) {
   auto sim = build_simulation<Dim>(scene);
+  std::vector<std::string> warnings;
+  build_histories<Dim>(scene, *sim, warnings);  // what only the built bodies can refuse
+  for (const auto& w : warnings) fmt::print(out, "warning: {}\n", w);
   const Real dt = sim->next_time_step();
   fmt::print(out,
              "{}: valid. {}D, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
@@ -28,6 +33,16 @@ void check(const SceneDescription& scene, std::ostream& out) {
              enum_name(scene.solver.scheme), scene.solver.shape_function, dt, sim->stable_time_step(),
              sim->time_step_limiter(), static_cast<long long>(std::ceil(scene.solver.end_time / dt)),
              scene.solver.end_time);
+}
+
+/// The command line's changes to the scene, as "key: value" lines (recorded in the output files).
+std::vector<std::string> overrides(const RunOptions& options) {
+  std::vector<std::string> lines;
+  if (options.output_directory) lines.push_back("output.directory: " + options.output_directory->string());
+  if (options.end_time) lines.push_back(fmt::format("solver.end_time: {}", *options.end_time));
+  if (options.steps) lines.push_back(fmt::format("steps: {}  # --steps", *options.steps));
+  for (const auto& line : options.overrides) lines.push_back(line);
+  return lines;
 }
 
 template <int Dim>
@@ -43,9 +58,14 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     scene.solver.end_time = *options.end_time;
   }
   auto sim = build_simulation<Dim>(scene);
+  RunSummary summary;
+  auto built_histories = build_histories<Dim>(scene, *sim, summary.warnings);  // output.histories
+  for (const auto& w : summary.warnings) fmt::print(log, "warning: {}\n", w);
   const auto& o = scene.output;
   OutputWriter<Dim> writer(options.output_directory.value_or(o.directory), o.prefix, o.fields, o.grid, o.interval);
-  RunSummary summary;
+  HistoryWriter<Dim> histories(writer.directory(), std::move(built_histories));
+  writer.set_field_data(run_field_data(scene, overrides(options)));  // self-describing files
+  io::write_view_script(writer.directory() / "view.py", view_script_for(scene));
   summary.particles = static_cast<std::size_t>(sim->particle_count());
   for (const auto& b : sim->bodies())
     summary.bytes_per_particle = std::max(summary.bytes_per_particle, b.particles.bytes_per_particle());
@@ -59,10 +79,13 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   // Output is timed only when profiling (the profile's "output" phase).
   auto write = [&](const Simulation<Dim>& s, bool always) {
     const auto t0 = options.profile ? Clock::now() : Clock::time_point{};
-    if (always)
+    if (always) {
       writer.write(s);
-    else
+      histories.write(s);
+    } else {
       writer.write_if_due(s);
+      histories.write_if_due(s);
+    }
     if (options.profile) sim->add_to_profile(StepPhase::output, StepProfile::since(t0));
   };
   write(*sim, false);
@@ -104,6 +127,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     sim->run(after_step, options.steps ? std::optional<Index>(*options.steps) : std::nullopt);
   } catch (const StabilityError&) {
     writer.write(*sim);  // the simulation was rolled back to the last good step
+    histories.write(*sim);
     if (options.progress) log << '\n';
     throw;
   }

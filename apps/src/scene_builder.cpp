@@ -12,6 +12,7 @@
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
+#include "mpm/history/history_kind.hpp"
 #include "mpm/material_registry.hpp"
 #include "mpm/output_fields.hpp"
 #include "mpm/scene_error.hpp"
@@ -160,8 +161,9 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
   if (scene.solver.velocity_transfer == VelocityTransfer::apic)
     body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
-  prepare_output_fields<Dim>(scene.output.fields, body);  // what the output reads (displacement: X_p)
-  body.material->prepare_particles(body.particles);       // the model's history fields (plasticity), if any
+  prepare_output_fields<Dim>(scene.output.fields, body);                  // what the output reads (displacement: X_p)
+  prepare_output_fields<Dim>(history_output_fields(scene.output), body);  // and what the histories read
+  body.material->prepare_particles(body.particles);  // the model's history fields (plasticity), if any
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
   return body;
 }

@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <cstring>
@@ -142,6 +143,7 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
   impulse_.assign(slots, Vec<Dim>::Zero());
   impulse_n_.assign(slots, 0);
   step_force_.assign(slots, Vec<Dim>::Zero());
+  step_moment_.assign(slots, Vec3::Zero());
   step_normal_.assign(slots, 0);
 }
 
@@ -304,11 +306,13 @@ void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVel
   CorrectionPass pass{
       member, record, ctx.settings.mass_cutoff, ctx.dt, body_count_ + static_cast<int>(settings_.planes.size()), {}};
   pass.plane_velocity.resize(settings_.planes.size());
+  pass.geometry = &ctx.grid.geometry;
   for (std::size_t P = 0; P < pass.plane_velocity.size(); ++P)
     pass.plane_velocity[P] = plane_velocity(static_cast<int>(P), t);
   if (record)
     for (std::size_t s = 0; s < step_force_.size(); ++s) {
       step_force_[s].setZero();
+      step_moment_[s].setZero();
       step_normal_[s] = 0;
     }
   Index corrected_nodes = 0;
@@ -345,6 +349,10 @@ bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Ind
   if (!pass.record) return true;
   const Vec<Dim> f = body_grids_[k].node[I].mass * (v - before) / pass.dt;
   step_force_[k * pass.slots + other] += f;
+  Vec3 x3 = Vec3::Zero(), f3 = Vec3::Zero();
+  x3.template head<Dim>() = pass.geometry->node_position(pass.geometry->node_indices(I));
+  f3.template head<Dim>() = f;
+  step_moment_[k * pass.slots + other] += x3.cross(f3);
   step_normal_[k * pass.slots + other] -= f.dot(n);
   return true;
 }
@@ -435,6 +443,28 @@ void MultiVelocityContact<Dim>::log_forces(const CorrectionPass& pass, Index cor
       f.tangential = std::sqrt(std::max<Real>(0, f.force.squaredNorm() - f.normal * f.normal));
       last_forces_.push_back(f);
     }
+}
+
+template <int Dim>
+std::vector<std::string> MultiVelocityContact<Dim>::reaction_partners() const {
+  std::vector<std::string> names;
+  for (const auto& plane : settings_.planes) names.push_back(plane.name);
+  for (const auto& rigid : settings_.rigid_bodies) names.push_back(bodies_[rigid.body].name);
+  return names;
+}
+
+template <int Dim>
+Reaction<Dim> MultiVelocityContact<Dim>::last_reaction(int k) const {
+  const int planes = static_cast<int>(settings_.planes.size());
+  const int slots = body_count_ + planes;
+  const int other = k < planes ? body_count_ + k : settings_.rigid_bodies[k - planes].body;
+  Reaction<Dim> r;
+  for (int b = 0; b < body_count_; ++b) {  // on every deformable body, in body order
+    if (rigid_of_[b] >= 0) continue;
+    r.force += step_force_[b * slots + other];
+    r.first_moment += step_moment_[b * slots + other];
+  }
+  return r;
 }
 
 template <int Dim>

@@ -61,13 +61,20 @@ bool OutputWriter<Dim>::write_if_due(const Simulation<Dim>& sim) {
 template <int Dim>
 void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
   if (sim.time() == last_written_) return;
+  io::FieldData data = field_data_;  // self-describing files: the run's description, the time and the step
+  data.numbers.emplace_back("TIME", sim.time());
+  data.numbers.emplace_back("step", static_cast<double>(sim.step()));
   const std::string name = fmt::format("{}_{:06d}.vtu", prefix_, frame_);
-  io::write_vtu(directory_ / name, particle_cloud(sim));
+  io::PointCloud cloud = particle_cloud(sim);
+  cloud.field_data = data;
+  io::write_vtu(directory_ / name, cloud);
   particles_pvd_.add(sim.time(), directory_ / name);
   particles_pvd_.write();
   if (domains_pvd_) {
     const std::string domains_name = fmt::format("{}_domains_{:06d}.vtu", prefix_, frame_);
-    io::write_cells_vtu(directory_ / domains_name, particle_domain_mesh(sim.bodies()));
+    io::CellMesh mesh = particle_domain_mesh(sim.bodies());
+    mesh.field_data = data;
+    io::write_cells_vtu(directory_ / domains_name, mesh);
     domains_pvd_->add(sim.time(), directory_ / domains_name);
     domains_pvd_->write();
   }
@@ -86,6 +93,7 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
       append_padded<Dim>(force.values, g.node[n].force);
     }
     image.fields = {mass, velocity, force};
+    image.field_data = data;
     for (const auto& [name, values] : g.node_fields)  // modules' nodal fields (thermal: temperature)
       if (static_cast<Index>(values.size()) == g.size()) image.fields.push_back({name, 1, values});
     const std::string grid_name = fmt::format("{}_grid_{:06d}.vti", prefix_, frame_);

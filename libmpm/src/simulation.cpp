@@ -218,22 +218,32 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
 }
 
 template <int Dim>
+void Simulation<Dim>::add_body_energy(const Body<Dim>& b, EnergyBalance& e) const {
+  const Vec<Dim>& g = settings_.transfer.gravity;
+  const auto& p = b.particles;
+  for (Index i = 0; i < p.size(); ++i) {
+    const Real m = p.mass[i];
+    e.kinetic += 0.5 * m * p.v[i].squaredNorm();
+    e.gravity -= m * g.dot(Vec<Dim>(p.x[i]));
+    e.momentum.template head<Dim>() += m * p.v[i];
+    e.mass += m;
+  }
+  e.strain += b.material->strain_energy(p);
+  e.plastic_work += b.material->dissipated_energy(p);
+  for (const auto& m : hooks_.all()) m->add_energy(b, e);
+}
+
+template <int Dim>
 EnergyBalance Simulation<Dim>::energy() const {
   EnergyBalance e;
-  const Vec<Dim>& g = settings_.transfer.gravity;
-  for (const auto& b : bodies_) {
-    const auto& p = b.particles;
-    for (Index i = 0; i < p.size(); ++i) {
-      const Real m = p.mass[i];
-      e.kinetic += 0.5 * m * p.v[i].squaredNorm();
-      e.gravity -= m * g.dot(Vec<Dim>(p.x[i]));
-      e.momentum.template head<Dim>() += m * p.v[i];
-      e.mass += m;
-    }
-    e.strain += b.material->strain_energy(p);
-    e.plastic_work += b.material->dissipated_energy(p);
-  }
-  for (const auto& m : hooks_.all()) m->add_energy(bodies_, e);
+  for (const auto& b : bodies_) add_body_energy(b, e);
+  return e;
+}
+
+template <int Dim>
+EnergyBalance Simulation<Dim>::body_energy(const Body<Dim>& body) const {
+  EnergyBalance e;
+  add_body_energy(body, e);
   return e;
 }
 

@@ -85,8 +85,18 @@ std::string taylor_anvil_scene(const TaylorSpec& s) {
       "  end_time: {9:g}\n"
       "output:\n"
       "  interval: 10.0e-6\n"
-      "  fields: [velocity, plastic_strain, plastic_strain_rate, pressure, von_mises_stress, displacement]\n",
-      -half, 2 * half, height, s.h, s.strain_rate_coefficient, ppc, s.scheme, s.shape_function, s.cfl, s.max_time);
+      "  fields: [velocity, plastic_strain, plastic_strain_rate, pressure, von_mises_stress, displacement]\n"
+      "  histories:  # the rod's shape from the particle centres (README: L_f, D_f, W_f) and its energies\n"
+      "    - {{name: length, type: extent, axis: z, interval: 1.0e-6}}\n"
+      "    - {{name: foot, type: extent, radial: {{axis: z, through: [0, 0, 0]}}, interval: 1.0e-6}}\n"
+      "    - name: bulge  # the particles within h/2 of 0.2 L0 = 5.08 mm from the wall\n"
+      "      interval: 1.0e-6\n"
+      "      type: extent\n"
+      "      radial: {{axis: z, through: [0, 0, 0]}}\n"
+      "      box: {{min: [-0.02, -0.02, {10:.6g}], max: [0.02, 0.02, {11:.6g}]}}\n"
+      "    - {{name: rod, type: energy, interval: 1.0e-6}}\n",
+      -half, 2 * half, height, s.h, s.strain_rate_coefficient, ppc, s.scheme, s.shape_function, s.cfl, s.max_time,
+      0.2 * L0 - 0.5 * s.h, 0.2 * L0 + 0.5 * s.h);
 }
 
 TaylorResult run_taylor_anvil(const TaylorSpec& spec) {

@@ -31,6 +31,9 @@ class OutputWriter {
   void write(const Simulation<Dim>& sim);
   /// The particles as a point cloud with the requested fields (also used by tests).
   io::PointCloud particle_cloud(const Simulation<Dim>& sim) const;
+  /// What every file written from now on carries as field data besides `TIME` and `step` (the scene, the
+  /// program version and commit, the thread count: see run_scene).
+  void set_field_data(io::FieldData data) { field_data_ = std::move(data); }
   const std::filesystem::path& directory() const { return directory_; }
   int frames() const { return frame_; }
 
@@ -47,6 +50,7 @@ class OutputWriter {
   std::unique_ptr<io::PvdCollection> grid_pvd_;
   std::unique_ptr<io::PvdCollection> domains_pvd_;  ///< GIMP/CPDI particle domains, when asked (`domains`)
   std::unique_ptr<io::CsvLog> energy_;
+  io::FieldData field_data_;
 };
 
 }  // namespace mpm

@@ -115,17 +115,31 @@ struct SolverDescription {
   SourceLocation dt_where;
 };
 
+/// One entry of `output.histories` (docs/scene-reference.md#histories): a quantity written to its own CSV,
+/// one row per `interval`. `type` names a kind of the history registry (history/history_kind.hpp); `spec` is
+/// what that kind's parser returned.
+struct HistoryDescription {
+  std::string name;     ///< the CSV is NAME.csv in the output directory
+  std::string type;     ///< probe, reaction, energy, extent, ...
+  double interval = 0;  ///< s between rows (0: every output frame of `output.interval`, or only first and last)
+  std::any spec;
+  SourceLocation where;
+  std::string path;  ///< its key path for messages, e.g. "output.histories[2]"
+};
+
 struct OutputDescription {
   std::string directory = "output";
   std::string prefix = "particles";
   double interval = 0;  ///< s between output frames (0 = only first and last)
   std::vector<std::string> fields{"velocity", "stress", "mass", "volume", "body"};
-  bool grid = false;  ///< also write the grid (.vti) at each frame
+  bool grid = false;                          ///< also write the grid (.vti) at each frame
+  std::vector<HistoryDescription> histories;  ///< probes, reactions, energies, extents (one CSV each)
   SourceLocation where;
 };
 
 struct SceneDescription {
-  std::string file;  ///< path of the scene file
+  std::string file;    ///< path of the scene file
+  std::string source;  ///< the file's YAML text as read (written into every output file's field data)
   int dimension = 2;
   GridDescription grid;
   std::map<std::string, MaterialDescription> materials;

@@ -72,6 +72,10 @@ class Simulation {
   const Scheme<Dim>& scheme() const { return *scheme_; }
   Index particle_count() const;
   EnergyBalance energy() const;
+  /// The audit of one body (energy() is the sum over the bodies, accumulated in the same order).
+  EnergyBalance body_energy(const Body<Dim>& body) const;
+  /// Grid boundary conditions (velocity constraints and tractions on the box faces).
+  const GridBoundary<Dim>& boundary() const { return boundary_; }
 
   /// Times the phases of every following step (step_profile.hpp). Off by default: the kernels then read
   /// no clock.
@@ -95,6 +99,8 @@ class Simulation {
   void take_snapshot();
   StabilityReport diagnose(Real dt) const;
   void roll_back_to_previous_step();
+  /// Adds body's share of the audit to e (energy() and body_energy()).
+  void add_body_energy(const Body<Dim>& body, EnergyBalance& e) const;
 
   Grid<Dim> grid_;
   std::vector<Body<Dim>> bodies_;

@@ -6,9 +6,9 @@
 
 namespace mpm::sections {
 
-OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue& value) {
+OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue& value, const SceneDescription& scene) {
   const io::YamlMap map = reader.map(value);
-  map.allow({"directory", "prefix", "interval", "fields", "grid"});
+  map.allow({"directory", "prefix", "interval", "fields", "grid", "histories"});
   OutputDescription output;
   output.where = reader.location(value.mark);
   if (const auto directory = map.find("directory")) output.directory = reader.name(*directory);
@@ -28,6 +28,8 @@ OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue&
     }
   }
   if (const auto grid = map.find("grid")) output.grid = reader.boolean(*grid);
+  if (const auto histories = map.find("histories"))
+    output.histories = read_histories(reader, *histories, scene, output.interval);
   return output;
 }
 

@@ -27,6 +27,9 @@ struct RunOptions {
   bool profile = false;            ///< time the phases of every step and print the breakdown at the end (`--profile`)
   std::optional<long long> steps;  ///< stop after this many steps (`--steps`, >= 1), or at the end time if sooner
   std::optional<double> end_time;  ///< s, replaces the scene's solver.end_time (`--end-time`, > 0)
+  /// Changes made to the scene before the run by its caller (`mpm verify`: the refinement), "key: value" lines
+  /// recorded in the output files' field data with the command line's.
+  std::vector<std::string> overrides;
 };
 
 struct RunSummary {
@@ -37,8 +40,9 @@ struct RunSummary {
   std::size_t particles = 0;
   std::size_t bytes_per_particle = 0;
   StepProfile profile;  ///< per-phase wall time, with RunOptions::profile (all zero otherwise)
-  /// Warnings of the materials about their state (Material::state_warning), the first of each body,
-  /// as logged: "body NAME at t = ... s: MESSAGE".
+  /// Warnings, as logged: of the histories when they are built ("output.histories[i]: ..."), and of the
+  /// materials about their state (Material::state_warning), the first of each body: "body NAME at t = ... s:
+  /// MESSAGE".
   std::vector<std::string> warnings;
 };
 

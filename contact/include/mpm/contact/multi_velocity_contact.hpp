@@ -18,6 +18,7 @@
 
 #include "mpm/expression.hpp"
 #include "mpm/module.hpp"
+#include "mpm/reaction_provider.hpp"
 
 namespace mpm::contact {
 
@@ -60,7 +61,7 @@ template <int Dim>
 class ShapePasses;
 
 template <int Dim>
-class MultiVelocityContact final : public Module<Dim> {
+class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<Dim> {
  public:
   /// Gives every body its own nodal arrays; `shape_function` is the scene's (for the normals).
   MultiVelocityContact(const GridGeometry<Dim>& grid, std::vector<Body<Dim>>& bodies, const std::string& shape_function,
@@ -80,6 +81,10 @@ class MultiVelocityContact final : public Module<Dim> {
   Index contact_node_count() const { return contact_nodes_last_; }
   /// Position of plane k at the current time (it moves with its velocity).
   Vec<Dim> plane_point(int k) const { return plane_point_[k]; }
+  /// The planes' names, then the rigid bodies' (reaction histories, reaction_provider.hpp).
+  std::vector<std::string> reaction_partners() const override;
+  /// The force partner k exerted on the deformable bodies in the last step (sum of the step's corrections).
+  Reaction<Dim> last_reaction(int k) const override;
 
  private:
   void find_candidates(StepContext<Dim>& ctx);
@@ -93,6 +98,7 @@ class MultiVelocityContact final : public Module<Dim> {
     Real dt;      ///< s
     int slots;    ///< partners per body: bodies, then planes
     std::vector<Vec<Dim>> plane_velocity;
+    const GridGeometry<Dim>* geometry = nullptr;  ///< node positions, for the moments of the forces
   };
   /// The contact correction at every candidate node: two-body nodes (eqs 5.2-5.8), nodes of three or more
   /// bodies, nodes behind a plane; then the force log of the step.
@@ -137,6 +143,7 @@ class MultiVelocityContact final : public Module<Dim> {
   std::vector<Real> impulse_n_;
   std::vector<PairForce<Dim>> last_forces_;
   std::vector<Vec<Dim>> step_force_;  ///< per (body, other slot): force of this step
+  std::vector<Vec3> step_moment_;     ///< per (body, other slot): sum of x_I x f_I of this step, N m
   std::vector<Real> step_normal_;
   Real onset_time_ = -1;
   Index contact_nodes_last_ = 0;

@@ -90,14 +90,11 @@ class HeatConduction final : public Module<Dim> {
   void set_cell_size(const GridGeometry<Dim>& g) { h_min_ = g.h.minCoeff(); }
 
   /// Thermal energy sum m c (T - T_ref), J.
-  void add_energy(const std::vector<Body<Dim>>& bodies, EnergyBalance& e) const override {
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      const auto& p = bodies[b].particles;
-      const auto& T = p.field(mpm::keys::temperature);
-      const auto& tb = setup_.bodies[b];
-      for (Index i = 0; i < p.size(); ++i)
-        e.thermal += p.mass[i] * tb.specific_heat * (T[i] - tb.reference_temperature);
-    }
+  void add_energy(const Body<Dim>& body, EnergyBalance& e) const override {
+    const auto& p = body.particles;
+    const auto& T = p.field(mpm::keys::temperature);
+    const auto& tb = setup_.bodies[static_cast<std::size_t>(body.index)];
+    for (Index i = 0; i < p.size(); ++i) e.thermal += p.mass[i] * tb.specific_heat * (T[i] - tb.reference_temperature);
   }
 
   /// The grid temperature T_I^{t+dt} of the last step (K; zero on nodes without heat capacity).
