@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 # Every Debian package the project needs: build tools, libraries, and the Python used for plots.
 packages=(cmake g++ make pkg-config git clang-format clang-tidy
           libeigen3-dev libtbb-dev libyaml-cpp-dev libvtk9-dev libcgal-dev libgtest-dev libgmock-dev
-          libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev
+          libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev libhdf5-dev
           python3 python3-numpy python3-matplotlib python3-vtk9)
 missing=()
 for p in "${packages[@]}"; do

@@ -6,6 +6,7 @@
 /// field mpm::keys::temperature (K), added only when the model tracks it. Both are resolved once per block,
 /// never per particle. Outputs: the list of output_fields.hpp; energy audit: plastic_work.
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -35,21 +36,18 @@ class PlasticBatch final : public Material<Dim> {
     if (params_.thermal) p.add_field(mpm::keys::temperature, params_.room_temperature);  // kept if present
   }
 
-  /// Whole packs of lane_count particles run the vector law; the last few particles of a block the
-  /// scalar one (the same arithmetic, lanes.hpp).
+  /// Every particle runs the vector law, in packs aligned to the particle index (particles g .. g +
+  /// lane_count - 1, g a multiple of lane_count); a pack that the block [begin, end) cuts is padded. The block
+  /// boundaries are chosen by TBB at run time, and the vector and the scalar law agree only to round-off: with
+  /// packs fixed by the index, a particle's update is the same bits whatever the thread count and the
+  /// partitioning (restarts at another thread count, ranks of an MPI run).
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
     State* state = p.field(state_field).data();
     Real* temperature = params_.thermal ? p.field(mpm::keys::temperature).data() : nullptr;
     Real max_c2 = 0;
-    Index i = begin;
-    for (; i + lane_count <= end; i += lane_count)
-      max_c2 = std::max(max_c2, update_pack(p, i, L + (i - begin), dt, state, temperature));
-    for (; i != end; ++i) {
-      const Mat<Dim> F = p.F[i];
-      const Real J = F.determinant();
-      Model::template update_point<Dim>(params_, F, Mat<Dim>(L[i - begin]), J, dt, p.volume0[i] * J, state[i],
-                                        temperature ? temperature + i : nullptr, p.stress[i]);
-      max_c2 = std::max(max_c2, Model::wave_speed_squared(params_, J));
+    for (Index g = begin - begin % lane_count; g < end; g += lane_count) {
+      const Index first = std::max(g, begin), last = std::min<Index>(g + lane_count, end);
+      max_c2 = std::max(max_c2, update_pack(p, g, first, last, L + (first - begin), dt, state, temperature));
     }
     Real sum = 0;  // finite stresses have a finite sum
     Vec<Dim> max_v = Vec<Dim>::Zero();
@@ -97,18 +95,20 @@ class PlasticBatch final : public Material<Dim> {
   }
 
  private:
-  /// Particles i .. i + lane_count - 1 (L: their velocity gradients) through the vector law; returns the
-  /// largest squared wave speed among them.
-  Real update_pack(ParticleSet<Dim>& p, Index i, const MatU<Dim>* L, Real dt, State* state, Real* temperature) const {
+  /// Particles first .. last - 1 of the pack that starts at particle g (L: their velocity gradients) through
+  /// the vector law; lanes outside [first, last) repeat particle `first` and are not stored. Returns the
+  /// largest squared wave speed among the particles.
+  Real update_pack(ParticleSet<Dim>& p, Index g, Index first, Index last, const MatU<Dim>* L, Real dt, State* state,
+                   Real* temperature) const {
     PointLanes<Dim, Pack> lanes;
     for (int l = 0; l < lane_count; ++l) {
-      const Index k = i + l;
+      const Index k = g + l >= first && g + l < last ? g + l : first;
       const Mat<Dim> F = p.F[k];
       const Real J = F.determinant();
       for (int r = 0; r < Dim; ++r)
         for (int c = 0; c < Dim; ++c) {
           lanes.F[r][c][l] = F(r, c);
-          lanes.L[r][c][l] = L[l](r, c);
+          lanes.L[r][c][l] = L[k - first](r, c);
         }
       lanes.J[l] = J;
       lanes.volume[l] = p.volume0[k] * J;
@@ -117,13 +117,13 @@ class PlasticBatch final : public Material<Dim> {
       for (int c = 0; c < SymTensor<Dim>::size; ++c) lanes.stress[c][l] = p.stress[k].c[c];
     }
     Model::template update<Dim, Pack>(params_, dt, temperature != nullptr, lanes);
-    for (int l = 0; l < lane_count; ++l) {
-      const Index k = i + l;
+    for (Index k = first; k < last; ++k) {
+      const int l = static_cast<int>(k - g);
       lanes.store_state(state[k], l);
       if (temperature) temperature[k] = lanes.temperature[l];
       for (int c = 0; c < SymTensor<Dim>::size; ++c) p.stress[k].c[c] = lanes.stress[c][l];
     }
-    return Model::wave_speed_squared(params_, lanes.J).maxCoeff();
+    return Model::wave_speed_squared(params_, lanes.J).maxCoeff();  // padded lanes repeat a particle
   }
 
   std::string key_;
