@@ -97,6 +97,14 @@ int RunCheckpoints::restore(const StateArchive& archive) {
       fs::remove(later);
       ++removed;
     }
+  // Checkpoints that a killed run left half-written under their temporary names.
+  std::vector<fs::path> temporaries;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(directory_, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with(".checkpoint_") && name.find(".h5.tmp-") != std::string::npos) temporaries.push_back(entry.path());
+  }
+  for (const auto& file : temporaries) fs::remove(file, error);
   return removed;
 }
 
@@ -105,7 +113,8 @@ RestartPoint find_restart_point(const fs::path& file_or_directory, const SceneDe
   RestartPoint point;
   std::error_code error;
   if (fs::is_directory(file_or_directory, error)) {
-    const auto files = checkpoint::checkpoint_files(file_or_directory);
+    auto files = checkpoint::checkpoint_files(file_or_directory);
+    if (files.empty()) files = checkpoint::checkpoint_files(file_or_directory / "checkpoints");  // an output dir
     std::string skipped;
     for (const auto& file : files) {
       try {

@@ -93,7 +93,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   const std::filesystem::path directory = options.output_directory.value_or(o.directory);
   const std::string scene_text = read_scene_text(scene);
   RunCheckpoints checkpoints(scene, scene_text,
-                             o.checkpoint.directory.empty() ? directory / "checkpoints" : o.checkpoint.directory);
+                             o.checkpoint.directory.empty() ? directory / "checkpoints" : std::filesystem::path(o.checkpoint.directory));
   std::optional<RestartPoint> restart;
   if (options.restart) {
     restart = find_restart_point(*options.restart, scene, scene_text, log);

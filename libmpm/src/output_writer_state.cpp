@@ -76,9 +76,10 @@ void OutputWriter<Dim>::restore_state(const StateArchive& archive) {
   if (domains_pvd_) restore_frames(archive, "output/domains_pvd", *domains_pvd_);
   // Frames the interrupted run wrote after the checkpoint: the restarted run writes them again (or, after a
   // fork that changed the schedule, others), so none may be left over.
+  std::vector<std::filesystem::path> stale;
   for (const auto& entry : std::filesystem::directory_iterator(directory_))
-    if (const int n = frame_number(entry.path().filename().string(), prefix_); n >= frame_)
-      std::filesystem::remove(entry.path());
+    if (frame_number(entry.path().filename().string(), prefix_) >= frame_) stale.push_back(entry.path());
+  for (const auto& file : stale) std::filesystem::remove(file);
 }
 
 template void OutputWriter<1>::save_state(StateArchive&) const;

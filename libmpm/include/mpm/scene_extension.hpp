@@ -54,7 +54,7 @@ struct SceneExtension {
   SectionBuilder<3> build_3d = nullptr;
   /// Keys of the section a fork may change when it continues a checkpoint (`mpm run --restart` with a changed
   /// scene): dotted paths from the top, `*` for any key or list index ("contact.planes.*.velocity").
-  std::vector<std::string> run_control_keys;
+  std::vector<std::string> run_control_keys{};
 };
 
 /// Registers (or replaces) the section with this key. Called by a module's register_module().

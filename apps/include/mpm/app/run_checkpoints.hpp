@@ -59,7 +59,8 @@ class RunCheckpoints {
   Clock::time_point last_wall_;
 };
 
-/// The checkpoint `mpm run SCENE --restart FILE|DIR` continues: FILE, or the newest valid checkpoint of DIR
+/// The checkpoint `mpm run SCENE --restart FILE|DIR` continues: FILE, or the newest valid checkpoint of DIR (or of
+/// DIR/checkpoints, when DIR is an output directory)
 /// (an invalid one, such as a file cut short by a crash, is reported in `log` and skipped). Checks that it
 /// was written by this version of the program and that the scene differs from its scene only in run-control
 /// keys (a fork, whose changes `changes` lists); throws RestartError otherwise, or CheckpointError when FILE
