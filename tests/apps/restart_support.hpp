@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <ostream>
 #include <regex>
 #include <set>
 #include <string>
@@ -16,7 +17,6 @@
 namespace restart_support {
 
 namespace fs = std::filesystem;
-using cli::mpm;
 using cli::Result;
 using cli::scratch;
 using cli::slurp;
@@ -25,6 +25,8 @@ struct Case {
   std::string name;
   std::string scene;  ///< ends with output.checkpoint at T/2
 };
+/// How GoogleTest prints a case: its name.
+inline void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 /// Steps of a finished run ("done: N steps").
 inline long long steps_done(const Result& r) {
@@ -79,9 +81,7 @@ inline void expect_same_output(const fs::path& reference, const fs::path& run, l
   EXPECT_GE(fields, 7);  // the core fields of one body at least
 }
 
-inline std::string checkpoint_at(double t) {
-  return "  checkpoint: {interval: " + std::to_string(t) + "}\n";
-}
+inline std::string checkpoint_at(double t) { return "  checkpoint: {interval: " + std::to_string(t) + "}\n"; }
 
 inline Case two_disks() {
   return {"two_disks_musl",

@@ -20,7 +20,7 @@ class BadCheckpoint : public ::testing::Test {
   void SetUp() override {
     dir_ = scratch("bad_checkpoint");
     std::ofstream(dir_ / "scene.yaml") << two_disks().scene;
-    const Result r = mpm("run " + (dir_ / "scene.yaml").string() + " -o " + (dir_ / "out").string(), dir_);
+    const Result r = cli::mpm("run " + (dir_ / "scene.yaml").string() + " -o " + (dir_ / "out").string(), dir_);
     ASSERT_EQ(r.status, 0) << r.err;
     const auto steps = checkpoint_steps(dir_ / "out" / "checkpoints");
     ASSERT_FALSE(steps.empty());
@@ -32,9 +32,8 @@ class BadCheckpoint : public ::testing::Test {
   }
   /// A restart from `from` is refused with status 2 and `message`, and leaves the output as it was.
   void expect_refused(const fs::path& from, const std::string& message, const std::string& scene = "scene.yaml") {
-    const Result r = mpm("run " + (dir_ / scene).string() + " -o " + (dir_ / "out").string() + " --restart " +
-                             from.string(),
-                         dir_);
+    const Result r = cli::mpm(
+        "run " + (dir_ / scene).string() + " -o " + (dir_ / "out").string() + " --restart " + from.string(), dir_);
     EXPECT_EQ(r.status, 2) << from << "\n" << r.err;
     EXPECT_NE(r.err.find(message), std::string::npos) << from << "\n" << r.err;
     std::map<std::string, std::string> after;
@@ -71,8 +70,8 @@ TEST_F(BadCheckpoint, OfAnotherProgramVersion) {
   auto archive = mpm::checkpoint::read_checkpoint(good_);
   archive.put_text("run/program_version", "0.0.1");
   mpm::checkpoint::write_checkpoint(dir_ / "old.h5", archive);
-  expect_refused(dir_ / "old.h5", "old.h5: written by mpm 0.0.1 (checkpoint format 1); this is mpm " +
-                                      std::string(MPM_VERSION_STRING));
+  expect_refused(dir_ / "old.h5",
+                 "old.h5: written by mpm 0.0.1 (checkpoint format 1); this is mpm " + std::string(MPM_VERSION_STRING));
 }
 
 TEST_F(BadCheckpoint, OfAnotherScene) {
@@ -94,15 +93,43 @@ TEST_F(BadCheckpoint, DirectoryWithoutAValidCheckpoint) {
 TEST(CheckpointDirectory, UnwritableIsRefusedBeforeTheFirstStep) {
   const fs::path dir = scratch("checkpoint_unwritable");
   std::string scene = two_disks().scene;
-  scene.replace(scene.find("  checkpoint: {"), std::string::npos, "  checkpoint: {interval: 0.2, directory: /dev/null/checkpoints}\n");
+  scene.replace(scene.find("  checkpoint: {"), std::string::npos,
+                "  checkpoint: {interval: 0.2, directory: /dev/null/checkpoints}\n");
   std::ofstream(dir / "scene.yaml") << scene;
-  const Result r = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
+  const Result r = cli::mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find((dir / "scene.yaml").string() + ":11:15: output.checkpoint: cannot write checkpoints to the "
                                                        "directory '/dev/null/checkpoints'"),
             std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir / "out"));  // refused before anything was written
+  if (!HasFailure()) fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+using namespace restart_support;
+
+// `mpm checkpoint FILE`: what a checkpoint holds, with every checksum checked; a damaged one is refused.
+TEST(CheckpointCommand, DescribesAGoodCheckpointAndRefusesADamagedOne) {
+  const fs::path dir = scratch("checkpoint_command");
+  std::ofstream(dir / "scene.yaml") << two_disks().scene;
+  ASSERT_EQ(cli::mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir).status, 0);
+  const fs::path file = dir / "out" / "checkpoints" / mpm::checkpoint::checkpoint_name(100);
+  const Result r = cli::mpm("checkpoint " + file.string(), dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const std::string part :
+       {"every checksum matches", "time: 0.2", "step 100, 2D", "body lower_left: 112 particles; fields: ",
+        "body upper_right: 112 particles", "stress (float64 x 4)", "id (uint32)", "output: 5 frames written"})
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
+  std::string bytes = slurp(file);
+  bytes.resize(bytes.size() / 2);
+  std::ofstream(dir / "half.h5", std::ios::binary) << bytes;
+  const Result bad = cli::mpm("checkpoint " + (dir / "half.h5").string(), dir);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("half.h5: cannot open it as HDF5"), std::string::npos) << bad.err;
   if (!HasFailure()) fs::remove_all(dir);
 }
 

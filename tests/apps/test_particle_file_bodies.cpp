@@ -17,14 +17,14 @@ TEST(ParticleFileBody, SeededFromItsOwnFirstFrameReproducesTheRun) {
   scene.replace(scene.find("  checkpoint:"), std::string::npos, "");
   scene.replace(scene.find("fields: [velocity, stress, body]"), 32, "fields: [velocity, stress, mass, volume, body]");
   std::ofstream(dir / "original.yaml") << scene;
-  ASSERT_EQ(mpm("run " + (dir / "original.yaml").string() + " -o " + (dir / "original").string(), dir).status, 0);
+  ASSERT_EQ(cli::mpm("run " + (dir / "original.yaml").string() + " -o " + (dir / "original").string(), dir).status, 0);
   const std::string frame = (dir / "original" / "particles_000000.vtu").string();
   std::string seeded = scene;
   seeded.replace(seeded.find("  - {name: lower_left"), seeded.find("solver:") - seeded.find("  - {name: lower_left"),
                  "  - {name: lower_left, material: elastic, shape: {particles: " + frame + ", body: 0}}\n" +
                      "  - {name: upper_right, material: elastic, shape: {particles: " + frame + ", body: 1}}\n");
   std::ofstream(dir / "seeded.yaml") << seeded;
-  const Result r = mpm("run " + (dir / "seeded.yaml").string() + " -o " + (dir / "seeded").string(), dir);
+  const Result r = cli::mpm("run " + (dir / "seeded.yaml").string() + " -o " + (dir / "seeded").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
   const auto files = output_files(dir / "original");
   EXPECT_EQ(output_files(dir / "seeded"), files);
@@ -44,7 +44,7 @@ TEST(ParticleFileBody, CsvGivesPositionsVolumesAndVelocities) {
       << csv.string()
       << "}}]\n"
          "solver: {dt: 1.0e-3, end_time: 1.0e-3}\n";
-  const Result r = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
+  const Result r = cli::mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
   // Four particles of 0.0025 m^2 at 1000 kg/m^3 moving at 1 m/s: kinetic energy 4 x 0.5 x 2.5 x 1 = 5 J/m at t = 0.
   std::ifstream energy(dir / "out" / "energy.csv");

@@ -30,7 +30,7 @@ void check_interrupted_run_reaches_the_same_bits(const Case& c) {
   const std::string scene = (dir / "scene.yaml").string();
   const fs::path reference = dir / "reference", run = dir / "run";
 
-  const Result ref = mpm("run " + scene + " --threads 2 -o " + reference.string(), dir);
+  const Result ref = cli::mpm("run " + scene + " --threads 2 -o " + reference.string(), dir);
   ASSERT_EQ(ref.status, 0) << ref.err;
   const long long total = steps_done(ref);
   const auto steps = checkpoint_steps(reference / "checkpoints");
@@ -42,19 +42,18 @@ void check_interrupted_run_reaches_the_same_bits(const Case& c) {
   ASSERT_LT(kill_at, total);
 
   const std::string args = "run " + scene + " --threads 2 -o " + run.string();
-  const Result term = mpm(args, dir, "MPM_DEBUG_RAISE_AT_STEP=" + std::to_string(term_at) + ":TERM");
+  const Result term = cli::mpm(args, dir, "MPM_DEBUG_RAISE_AT_STEP=" + std::to_string(term_at) + ":TERM");
   EXPECT_EQ(term.status, 128 + 15) << term.err;
   EXPECT_NE(term.err.find("stopped by SIGTERM at step " + std::to_string(term_at)), std::string::npos) << term.err;
   EXPECT_NE(term.err.find("resume with: mpm run " + scene + " --restart"), std::string::npos) << term.err;
 
-  const Result kill = mpm(args + " --restart " + (run / "checkpoints").string(), dir,
-                          "MPM_DEBUG_RAISE_AT_STEP=" + std::to_string(kill_at) + ":KILL");
+  const Result kill = cli::mpm(args + " --restart " + (run / "checkpoints").string(), dir,
+                               "MPM_DEBUG_RAISE_AT_STEP=" + std::to_string(kill_at) + ":KILL");
   EXPECT_TRUE(killed(kill)) << kill.status << "\n" << kill.err;
   EXPECT_NE(kill.err.find("at step " + std::to_string(term_at)), std::string::npos) << kill.err;
 
-  const Result last = mpm("run " + scene + " --threads 1 -o " + run.string() + " --restart " +
-                              (run / "checkpoints").string(),
-                          dir);
+  const Result last = cli::mpm(
+      "run " + scene + " --threads 1 -o " + run.string() + " --restart " + (run / "checkpoints").string(), dir);
   ASSERT_EQ(last.status, 0) << last.err;
   EXPECT_NE(last.err.find(mpm::checkpoint::checkpoint_name(half) + " at step " + std::to_string(half)),
             std::string::npos)
@@ -81,20 +80,21 @@ Case cpdi_q4() {
 }
 
 Case tlmpm() {
-  return {"tlmpm_column",
-          "dimension: 1\n"
-          "grid:\n"
-          "  extent: [0.1]\n"
-          "  cell_size: 0.0025\n"
-          "  boundary: {x_min: fixed, x_max: {traction: [\"-1.0e4*min(t, 1)\"]}}\n"
-          "materials: {column: {model: neo_hookean, density: 10, youngs_modulus: 5.0e3, poisson_ratio: 0.3}}\n"
-          "bodies: [{name: column, material: column, shape: {type: box, min: [0], max: [0.1]}, particles_per_cell: 1}]\n"
-          "solver: {scheme: tlmpm, shape_function: lagrange_quadratic, flip_fraction: 0.5, dt: 2.2e-5, end_time: "
-          "0.004, gravity: [-9.81]}\n"
-          "output:\n"
-          "  interval: 0.001\n"
-          "  fields: [displacement, stress, deformation_gradient]\n" +
-              checkpoint_at(0.002)};
+  return {
+      "tlmpm_column",
+      "dimension: 1\n"
+      "grid:\n"
+      "  extent: [0.1]\n"
+      "  cell_size: 0.0025\n"
+      "  boundary: {x_min: fixed, x_max: {traction: [\"-1.0e4*min(t, 1)\"]}}\n"
+      "materials: {column: {model: neo_hookean, density: 10, youngs_modulus: 5.0e3, poisson_ratio: 0.3}}\n"
+      "bodies: [{name: column, material: column, shape: {type: box, min: [0], max: [0.1]}, particles_per_cell: 1}]\n"
+      "solver: {scheme: tlmpm, shape_function: lagrange_quadratic, flip_fraction: 0.5, dt: 2.2e-5, end_time: "
+      "0.004, gravity: [-9.81]}\n"
+      "output:\n"
+      "  interval: 0.001\n"
+      "  fields: [displacement, stress, deformation_gradient]\n" +
+          checkpoint_at(0.002)};
 }
 
 Case apic() {
@@ -155,15 +155,15 @@ Case johnson_cook_damage_3d() {
   return {"johnson_cook_damage_3d",
           "dimension: 3\n"
           "grid:\n"
-          "  extent: [0.004, 0.004, 0.005]\n"
+          "  extent: [0.006, 0.006, 0.004]\n"
           "  cell_size: 0.0005\n"
           "  boundary: {z_min: slip}\n"
           "materials:\n"
           "  copper: {model: johnson_cook, density: 8940, youngs_modulus: 115.0e9, poisson_ratio: 0.31, "
           "yield_stress: 65.0e6, hardening_coefficient: 356.0e6, hardening_exponent: 0.37, "
           "strain_rate_coefficient: 0.013, damage_d1: 0.54, damage_d2: 4.89, damage_d3: -3.03, damage_d4: 0.014}\n"
-          "bodies: [{name: block, material: copper, shape: {type: box, min: [0.001, 0.001, 0], max: [0.0035, 0.003, "
-          "0.0025]}, velocity: [0, 0, -400]}]\n"
+          "bodies: [{name: block, material: copper, shape: {type: box, min: [0.002, 0.002, 0], max: [0.0045, 0.004, "
+          "0.0025]}, velocity: [0, 0, -300]}]\n"
           "solver: {scheme: musl, shape_function: linear, cfl: 0.5, end_time: 4.0e-6}\n"
           "output:\n"
           "  interval: 1.0e-6\n"
@@ -223,7 +223,9 @@ Case contact_rigid() {
 
 class InterruptedRun : public ::testing::TestWithParam<Case> {};
 
-TEST_P(InterruptedRun, ReachesTheSameBitsAsTheUninterruptedOne) { check_interrupted_run_reaches_the_same_bits(GetParam()); }
+TEST_P(InterruptedRun, ReachesTheSameBitsAsTheUninterruptedOne) {
+  check_interrupted_run_reaches_the_same_bits(GetParam());
+}
 
 std::vector<Case> cases() {
   std::vector<Case> all{two_disks(), cpdi_q4(), tlmpm(), apic()};
@@ -263,12 +265,13 @@ TEST(Restart, KilledWhileWritingACheckpointContinuesThePreviousOne) {
   const fs::path dir = scratch("restart_kill_in_write");
   std::ofstream(dir / "scene.yaml") << two_disks_scene("  checkpoint: {interval: 0.1, keep: 3}\n");
   const std::string scene = (dir / "scene.yaml").string();
-  const Result ref = mpm("run " + scene + " -o " + (dir / "reference").string(), dir);
+  const Result ref = cli::mpm("run " + scene + " -o " + (dir / "reference").string(), dir);
   ASSERT_EQ(ref.status, 0) << ref.err;
   const auto steps = checkpoint_steps(dir / "reference" / "checkpoints");  // at T/4, T/2, 3T/4, T; keep 3
   ASSERT_EQ(steps.size(), 3u);
   // The second checkpoint (T/2) is killed halfway through its datasets: the first (T/4) stays valid.
-  const Result killed_run = mpm("run " + scene + " -o " + (dir / "run").string(), dir, "MPM_DEBUG_KILL_IN_CHECKPOINT=2");
+  const Result killed_run =
+      cli::mpm("run " + scene + " -o " + (dir / "run").string(), dir, "MPM_DEBUG_KILL_IN_CHECKPOINT=2");
   EXPECT_TRUE(killed(killed_run)) << killed_run.status << "\n" << killed_run.err;
   const auto left = checkpoint_steps(dir / "run" / "checkpoints");
   ASSERT_EQ(left.size(), 1u);
@@ -276,9 +279,8 @@ TEST(Restart, KilledWhileWritingACheckpointContinuesThePreviousOne) {
   for (const auto& e : fs::directory_iterator(dir / "run" / "checkpoints"))
     temporary = temporary || e.path().filename().string().find(".tmp-") != std::string::npos;
   EXPECT_TRUE(temporary);
-  const Result resumed = mpm("run " + scene + " -o " + (dir / "run").string() + " --restart " +
-                                 (dir / "run" / "checkpoints").string(),
-                             dir);
+  const Result resumed = cli::mpm(
+      "run " + scene + " -o " + (dir / "run").string() + " --restart " + (dir / "run" / "checkpoints").string(), dir);
   ASSERT_EQ(resumed.status, 0) << resumed.err;
   EXPECT_NE(resumed.err.find(mpm::checkpoint::checkpoint_name(left[0])), std::string::npos) << resumed.err;
   expect_same_output(dir / "reference", dir / "run", steps.back());
@@ -289,8 +291,8 @@ TEST(Restart, CheckpointsDoNotChangeTheRun) {
   const fs::path dir = scratch("restart_no_effect");
   std::ofstream(dir / "with.yaml") << two_disks().scene;
   std::ofstream(dir / "without.yaml") << two_disks_scene("");
-  ASSERT_EQ(mpm("run " + (dir / "with.yaml").string() + " -o " + (dir / "with").string(), dir).status, 0);
-  ASSERT_EQ(mpm("run " + (dir / "without.yaml").string() + " -o " + (dir / "without").string(), dir).status, 0);
+  ASSERT_EQ(cli::mpm("run " + (dir / "with.yaml").string() + " -o " + (dir / "with").string(), dir).status, 0);
+  ASSERT_EQ(cli::mpm("run " + (dir / "without.yaml").string() + " -o " + (dir / "without").string(), dir).status, 0);
   EXPECT_FALSE(fs::exists(dir / "without" / "checkpoints"));
   const auto files = output_files(dir / "with");
   EXPECT_EQ(output_files(dir / "without"), files);
@@ -304,14 +306,15 @@ TEST(Restart, SignalsStopWithTheirExitStatus) {
   const std::string run = "run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string();
   for (const auto& [name, status] : {std::pair{"INT", 130}, std::pair{"USR1", 138}, std::pair{"TERM", 143}}) {
     fs::remove_all(dir / "out");
-    const Result r = mpm(run, dir, std::string("MPM_DEBUG_RAISE_AT_STEP=10:") + name);
+    const Result r = cli::mpm(run, dir, std::string("MPM_DEBUG_RAISE_AT_STEP=10:") + name);
     EXPECT_EQ(r.status, status) << name << "\n" << r.err;
-    EXPECT_NE(r.err.find(std::string("stopped by SIG") + name + " at step 10 (t = 0.02 s)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(std::string("stopped by SIG") + name + " at step 10 (t = 0.02 s)"), std::string::npos)
+        << r.err;
     EXPECT_EQ(checkpoint_steps(dir / "out" / "checkpoints"), std::vector<long long>{10});
   }
   // A second SIGINT stops at once: no checkpoint, no message.
   fs::remove_all(dir / "out");
-  const Result twice = mpm(run, dir, "MPM_DEBUG_RAISE_AT_STEP=10:INT+INT");
+  const Result twice = cli::mpm(run, dir, "MPM_DEBUG_RAISE_AT_STEP=10:INT+INT");
   EXPECT_EQ(twice.status, 130) << twice.err;
   EXPECT_EQ(twice.err.find("stopped by"), std::string::npos) << twice.err;
   EXPECT_TRUE(checkpoint_steps(dir / "out" / "checkpoints").empty());
@@ -338,17 +341,37 @@ TEST(Restart, TheGuardStopsTheRestartedRunWhereItStoppedTheOriginal) {
          "solver: {cfl: 0.5, end_time: 1}\n"
          "output: {interval: 0.005, fields: [velocity, stress]}\n";
   const std::string run = "run " + (dir / "scene.yaml").string() + " -o ";
-  const Result ref = mpm(run + (dir / "reference").string(), dir);
+  const Result ref = cli::mpm(run + (dir / "reference").string(), dir);
   ASSERT_EQ(ref.status, 3) << ref.err;
-  const Result stopped = mpm(run + (dir / "run").string(), dir, "MPM_DEBUG_RAISE_AT_STEP=7:TERM");
+  const Result stopped = cli::mpm(run + (dir / "run").string(), dir, "MPM_DEBUG_RAISE_AT_STEP=7:TERM");
   ASSERT_EQ(stopped.status, 143) << stopped.err;
-  const Result resumed = mpm(run + (dir / "run").string() + " --restart " + (dir / "run" / "checkpoints").string(), dir);
+  const Result resumed =
+      cli::mpm(run + (dir / "run").string() + " --restart " + (dir / "run" / "checkpoints").string(), dir);
   EXPECT_EQ(resumed.status, 3) << resumed.err;
   const auto guard = [](const std::string& err) { return err.substr(err.find("stability guard: step")); };
   EXPECT_EQ(guard(resumed.err), guard(ref.err));
   const auto files = output_files(dir / "reference");
   EXPECT_EQ(output_files(dir / "run"), files);
   for (const auto& f : files) EXPECT_TRUE(slurp(dir / "reference" / f) == slurp(dir / "run" / f)) << f;
+  if (!HasFailure()) fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+using namespace restart_support;
+
+// wall_interval: a checkpoint whenever that much wall-clock time has passed (here after every step of the first
+// 12); keep: the newest three are left.
+TEST(Restart, WallIntervalAndKeep) {
+  const fs::path dir = scratch("restart_wall_interval");
+  std::string scene = two_disks().scene;
+  scene.replace(scene.find("  checkpoint:"), std::string::npos, "  checkpoint: {wall_interval: 1.0e-9, keep: 3}\n");
+  std::ofstream(dir / "scene.yaml") << scene;
+  const Result r = cli::mpm("run " + (dir / "scene.yaml").string() + " --steps 12 -o " + (dir / "out").string(), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(checkpoint_steps(dir / "out" / "checkpoints"), (std::vector<long long>{10, 11, 12}));
   if (!HasFailure()) fs::remove_all(dir);
 }
 

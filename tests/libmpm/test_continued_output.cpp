@@ -22,7 +22,8 @@ class ContinuedOutput : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("mpm_continued_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    dir_ =
+        fs::temp_directory_path() / ("mpm_continued_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -126,10 +127,11 @@ TEST_F(ContinuedOutput, ParticleFilesFromVtuAndCsv) {
   EXPECT_EQ(vtu.field("velocity")->values, cloud.fields[1].values);
   EXPECT_EQ(vtu.row(1), (dir_ / "p.vtu").string() + ": point 1");
 
-  write(dir_ / "p.csv", "x,y,volume,velocity_x,velocity_y,stress_xx,stress_yy,stress_zz,stress_xy,stress_yz,stress_xz\n"
-                        "0.1,0.2,1e-4,1,2,-1,-2,-3,0.5,0,0\n"
-                        "\n"
-                        "0.3,+0.4,2e-4,3,4,0,0,0,0,0,0\n");
+  write(dir_ / "p.csv",
+        "x,y,volume,velocity_x,velocity_y,stress_xx,stress_yy,stress_zz,stress_xy,stress_yz,stress_xz\n"
+        "0.1,0.2,1e-4,1,2,-1,-2,-3,0.5,0,0\n"
+        "\n"
+        "0.3,+0.4,2e-4,3,4,0,0,0,0,0,0\n");
   const auto csv = mpm::io::read_particle_file(dir_ / "p.csv");
   EXPECT_EQ(csv.cloud.points, cloud.points);
   EXPECT_EQ(csv.field("volume")->values, cloud.fields[0].values);

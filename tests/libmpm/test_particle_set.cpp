@@ -55,6 +55,9 @@ TEST(ParticleSet, CopyIntoSameShapeReusesStorage) {
 }  // namespace
 }  // namespace mpm
 
+namespace mpm {
+namespace {
+
 // ---- Every field as bytes (field_layout.hpp): what checkpoints and particle migration use ----
 
 struct Pair {
@@ -79,8 +82,8 @@ TEST(ParticleSetPacking, LayoutNamesEveryFieldWithItsScalarType) {
   std::vector<std::string> names;
   for (const auto& f : layout) names.push_back(f.name);
   // the core fields in a fixed order, then the on-demand ones by name
-  EXPECT_EQ(names, (std::vector<std::string>{"position", "velocity", "mass", "reference_volume",
-                                             "deformation_gradient", "stress", "id", "pair", "region", "temperature"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"position", "velocity", "mass", "reference_volume", "deformation_gradient",
+                                             "stress", "id", "pair", "region", "temperature"}));
   EXPECT_EQ(layout[0], (FieldLayout{"position", ScalarType::float64, 2}));
   EXPECT_EQ(layout[4], (FieldLayout{"deformation_gradient", ScalarType::float64, 4}));
   EXPECT_EQ(layout[5], (FieldLayout{"stress", ScalarType::float64, 4}));  // packed xx, yy, zz, xy
@@ -108,7 +111,7 @@ TEST(ParticleSetPacking, PackFieldOfChosenParticlesThenUnpackRestoresThem) {
   p.pack_field("pair", std::vector<Index>{0}, pair);
   q.unpack_field("pair", 2, pair);
   EXPECT_EQ(q.field<Pair>("pair")[2].b, -2.5);
-  EXPECT_THROW(q.unpack_field("pair", 3, pair), std::out_of_range);              // past the end
+  EXPECT_THROW(q.unpack_field("pair", 3, pair), std::out_of_range);                          // past the end
   EXPECT_THROW(q.unpack_field("pair", 0, std::span(pair).first(3)), std::invalid_argument);  // not whole
   EXPECT_THROW(p.pack_field("nothing", which, bytes), std::out_of_range);
 }
@@ -140,3 +143,6 @@ TEST(ParticleSetPacking, PackedParticlesAppendToASetOfTheSameLayout) {
   EXPECT_THROW(to.append_packed(std::span(bytes).first(10), 2), std::invalid_argument);
   EXPECT_EQ(to.size(), 5);  // unchanged by the refused append
 }
+
+}  // namespace
+}  // namespace mpm

@@ -98,8 +98,8 @@ ShapeDescription read_shape(const YamlReader& reader, const YamlValue& value, in
     map.required("type", "key", " (or one of mesh, image, particles, union, intersection, difference)");
   if (given.size() > 1)
     reader.fail(*map.find(given[1]),
-                fmt::format("a shape is either a type, a mesh, an image, a particle file, a union, an intersection "
-                            "or a difference; this one has both {} and {}",
+                fmt::format("a shape is either a type, a mesh, an image, a union, an intersection or a difference; "
+                            "this one has both {} and {} (a particle file is a shape of its own too)",
                             given[0], given[1]));
   const std::string& kind = given[0];
   if (kind == "particles") {
