@@ -29,8 +29,9 @@ SeedParticles<Dim> read_seed_particles(const BodyDescription& bd, int index, con
   }
   const io::FieldArray* volume = file.field("volume");
   if (!volume || volume->components != 1)
-    fail(bd.shape.file + ": no scalar field 'volume' (the particle volume, m^3; m^2 in 2D): a particle file needs "
-                         "positions and volumes");
+    fail(bd.shape.file +
+         ": no scalar field 'volume' (the particle volume, m^3; m^2 in 2D): a particle file needs "
+         "positions and volumes");
   const io::FieldArray* body = file.field("body");
   if (bd.shape.particle_body && !body)
     fail(bd.shape.file + ": no field 'body' to select body " + std::to_string(*bd.shape.particle_body) + " from");
@@ -39,7 +40,8 @@ SeedParticles<Dim> read_seed_particles(const BodyDescription& bd, int index, con
   const io::FieldArray* mass = file.field("mass");
   const io::FieldArray* id = file.field("id");
   if (velocity && velocity->components < Dim)
-    fail(fmt::format("{}: 'velocity' has {} components, fewer than the {} axes", bd.shape.file, velocity->components, Dim));
+    fail(fmt::format("{}: 'velocity' has {} components, fewer than the {} axes", bd.shape.file, velocity->components,
+                     Dim));
   if (stress && stress->components != 6 && stress->components != 9)
     fail(fmt::format("{}: 'stress' has {} components; expected 6 (xx, yy, zz, xy, yz, xz) or 9", bd.shape.file,
                      stress->components));
@@ -88,9 +90,8 @@ SeedParticles<Dim> read_seed_particles(const BodyDescription& bd, int index, con
     }
   }
   if (seed.positions.empty())
-    fail(bd.shape.particle_body
-             ? fmt::format("{}: no particle has body = {}", bd.shape.file, *bd.shape.particle_body)
-             : bd.shape.file + ": the file holds no particle");
+    fail(bd.shape.particle_body ? fmt::format("{}: no particle has body = {}", bd.shape.file, *bd.shape.particle_body)
+                                : bd.shape.file + ": the file holds no particle");
   return seed;
 }
 

@@ -58,7 +58,8 @@ RunCheckpoints::RunCheckpoints(const SceneDescription& scene, std::string scene_
 
 bool RunCheckpoints::due(double time) const {
   if (settings_.interval && time >= next_time_ * (1 - 1e-12)) return true;
-  return settings_.wall_interval && std::chrono::duration<double>(Clock::now() - last_wall_).count() >= *settings_.wall_interval;
+  return settings_.wall_interval &&
+         std::chrono::duration<double>(Clock::now() - last_wall_).count() >= *settings_.wall_interval;
 }
 
 fs::path RunCheckpoints::write(StateArchive& archive, long long step, double time) {
@@ -102,7 +103,8 @@ int RunCheckpoints::restore(const StateArchive& archive) {
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(directory_, error)) {
     const std::string name = entry.path().filename().string();
-    if (name.starts_with(".checkpoint_") && name.find(".h5.tmp-") != std::string::npos) temporaries.push_back(entry.path());
+    if (name.starts_with(".checkpoint_") && name.find(".h5.tmp-") != std::string::npos)
+      temporaries.push_back(entry.path());
   }
   for (const auto& file : temporaries) fs::remove(file, error);
   return removed;
@@ -149,8 +151,8 @@ RestartPoint find_restart_point(const fs::path& file_or_directory, const SceneDe
       point.changes.push_back(std::move(d));
       continue;
     }
-    refused += fmt::format("\n  {}:{}: {}: {} in the checkpoint, {} now", d.where.file, d.where.line, d.key, d.was,
-                           d.now);
+    refused +=
+        fmt::format("\n  {}:{}: {}: {} in the checkpoint, {} now", d.where.file, d.where.line, d.key, d.was, d.now);
   }
   if (!refused.empty())
     throw RestartError(fmt::format(

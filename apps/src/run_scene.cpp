@@ -92,8 +92,9 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   const auto& o = scene.output;
   const std::filesystem::path directory = options.output_directory.value_or(o.directory);
   const std::string scene_text = read_scene_text(scene);
-  RunCheckpoints checkpoints(scene, scene_text,
-                             o.checkpoint.directory.empty() ? directory / "checkpoints" : std::filesystem::path(o.checkpoint.directory));
+  RunCheckpoints checkpoints(
+      scene, scene_text,
+      o.checkpoint.directory.empty() ? directory / "checkpoints" : std::filesystem::path(o.checkpoint.directory));
   std::optional<RestartPoint> restart;
   if (options.restart) {
     restart = find_restart_point(*options.restart, scene, scene_text, log);
@@ -209,8 +210,8 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   summary.warnings = record.warnings;
   if (options.progress) log << '\n';
   summary.steps = sim->step();
-  summary.particle_updates_per_second = static_cast<double>(summary.particles) * (summary.steps - first_step) /
-                                        std::max(summary.wall_seconds, 1e-300);
+  summary.particle_updates_per_second =
+      static_cast<double>(summary.particles) * (summary.steps - first_step) / std::max(summary.wall_seconds, 1e-300);
   const Real e1 = sim->energy().total();
   summary.relative_energy_change = e0 != 0 ? (e1 - e0) / std::abs(e0) : e1;
   fmt::print(log,

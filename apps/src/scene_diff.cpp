@@ -91,7 +91,8 @@ class Differ {
     for (const auto& entry : now) {  // keys of the new scene, in its order; then the removed ones
       const std::string key = entry.first.as<std::string>();
       seen.push_back(key);
-      compare(saved[key], entry.second, key_path(key), entry.second.IsNull() ? entry.first.Mark() : entry.second.Mark());
+      compare(saved[key], entry.second, key_path(key),
+              entry.second.IsNull() ? entry.first.Mark() : entry.second.Mark());
     }
     for (const auto& entry : saved) {
       const std::string key = entry.first.as<std::string>();

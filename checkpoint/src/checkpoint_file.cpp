@@ -110,8 +110,9 @@ void write_entry(hid_t file, const std::string& name, const ArchivedArray& a, hi
     space.emplace(H5Screate(a.bytes.empty() ? H5S_NULL : H5S_SCALAR), H5Sclose);
   } else {
     std::vector<hsize_t> dims(a.shape.begin(), a.shape.end());
-    space.emplace(dims.empty() ? H5Screate(H5S_SCALAR) : H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
-                  H5Sclose);
+    space.emplace(
+        dims.empty() ? H5Screate(H5S_SCALAR) : H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+        H5Sclose);
   }
   const hid_t memory_type = a.text ? type->get() : native_type(a.type);
   const Handle set(H5Dcreate2(file, name.c_str(), memory_type, space->get(), link_properties, H5P_DEFAULT, H5P_DEFAULT),
@@ -256,7 +257,8 @@ std::vector<fs::path> checkpoint_files(const fs::path& directory) {
         std::all_of(name.begin() + 11, name.end() - 3, [](char c) { return c >= '0' && c <= '9'; }))
       files.push_back(entry.path());
   }
-  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) { return a.filename() > b.filename(); });
+  std::sort(files.begin(), files.end(),
+            [](const fs::path& a, const fs::path& b) { return a.filename() > b.filename(); });
   return files;
 }
 

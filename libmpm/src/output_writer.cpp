@@ -26,11 +26,13 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
   }
   fields_.push_back("id");
   if (grid_) grid_pvd_ = std::make_unique<io::PvdCollection>(directory_ / (prefix_ + "_grid.pvd"));
-  const std::vector<std::string> columns{"time",         "step",       "kinetic_energy", "strain_energy",
-                                         "gravity_potential_energy", "total_energy", "momentum_x",
-                                         "momentum_y", "momentum_z", "mass", "plastic_work", "thermal_energy"};
+  const std::vector<std::string> columns{
+      "time",         "step",          "kinetic_energy", "strain_energy", "gravity_potential_energy",
+      "total_energy", "momentum_x",    "momentum_y",     "momentum_z",    "mass",
+      "plastic_work", "thermal_energy"};
   if (restart) {
-    energy_ = std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns, io::load_mark(*restart, "output/energy"));
+    energy_ =
+        std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns, io::load_mark(*restart, "output/energy"));
     restore_state(*restart);
   } else {
     energy_ = std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns);

@@ -40,7 +40,8 @@ int frame_number(const std::string& name, const std::string& prefix) {
   if (!name.starts_with(prefix + "_")) return -1;
   std::string rest = name.substr(prefix.size() + 1);
   for (const char* kind : {"grid_", "domains_"})
-    if (rest.starts_with(kind) && rest.size() == std::string(kind).size() + 10) rest = rest.substr(std::string(kind).size());
+    if (rest.starts_with(kind) && rest.size() == std::string(kind).size() + 10)
+      rest = rest.substr(std::string(kind).size());
   if (rest.size() != 10 || !(rest.ends_with(".vtu") || rest.ends_with(".vti"))) return -1;
   for (int k = 0; k < 6; ++k)
     if (!std::isdigit(static_cast<unsigned char>(rest[k]))) return -1;

@@ -23,7 +23,8 @@ std::vector<std::string> body_prefixes(const std::vector<Body<Dim>>& bodies) {
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     std::string name = bodies[b].name;
     std::replace(name.begin(), name.end(), '/', '_');
-    if (name.empty() || name == "." || name == ".." || std::find(out.begin(), out.end(), "bodies/" + name + "/") != out.end())
+    if (name.empty() || name == "." || name == ".." ||
+        std::find(out.begin(), out.end(), "bodies/" + name + "/") != out.end())
       name += "_" + std::to_string(b);
     out.push_back("bodies/" + name + "/");
   }
@@ -104,16 +105,17 @@ std::vector<std::string> Simulation<Dim>::restore_state(const StateArchive& arch
       const std::uint64_t components = a.shape.size() > 1 ? a.shape[1] : 1;
       if (a.type != f.scalar || components != f.components || a.shape.empty() ||
           a.shape[0] != static_cast<std::uint64_t>(p.size()))
-        throw ArchiveError(fmt::format("body '{}', field '{}': the checkpoint holds {} x {} {}, the run needs {} x {} {}",
-                                       bodies_[b].name, f.name, a.shape.empty() ? 0 : a.shape[0], components,
-                                       scalar_type_name(a.type), p.size(), f.components, scalar_type_name(f.scalar)));
+        throw ArchiveError(
+            fmt::format("body '{}', field '{}': the checkpoint holds {} x {} {}, the run needs {} x {} {}",
+                        bodies_[b].name, f.name, a.shape.empty() ? 0 : a.shape[0], components, scalar_type_name(a.type),
+                        p.size(), f.components, scalar_type_name(f.scalar)));
       p.unpack_field(f.name, 0, a.bytes);
     }
     for (const auto& saved : archive.children(prefix))
       if (saved != storage_order_entry &&
           std::none_of(layout.begin(), layout.end(), [&](const FieldLayout& f) { return f.name == saved; }))
-        notes.push_back(fmt::format("body '{}': field '{}' of the checkpoint is not used by this run", bodies_[b].name,
-                                    saved));
+        notes.push_back(
+            fmt::format("body '{}': field '{}' of the checkpoint is not used by this run", bodies_[b].name, saved));
     // The particles are now in id order; put them back in the order they were stored in.
     std::vector<Index> order(storage.size());
     for (std::size_t i = 0; i < storage.size(); ++i) {

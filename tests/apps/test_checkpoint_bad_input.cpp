@@ -120,9 +120,9 @@ TEST(CheckpointCommand, DescribesAGoodCheckpointAndRefusesADamagedOne) {
   const fs::path file = dir / "out" / "checkpoints" / mpm::checkpoint::checkpoint_name(100);
   const Result r = cli::mpm("checkpoint " + file.string(), dir);
   EXPECT_EQ(r.status, 0) << r.err;
-  for (const std::string part :
-       {"every checksum matches", "time: 0.2", "step 100, 2D", "body lower_left: 112 particles; fields: ",
-        "body upper_right: 112 particles", "stress (float64 x 4)", "id (uint32)", "output: 5 frames written"})
+  for (const std::string part : {"every checksum matches", "time: 0.2", "step 100, 2D",
+                                 "body lower_left: 112 particles; fields: ", "body upper_right: 112 particles",
+                                 "stress (float64 x 4)", "id (uint32)", "output: 5 frames written"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
   std::string bytes = slurp(file);
   bytes.resize(bytes.size() / 2);

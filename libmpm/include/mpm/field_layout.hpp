@@ -8,8 +8,8 @@
 /// The scalar type of a field of type T (FieldScalar<T>): T itself for a number; the Scalar of a
 /// fixed-size Eigen matrix or of a packed symmetric tensor; that of the elements of a std::array; the
 /// `scalar_type` a struct declares (`using scalar_type = Real;` in a struct of Reals, such as the plastic
-/// history); otherwise the field is opaque bytes (components = sizeof(T)). A checkpoint stores a field as an array of particles x
-/// components of its scalar type, so h5py reads `bodies/NAME/stress` as an (n, 4) array of doubles.
+/// history); otherwise the field is opaque bytes (components = sizeof(T)). A checkpoint stores a field as an array of
+/// particles x components of its scalar type, so h5py reads `bodies/NAME/stress` as an (n, 4) array of doubles.
 
 #include <array>
 #include <cstddef>
@@ -36,17 +36,20 @@ struct ScalarOf {
   using type = std::byte;  // opaque
 };
 template <class T>
-  requires std::is_arithmetic_v<T>
+requires std::is_arithmetic_v<T>
 struct ScalarOf<T> {
   using type = T;
 };
 template <class T>
-  requires requires { typename T::Scalar; T::SizeAtCompileTime; }
+requires requires {
+  typename T::Scalar;
+  T::SizeAtCompileTime;
+}
 struct ScalarOf<T> {
   using type = typename T::Scalar;
 };
 template <class T>
-  requires requires { typename T::scalar_type; }
+requires requires { typename T::scalar_type; }
 struct ScalarOf<T> {
   using type = typename T::scalar_type;
 };
@@ -79,9 +82,9 @@ constexpr ScalarType scalar_type_of() {
 
 /// One field as bytes.
 struct FieldLayout {
-  std::string name;                          ///< "position", "stress", ... or the on-demand field's key name
-  ScalarType scalar = ScalarType::opaque;    ///< type of each value
-  std::size_t components = 1;                ///< values per particle (bytes per particle when opaque)
+  std::string name;                        ///< "position", "stress", ... or the on-demand field's key name
+  ScalarType scalar = ScalarType::opaque;  ///< type of each value
+  std::size_t components = 1;              ///< values per particle (bytes per particle when opaque)
   std::size_t bytes_per_particle() const { return components * scalar_size(scalar); }
   bool operator==(const FieldLayout&) const = default;
 };

@@ -85,9 +85,7 @@ struct TypedField final : FieldBase {
   }
   std::size_t bytes_per_particle() const override { return sizeof(T); }
   FieldLayout layout(std::string_view name) const override { return field_layout_of<T>(name); }
-  std::byte* pack(std::span<const Index> which, std::byte* out) const override {
-    return pack_values(data, which, out);
-  }
+  std::byte* pack(std::span<const Index> which, std::byte* out) const override { return pack_values(data, which, out); }
   const std::byte* unpack(std::size_t first, std::size_t count, const std::byte* in) override {
     return unpack_values(data, first, count, in);
   }
@@ -225,8 +223,9 @@ class ParticleSet {
   void pack_field(std::string_view name, std::span<const Index> which, std::vector<std::byte>& out) const {
     const std::size_t at = out.size();
     out.resize(at + which.size() * layout_of(name).bytes_per_particle());
-    with_field(*this, name, [&](const auto& v) { detail::pack_values(v, which, out.data() + at); },
-               [&](const detail::FieldBase& f) { f.pack(which, out.data() + at); });
+    with_field(
+        *this, name, [&](const auto& v) { detail::pack_values(v, which, out.data() + at); },
+        [&](const detail::FieldBase& f) { f.pack(which, out.data() + at); });
   }
   /// Sets field `name` of particles first .. first + count - 1 from `bytes` (count x its bytes per particle;
   /// std::invalid_argument otherwise, std::out_of_range for an unknown field or particles past the end).
@@ -238,8 +237,9 @@ class ParticleSet {
                                   " bytes are not a whole number of particles of " + std::to_string(bpp) + " bytes");
     if (first < 0 || static_cast<std::size_t>(first) + count > static_cast<std::size_t>(size()))
       throw std::out_of_range("particle field '" + std::string(name) + "': particles beyond the set");
-    with_field(*this, name, [&](auto& v) { detail::unpack_values(v, first, count, bytes.data()); },
-               [&](detail::FieldBase& f) { f.unpack(first, count, bytes.data()); });
+    with_field(
+        *this, name, [&](auto& v) { detail::unpack_values(v, first, count, bytes.data()); },
+        [&](detail::FieldBase& f) { f.unpack(first, count, bytes.data()); });
   }
   /// Appends every field of the particles `which` to `out`, field after field in field_layout() order: what
   /// append_packed() of a set with the same layout reads (particle migration).

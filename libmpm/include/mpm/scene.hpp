@@ -71,18 +71,18 @@ struct ShapeDescription {
   std::vector<std::array<double, 2>> vertices;       ///< polygon corners, m (either orientation)
   std::vector<ShapeDescription> parts;  ///< union/intersection/difference operands (difference: first minus the rest)
   // CAD meshes and images
-  std::string file;  ///< mesh, image or particle file (made relative to the working directory)
-  double scale = 1;                            ///< mesh: factor on the file's coordinates (1e-3 for mm), applied first
-  std::array<double, 3> rotation{0, 0, 0};     ///< mesh: rotation angles about x, then y, then z, degrees
-  std::array<double, 3> translation{0, 0, 0};  ///< mesh: added last, m
-  std::optional<double> section;               ///< 2D scene: the mesh is cut by the plane z = section, m
-  std::array<double, 3> pixel_size{0, 0, 0};   ///< image: pixel/voxel size per axis, m (0: the .vti's spacing)
+  std::string file;                         ///< mesh, image or particle file (made relative to the working directory)
+  double scale = 1;                         ///< mesh: factor on the file's coordinates (1e-3 for mm), applied first
+  std::array<double, 3> rotation{0, 0, 0};  ///< mesh: rotation angles about x, then y, then z, degrees
+  std::array<double, 3> translation{0, 0, 0};         ///< mesh: added last, m
+  std::optional<double> section;                      ///< 2D scene: the mesh is cut by the plane z = section, m
+  std::array<double, 3> pixel_size{0, 0, 0};          ///< image: pixel/voxel size per axis, m (0: the .vti's spacing)
   std::optional<std::array<double, 3>> image_origin;  ///< image: lower corner of the image, m
   std::optional<double> threshold;                    ///< image: pixels with value >= threshold form the body
   std::optional<double> label;                        ///< image: pixels with exactly this value form the body
-  bool pixel_particles = false;  ///< image: one particle per selected pixel instead of the grid lattice
+  bool pixel_particles = false;      ///< image: one particle per selected pixel instead of the grid lattice
   std::optional<int> particle_body;  ///< particles: only the rows whose field `body` has this value
-  SourceLocation where;          ///< of the shape, for errors found while filling it
+  SourceLocation where;              ///< of the shape, for errors found while filling it
 };
 
 /// A body: a set of particles with one material.
@@ -119,11 +119,11 @@ struct SolverDescription {
 /// `output.checkpoint`: when a run writes checkpoints (docs/scene-reference.md). Without it a run writes one
 /// only when a signal stops it.
 struct CheckpointDescription {
-  bool enabled = false;                ///< the scene has the section
-  std::optional<double> interval;      ///< s of simulated time between checkpoints
-  std::optional<double> wall_interval; ///< s of wall-clock time between checkpoints
-  int keep = 2;                        ///< newest checkpoints kept (older ones are removed)
-  std::string directory;               ///< empty: OUTPUT_DIRECTORY/checkpoints
+  bool enabled = false;                 ///< the scene has the section
+  std::optional<double> interval;       ///< s of simulated time between checkpoints
+  std::optional<double> wall_interval;  ///< s of wall-clock time between checkpoints
+  int keep = 2;                         ///< newest checkpoints kept (older ones are removed)
+  std::string directory;                ///< empty: OUTPUT_DIRECTORY/checkpoints
   SourceLocation where;
 };
 

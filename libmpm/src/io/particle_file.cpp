@@ -144,7 +144,8 @@ ParticleFile read_particle_file(const fs::path& file) {
     if (!std::isfinite(cloud.points[i])) throw ParticleFileError(out.row(i / 3) + ": position is not finite");
   for (const auto& f : cloud.fields)
     for (std::size_t i = 0; i < f.values.size(); ++i)
-      if (!std::isfinite(f.values[i])) throw ParticleFileError(out.row(i / f.components) + ": " + f.name + " is not finite");
+      if (!std::isfinite(f.values[i]))
+        throw ParticleFileError(out.row(i / f.components) + ": " + f.name + " is not finite");
   return out;
 }
 

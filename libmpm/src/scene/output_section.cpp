@@ -14,8 +14,10 @@ CheckpointDescription read_checkpoint(const io::YamlReader& reader, const io::Ya
   CheckpointDescription checkpoint;
   checkpoint.enabled = true;
   checkpoint.where = reader.location(value.mark);
-  if (const auto interval = map.find("interval")) checkpoint.interval = reader.number(*interval, io::Range::above(0), "s");
-  if (const auto wall = map.find("wall_interval")) checkpoint.wall_interval = reader.number(*wall, io::Range::above(0), "s");
+  if (const auto interval = map.find("interval"))
+    checkpoint.interval = reader.number(*interval, io::Range::above(0), "s");
+  if (const auto wall = map.find("wall_interval"))
+    checkpoint.wall_interval = reader.number(*wall, io::Range::above(0), "s");
   if (const auto keep = map.find("keep")) checkpoint.keep = reader.integer(*keep, 1);
   if (const auto directory = map.find("directory")) checkpoint.directory = reader.name(*directory);
   return checkpoint;

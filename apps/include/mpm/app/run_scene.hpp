@@ -52,8 +52,9 @@ void check_scene(const SceneDescription& scene, std::ostream& out);
 
 /// Runs the scene to its end time (or options.end_time, or options.steps steps, or until SIGINT, SIGTERM or
 /// SIGUSR1), writing output and checkpoints, or continues a checkpoint (options.restart); returns the
-/// summary. Throws RestartError or CheckpointError for a checkpoint it cannot continue. Throws SceneError for a scene that only fails once built, StabilityError (after writing the last
-/// good state) if the guard trips, std::invalid_argument for steps < 1 or an end time that is not positive.
+/// summary. Throws RestartError or CheckpointError for a checkpoint it cannot continue. Throws SceneError for a scene
+/// that only fails once built, StabilityError (after writing the last good state) if the guard trips,
+/// std::invalid_argument for steps < 1 or an end time that is not positive.
 RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& log);
 
 }  // namespace mpm::app

@@ -13,9 +13,9 @@
 namespace mpm::app {
 
 struct SceneDifference {
-  std::string key;        ///< dotted path: "materials.steel.yield_stress", "bodies[0].shape.radius"
-  SourceLocation where;   ///< in the new scene; in the checkpoint's scene (file "checkpoint") for a removed key
-  std::string was, now;   ///< the values as YAML text ("(absent)" when missing)
+  std::string key;       ///< dotted path: "materials.steel.yield_stress", "bodies[0].shape.radius"
+  SourceLocation where;  ///< in the new scene; in the checkpoint's scene (file "checkpoint") for a removed key
+  std::string was, now;  ///< the values as YAML text ("(absent)" when missing)
   bool run_control = false;
 };
 
