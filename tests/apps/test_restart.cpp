@@ -318,6 +318,10 @@ TEST(Restart, SignalsStopWithTheirExitStatus) {
   EXPECT_EQ(twice.status, 130) << twice.err;
   EXPECT_EQ(twice.err.find("stopped by"), std::string::npos) << twice.err;
   EXPECT_TRUE(checkpoint_steps(dir / "out" / "checkpoints").empty());
+  // `mpm run --help` says so.
+  const Result help = cli::mpm("run --help", dir);
+  EXPECT_NE(help.out.find("SIGINT (Ctrl-C), SIGTERM and SIGUSR1"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("128 + N stopped by signal N"), std::string::npos) << help.out;
   if (!HasFailure()) fs::remove_all(dir);
 }
 

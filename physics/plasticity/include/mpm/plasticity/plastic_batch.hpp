@@ -36,18 +36,27 @@ class PlasticBatch final : public Material<Dim> {
     if (params_.thermal) p.add_field(mpm::keys::temperature, params_.room_temperature);  // kept if present
   }
 
-  /// Every particle runs the vector law, in packs aligned to the particle index (particles g .. g +
-  /// lane_count - 1, g a multiple of lane_count); a pack that the block [begin, end) cuts is padded. The block
-  /// boundaries are chosen by TBB at run time, and the vector and the scalar law agree only to round-off: with
-  /// packs fixed by the index, a particle's update is the same bits whatever the thread count and the
-  /// partitioning (restarts at another thread count, ranks of an MPI run).
+  /// Which law a particle runs depends on its index only, never on the block [begin, end): the vector law in
+  /// packs aligned to the index (particles g .. g + lane_count - 1, g a multiple of lane_count; a pack that
+  /// the block cuts is padded, and a lane's result does not depend on its pack-mates), the scalar law for the
+  /// last size() % lane_count particles of the set. The blocks are chosen by TBB at run time, and the two laws
+  /// agree only to round-off: so a particle's update is the same bits whatever the thread count (a restart
+  /// at another thread count) and however the range is split.
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
     State* state = p.field(state_field).data();
     Real* temperature = params_.thermal ? p.field(mpm::keys::temperature).data() : nullptr;
     Real max_c2 = 0;
-    for (Index g = begin - begin % lane_count; g < end; g += lane_count) {
-      const Index first = std::max(g, begin), last = std::min<Index>(g + lane_count, end);
+    const Index packed_end = std::min(end, p.size() - p.size() % lane_count);
+    for (Index g = begin - begin % lane_count; g < packed_end; g += lane_count) {
+      const Index first = std::max(g, begin), last = std::min<Index>(g + lane_count, packed_end);
       max_c2 = std::max(max_c2, update_pack(p, g, first, last, L + (first - begin), dt, state, temperature));
+    }
+    for (Index i = std::max(begin, packed_end); i < end; ++i) {
+      const Mat<Dim> F = p.F[i];
+      const Real J = F.determinant();
+      Model::template update_point<Dim>(params_, F, Mat<Dim>(L[i - begin]), J, dt, p.volume0[i] * J, state[i],
+                                        temperature ? temperature + i : nullptr, p.stress[i]);
+      max_c2 = std::max(max_c2, Model::wave_speed_squared(params_, J));
     }
     Real sum = 0;  // finite stresses have a finite sum
     Vec<Dim> max_v = Vec<Dim>::Zero();
