@@ -95,7 +95,7 @@ FieldLayout field_layout_of(std::string_view name) {
   using S = FieldScalar<T>;
   constexpr ScalarType type = scalar_type_of<S>();
   static_assert(sizeof(T) % sizeof(S) == 0, "a field's size must be a whole number of its scalars");
-  return {std::string(name), type, type == ScalarType::opaque ? sizeof(T) : sizeof(T) / sizeof(S)};
+  return {std::string(name), type, sizeof(T) / scalar_size(type)};  // opaque: bytes (scalar_size 1)
 }
 
 }  // namespace mpm
