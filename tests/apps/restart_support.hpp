@@ -100,4 +100,23 @@ inline Case two_disks() {
               checkpoint_at(0.2)};
 }
 
+/// `text` with its first `from` replaced by `to` (a test failure when there is none).
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// `scene` (the two disks') with its checkpoint line replaced by `checkpoint` (empty: no checkpoints).
+inline std::string with_checkpoint(std::string scene, const std::string& checkpoint) {
+  return scene.replace(scene.find("  checkpoint:"), std::string::npos, checkpoint);
+}
+
+/// `scene` (the two disks') with its two body lines replaced by `bodies`.
+inline std::string with_bodies(std::string scene, const std::string& bodies) {
+  const auto first = scene.find("  - {name: lower_left");
+  return scene.replace(first, scene.find("solver:") - first, bodies);
+}
+
 }  // namespace restart_support

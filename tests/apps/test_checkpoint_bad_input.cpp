@@ -75,9 +75,10 @@ TEST_F(BadCheckpoint, OfAnotherProgramVersion) {
 }
 
 TEST_F(BadCheckpoint, OfAnotherScene) {
-  std::string other = two_disks().scene;
-  other.replace(other.find("  - {name: upper_right"), other.find("solver:") - other.find("  - {name: upper_right"), "");
-  other.replace(other.find("cell_size: 0.05"), 15, "cell_size: 0.025");
+  const std::string scene = two_disks().scene;
+  const std::string lower_left = scene.substr(
+      scene.find("  - {name: lower_left"), scene.find("  - {name: upper_right") - scene.find("  - {name: lower_left"));
+  const std::string other = replaced(with_bodies(scene, lower_left), "cell_size: 0.05", "cell_size: 0.025");
   std::ofstream(dir_ / "other.yaml") << other;
   expect_refused(good_, "grid.cell_size: 0.05 in the checkpoint, 0.025 now", "other.yaml");
   expect_refused(good_, "bodies: ", "other.yaml");  // a body less: the list differs
@@ -92,10 +93,8 @@ TEST_F(BadCheckpoint, DirectoryWithoutAValidCheckpoint) {
 
 TEST(CheckpointDirectory, UnwritableIsRefusedBeforeTheFirstStep) {
   const fs::path dir = scratch("checkpoint_unwritable");
-  std::string scene = two_disks().scene;
-  scene.replace(scene.find("  checkpoint: {"), std::string::npos,
-                "  checkpoint: {interval: 0.2, directory: /dev/null/checkpoints}\n");
-  std::ofstream(dir / "scene.yaml") << scene;
+  std::ofstream(dir / "scene.yaml") << with_checkpoint(
+      two_disks().scene, "  checkpoint: {interval: 0.2, directory: /dev/null/checkpoints}\n");
   const Result r = cli::mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find((dir / "scene.yaml").string() + ":11:15: output.checkpoint: cannot write checkpoints to the "

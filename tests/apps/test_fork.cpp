@@ -11,13 +11,6 @@ namespace {
 
 using namespace restart_support;
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
 TEST(Fork, ChangedEndTimeContinuesIntoAnotherDirectory) {
   const fs::path dir = scratch("fork_end_time");
   const std::string scene = two_disks().scene;  // end_time 0.4, checkpoint at 0.2

@@ -13,16 +13,14 @@ using namespace restart_support;
 
 TEST(ParticleFileBody, SeededFromItsOwnFirstFrameReproducesTheRun) {
   const fs::path dir = scratch("particle_file_own_frame");
-  std::string scene = two_disks().scene;
-  scene.replace(scene.find("  checkpoint:"), std::string::npos, "");
-  scene.replace(scene.find("fields: [velocity, stress, body]"), 32, "fields: [velocity, stress, mass, volume, body]");
+  const std::string scene = replaced(with_checkpoint(two_disks().scene, ""), "fields: [velocity, stress, body]",
+                                     "fields: [velocity, stress, mass, volume, body]");
   std::ofstream(dir / "original.yaml") << scene;
   ASSERT_EQ(cli::mpm("run " + (dir / "original.yaml").string() + " -o " + (dir / "original").string(), dir).status, 0);
   const std::string frame = (dir / "original" / "particles_000000.vtu").string();
-  std::string seeded = scene;
-  seeded.replace(seeded.find("  - {name: lower_left"), seeded.find("solver:") - seeded.find("  - {name: lower_left"),
-                 "  - {name: lower_left, material: elastic, shape: {particles: " + frame + ", body: 0}}\n" +
-                     "  - {name: upper_right, material: elastic, shape: {particles: " + frame + ", body: 1}}\n");
+  const std::string seeded = with_bodies(
+      scene, "  - {name: lower_left, material: elastic, shape: {particles: " + frame + ", body: 0}}\n" +
+                 "  - {name: upper_right, material: elastic, shape: {particles: " + frame + ", body: 1}}\n");
   std::ofstream(dir / "seeded.yaml") << seeded;
   const Result r = cli::mpm("run " + (dir / "seeded.yaml").string() + " -o " + (dir / "seeded").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;

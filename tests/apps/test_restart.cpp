@@ -191,7 +191,8 @@ Case thermal_coupling() {
           "  boundary: {x_min: {temperature: \"293.15 + 1.0e7*t\"}}\n"
           "output:\n"
           "  interval: 1.0e-6\n"
-          "  fields: [velocity, stress, plastic_strain, temperature, heat_flux]\n" +
+          "  fields: [velocity, stress, plastic_strain, temperature, heat_flux]\n"
+          "  grid: true\n" +
               checkpoint_at(2.0e-6)};
 }
 #endif
@@ -254,12 +255,8 @@ namespace {
 
 using namespace restart_support;
 
-/// The two disks with checkpoints every `interval` (s) instead of at T/2.
-std::string two_disks_scene(const std::string& checkpoint) {
-  std::string scene = two_disks().scene;
-  scene.replace(scene.find("  checkpoint:"), std::string::npos, checkpoint);
-  return scene;
-}
+/// The two disks with `checkpoint` instead of a checkpoint at T/2.
+std::string two_disks_scene(const std::string& checkpoint) { return with_checkpoint(two_disks().scene, checkpoint); }
 
 TEST(Restart, KilledWhileWritingACheckpointContinuesThePreviousOne) {
   const fs::path dir = scratch("restart_kill_in_write");
@@ -370,9 +367,8 @@ using namespace restart_support;
 // 12); keep: the newest three are left.
 TEST(Restart, WallIntervalAndKeep) {
   const fs::path dir = scratch("restart_wall_interval");
-  std::string scene = two_disks().scene;
-  scene.replace(scene.find("  checkpoint:"), std::string::npos, "  checkpoint: {wall_interval: 1.0e-9, keep: 3}\n");
-  std::ofstream(dir / "scene.yaml") << scene;
+  std::ofstream(dir / "scene.yaml") << with_checkpoint(two_disks().scene,
+                                                       "  checkpoint: {wall_interval: 1.0e-9, keep: 3}\n");
   const Result r = cli::mpm("run " + (dir / "scene.yaml").string() + " --steps 12 -o " + (dir / "out").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(checkpoint_steps(dir / "out" / "checkpoints"), (std::vector<long long>{10, 11, 12}));
