@@ -79,7 +79,6 @@ fs::path RunCheckpoints::write(StateArchive& archive, long long step, double tim
   int kept = 0;
   for (const auto& older : checkpoint::checkpoint_files(directory_))
     if (step_of(older) <= step && ++kept > settings_.keep) fs::remove(older);
-  (void)time;
   return file;
 }
 
