@@ -1,5 +1,6 @@
-// The `mpm` command line program: `mpm run SCENE`, `mpm check SCENE`, `mpm particles INPUT`, `mpm reference
-// --materials [FILE]`, `mpm diff RUN_A RUN_B`, `mpm verify SCENE`. Exit statuses in run_scene.hpp.
+// The `mpm` command line program: `mpm run SCENE [--restart FILE|DIR]`, `mpm check SCENE`, `mpm particles INPUT`,
+// `mpm reference --materials [FILE]`, `mpm diff RUN_A RUN_B`, `mpm verify SCENE`, `mpm checkpoint FILE`. Exit
+// statuses in run_scene.hpp.
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -13,12 +14,15 @@
 #include <memory>
 #include <optional>
 
+#include "mpm/app/checkpoint_command.hpp"
 #include "mpm/app/diff_command.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/particles_command.hpp"
 #include "mpm/app/reference_command.hpp"
+#include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/verify_command.hpp"
+#include "mpm/checkpoint/checkpoint_file.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
@@ -71,6 +75,19 @@ int main(int argc, char** argv) {
   auto* end_time_opt =
       run_cmd->add_option("--end-time", end_time, "simulated time to stop at, s (> 0; replaces solver.end_time)")
           ->check(CLI::Validator(check_end_time, "T", "end time"));
+  std::string restart;
+  run_cmd->add_option("--restart", restart,
+                      "continue the checkpoint FILE, or the newest valid one in DIR; the scene may differ only in "
+                      "run-control keys (end_time, cfl, output, prescribed boundary velocities): a fork");
+  run_cmd->footer(
+      "Signals: SIGINT (Ctrl-C), SIGTERM and SIGUSR1 finish the current step, write a checkpoint and the last frame, "
+      "print the command that resumes the run, and exit with 128 + the signal number (130, 143, 138); a second "
+      "SIGINT exits at once.\nExit statuses: 0 done, 1 I/O or internal error, 2 bad scene, command line or "
+      "checkpoint, 3 stopped by the stability guard, 128 + N stopped by signal N.");
+  std::string checkpoint_file;  // `mpm checkpoint FILE`
+  auto* checkpoint_cmd =
+      cli.add_subcommand("checkpoint", "print what a checkpoint holds (time, step, bodies, fields) and verify it");
+  checkpoint_cmd->add_option("file", checkpoint_file, "checkpoint file (.h5)")->required();
   auto* check_cmd = cli.add_subcommand("check", "validate a scene without running it");
   check_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
   ParticlesOptions particles;  // `mpm particles`: particle sets of meshes, images and scenes for ParaView
@@ -141,6 +158,7 @@ int main(int argc, char** argv) {
     diff.b = diff_b;
     return diff_command(diff, std::cout, std::cerr);
   }
+  if (checkpoint_cmd->parsed()) return checkpoint_command(checkpoint_file, std::cout, std::cerr);
   if (reference_cmd->parsed()) {
     std::optional<std::filesystem::path> file;
     if (!reference_file.empty()) file = reference_file;
@@ -164,10 +182,17 @@ int main(int argc, char** argv) {
     options.profile = profile;
     if (steps_opt->count() > 0) options.steps = steps;
     if (end_time_opt->count() > 0) options.end_time = end_time;
-    run_scene(scene, options, std::cerr);
-    return exit_ok;
+    if (!restart.empty()) options.restart = restart;
+    const RunSummary summary = run_scene(scene, options, std::cerr);
+    return summary.stopped_by_signal != 0 ? 128 + summary.stopped_by_signal : exit_ok;
   } catch (const mpm::SceneError& e) {
     std::cerr << "error: " << e.what() << missing_module_note(e, missing_modules()) << '\n';
+    return exit_bad_input;
+  } catch (const RestartError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  } catch (const mpm::checkpoint::CheckpointError& e) {
+    std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
   } catch (const mpm::StabilityError& e) {
     std::cerr << "error: " << e.what() << "\nThe last good state was written to the output.\n";

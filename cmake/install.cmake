@@ -3,13 +3,13 @@
 # find_package(mpm) and target_link_libraries(app mpm::core) work (the Python package installs itself:
 # python/CMakeLists.txt). Everything is here, after the targets are made, so that the folders' CMakeLists.txt
 # only define their targets. Installed targets: mpm::core, mpm::geometry (also mpm::primitives), mpm::app (scene
-# -> simulation, the run loop, the modules' registration) and one per optional module compiled in
+# -> simulation, the run loop, the modules' registration), mpm::checkpoint (HDF5 checkpoints) and one per optional module compiled in
 # (mpm::plasticity, mpm::fluids, mpm::thermal, mpm::contact).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 get_property(mpm_modules GLOBAL PROPERTY MPM_MODULES)
-set(mpm_libraries mpm_core mpm_geometry mpm_app)
+set(mpm_libraries mpm_core mpm_geometry mpm_checkpoint mpm_app)
 foreach(module ${mpm_modules})
   list(APPEND mpm_libraries mpm_${module})
 endforeach()

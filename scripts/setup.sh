@@ -20,7 +20,7 @@ cd "$(dirname "$0")/.."
 # package's bindings (pybind11, Python's headers), tests (pytest) and notebook execution (nbconvert, a kernel).
 packages=(cmake g++ make pkg-config git clang-format clang-tidy
           libeigen3-dev libtbb-dev libyaml-cpp-dev libvtk9-dev libcgal-dev libgtest-dev libgmock-dev
-          libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev
+          libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev libhdf5-dev
           python3 python3-numpy python3-matplotlib python3-vtk9
           pybind11-dev python3-dev python3-pytest jupyter-nbconvert python3-ipykernel)
 missing=()

@@ -11,6 +11,8 @@
 #include <stdexcept>
 
 #include "mpm/contact/contact_law.hpp"
+#include "mpm/io/continued_file.hpp"
+#include "mpm/state_archive.hpp"
 #include "shape_passes.hpp"
 
 namespace mpm::contact {
@@ -527,6 +529,71 @@ void MultiVelocityContact<Dim>::write_forces(Real time) {
     if (rigid) row(name_of(o), "all", reaction[o], touched[o] ? reaction_n[o] : 0);
   }
   csv_.flush();
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::save_state(StateArchive& archive, const std::string& prefix) const {
+  auto flat = [](const std::vector<Vec<Dim>>& v) {
+    std::vector<Real> out;
+    for (const auto& x : v) out.insert(out.end(), x.data(), x.data() + Dim);
+    return out;
+  };
+  archive.put_values<Real>(prefix + "plane_point", flat(plane_point_), Dim);
+  archive.put_values<Real>(prefix + "impulse", flat(impulse_), Dim);
+  archive.put_values<Real>(prefix + "impulse_normal", impulse_n_);
+  archive.put_number(prefix + "onset_time", onset_time_);
+  archive.put_number(prefix + "last_row_time", last_row_time_);
+  archive.put_integer(prefix + "contact_nodes_last", contact_nodes_last_);
+  std::vector<int> pairs;
+  std::vector<Real> forces;
+  for (const auto& f : last_forces_) {
+    pairs.insert(pairs.end(), {f.body, f.other});
+    forces.insert(forces.end(), f.force.data(), f.force.data() + Dim);
+    forces.insert(forces.end(), {f.normal, f.tangential});
+  }
+  archive.put_values<int>(prefix + "last_force_pairs", pairs, 2);
+  archive.put_values<Real>(prefix + "last_forces", forces, Dim + 2);
+  // The force CSV is flushed after every row group: its length on disk is what was written (nothing yet while
+  // it is not open, whatever an older run left there).
+  io::FileMark mark = io::mark_file(settings_.force_file.empty() ? "." : settings_.force_file);
+  if (!csv_.is_open()) mark.bytes = 0;
+  io::save_mark(archive, prefix + "force_file", mark);
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::restore_state(const StateArchive& archive, const std::string& prefix) {
+  auto unflat = [](const std::vector<Real>& in, std::vector<Vec<Dim>>& out, const std::string& name) {
+    if (in.size() != out.size() * Dim) throw ArchiveError(name + ": the checkpoint has another number of entries");
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = Eigen::Map<const Vec<Dim>>(in.data() + k * Dim);
+  };
+  unflat(archive.values<Real>(prefix + "plane_point"), plane_point_, prefix + "plane_point");
+  unflat(archive.values<Real>(prefix + "impulse"), impulse_, prefix + "impulse");
+  impulse_n_ = archive.values<Real>(prefix + "impulse_normal");
+  if (impulse_n_.size() != impulse_.size()) throw ArchiveError(prefix + "impulse_normal: wrong number of entries");
+  onset_time_ = archive.number(prefix + "onset_time");
+  last_row_time_ = archive.number(prefix + "last_row_time");
+  contact_nodes_last_ = archive.integer(prefix + "contact_nodes_last");
+  const auto pairs = archive.values<int>(prefix + "last_force_pairs");
+  const auto forces = archive.values<Real>(prefix + "last_forces");
+  last_forces_.clear();
+  for (std::size_t k = 0; 2 * k + 1 < pairs.size() && (k + 1) * (Dim + 2) <= forces.size(); ++k) {
+    PairForce<Dim> f;
+    f.body = pairs[2 * k];
+    f.other = pairs[2 * k + 1];
+    const Real* values = forces.data() + k * (Dim + 2);
+    f.force = Eigen::Map<const Vec<Dim>>(values);
+    f.normal = values[Dim];
+    f.tangential = values[Dim + 1];
+    last_forces_.push_back(f);
+  }
+  if (settings_.force_file.empty()) return;
+  const io::FileMark mark = io::load_mark(archive, prefix + "force_file");
+  if (csv_.is_open()) csv_.close();
+  io::continue_file(mark, settings_.force_file);
+  if (mark.bytes == 0) return;  // the header comes with the first row
+  csv_.open(settings_.force_file, std::ios::app);
+  if (!csv_) throw std::runtime_error("contact: cannot write the force file " + settings_.force_file);
+  csv_.precision(10);
 }
 
 template class MultiVelocityContact<1>;

@@ -11,7 +11,7 @@ namespace mpm {
 
 template <int Dim>
 OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string prefix, std::vector<std::string> fields,
-                                bool grid, Real interval)
+                                bool grid, Real interval, const StateArchive* restart)
     : directory_(std::move(directory)),
       prefix_(std::move(prefix)),
       fields_(std::move(fields)),
@@ -26,11 +26,17 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
   }
   fields_.push_back("id");
   if (grid_) grid_pvd_ = std::make_unique<io::PvdCollection>(directory_ / (prefix_ + "_grid.pvd"));
-  energy_ = std::make_unique<io::CsvLog>(
-      directory_ / "energy.csv",
-      std::vector<std::string>{"time", "step", "kinetic_energy", "strain_energy", "gravity_potential_energy",
-                               "total_energy", "momentum_x", "momentum_y", "momentum_z", "mass", "plastic_work",
-                               "thermal_energy"});
+  const std::vector<std::string> columns{
+      "time",         "step",          "kinetic_energy", "strain_energy", "gravity_potential_energy",
+      "total_energy", "momentum_x",    "momentum_y",     "momentum_z",    "mass",
+      "plastic_work", "thermal_energy"};
+  if (restart) {
+    energy_ =
+        std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns, io::load_mark(*restart, "output/energy"));
+    restore_state(*restart);
+  } else {
+    energy_ = std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns);
+  }
 }
 
 template <int Dim>

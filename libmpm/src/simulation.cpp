@@ -163,6 +163,8 @@ void Simulation<Dim>::take_snapshot() {
   snapshot_.step = step_;
   snapshot_.wave_speed = wave_speed_;
   snapshot_.dts_since.clear();
+  snapshot_.modules = StateArchive();
+  for (const auto& m : hooks_.all()) m->save_state(snapshot_.modules, module_prefix(*m));
 }
 
 // Restores the snapshot and replays the steps taken since, which reproduces the state at the end of the
@@ -174,6 +176,7 @@ void Simulation<Dim>::roll_back_to_previous_step() {
   time_ = snapshot_.time;
   step_ = snapshot_.step;
   wave_speed_ = snapshot_.wave_speed;
+  for (const auto& m : hooks_.all()) m->restore_state(snapshot_.modules, module_prefix(*m));
   for (Real dt : replay) take_step(dt);
   take_snapshot();
 }

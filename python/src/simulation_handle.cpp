@@ -237,7 +237,7 @@ class SimulationFor final : public SimulationHandle {
       a.storage.data = &first_value;
       a.storage.count = static_cast<Index>(records.size());
       a.storage.stride = sizeof(records[0]);
-      a.storage.layout = field_layout<std::remove_const_t<Value>>();
+      a.storage.layout = array_layout<std::remove_const_t<Value>>();
     };
     if (name == "mass") {
       member(g.node, g.node[0].mass);

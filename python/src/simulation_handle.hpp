@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "mpm/energy.hpp"
-#include "mpm/field_layout.hpp"
+#include "mpm/field_storage.hpp"
 #include "mpm/scene.hpp"
 
 namespace mpm::python {

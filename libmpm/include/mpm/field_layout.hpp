@@ -1,86 +1,101 @@
 #pragma once
 /// \file field_layout.hpp
-/// How the values of a particle field lie in memory, so that code outside C++ (the Python package's NumPy
-/// views, python/) can address them in place: the scalar type and the shape and byte strides of one
-/// particle's value. Derived from the value type: double, int32, uint32, fixed-size Eigen vectors and
-/// matrices (in their storage order), SymTensor and std::array of these; any other type (a record such as
-/// the plasticity module's history) is opaque.
+/// What one particle field looks like as bytes: its name, the scalar type of its values and how many of
+/// them one particle has. ParticleSet::field_layout() lists every field this way, and its pack/unpack
+/// (particle_set.hpp) copy values by that layout, so checkpoints (checkpoint/) and the migration of
+/// particles between ranks handle any field, core or on-demand, without code of their own per field.
+///
+/// The scalar type of a field of type T (FieldScalar<T>): T itself for a number; the Scalar of a
+/// fixed-size Eigen matrix or of a packed symmetric tensor; that of the elements of a std::array; the
+/// `scalar_type` a struct declares (`using scalar_type = Real;` in a struct of Reals, such as the plastic
+/// history); otherwise the field is opaque bytes (components = sizeof(T)). A checkpoint stores a field as an array of
+/// particles x components of its scalar type, so h5py reads `bodies/NAME/stress` as an (n, 4) array of doubles.
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <string>
+#include <string_view>
+#include <type_traits>
 
 #include "mpm/types.hpp"
 
 namespace mpm {
 
-struct FieldLayout {
-  /// 'f' double, 'i' 32-bit signed, 'u' 32-bit unsigned integer; 0 for a record that cannot be viewed.
-  char scalar = 0;
-  std::vector<Index> shape;    ///< of one particle's value: {} scalar, {n} vector, {r, c} matrix
-  std::vector<Index> strides;  ///< bytes between neighbours along each axis of `shape`
-};
+/// Element type of a packed field (and of a dataset of a checkpoint).
+enum class ScalarType : std::uint8_t { float64, float32, int64, uint64, int32, uint32, int8, uint8, opaque };
 
-/// The storage of one field: `count` values of `stride` bytes from `data`.
-struct FieldStorage {
-  void* data = nullptr;
-  Index count = 0;
-  Index stride = 0;  ///< bytes per particle (sizeof the value type)
-  FieldLayout layout;
-};
+/// "float64", "int32", ..., "opaque".
+std::string_view scalar_type_name(ScalarType type);
+/// Bytes of one scalar (1 for opaque).
+std::size_t scalar_size(ScalarType type);
 
 namespace detail {
 template <class T>
-struct LayoutOf {
-  static FieldLayout get() { return {}; }  // a record: opaque
+struct ScalarOf {
+  using type = std::byte;  // opaque
 };
-template <>
-struct LayoutOf<double> {
-  static FieldLayout get() { return {'f', {}, {}}; }
+template <class T>
+requires std::is_arithmetic_v<T>
+struct ScalarOf<T> {
+  using type = T;
 };
-template <>
-struct LayoutOf<std::int32_t> {
-  static FieldLayout get() { return {'i', {}, {}}; }
+template <class T>
+requires requires {
+  typename T::Scalar;
+  T::SizeAtCompileTime;
+}
+struct ScalarOf<T> {
+  using type = typename T::Scalar;
 };
-template <>
-struct LayoutOf<std::uint32_t> {
-  static FieldLayout get() { return {'u', {}, {}}; }
+template <class T>
+requires requires { typename T::scalar_type; }
+struct ScalarOf<T> {
+  using type = typename T::scalar_type;
 };
-template <int Rows, int Cols, int Options>
-struct LayoutOf<Eigen::Matrix<double, Rows, Cols, Options, Rows, Cols>> {
-  static FieldLayout get() {
-    if constexpr (Cols == 1) return {'f', {Rows}, {sizeof(double)}};
-    if constexpr ((Options & Eigen::RowMajor) != 0) return {'f', {Rows, Cols}, {Cols * sizeof(double), sizeof(double)}};
-    return {'f', {Rows, Cols}, {sizeof(double), Rows * sizeof(double)}};
-  }
+template <class U, std::size_t N>
+struct ScalarOf<std::array<U, N>> {
+  using type = typename ScalarOf<U>::type;
 };
 template <int Dim>
-struct LayoutOf<SymTensor<Dim>> {
-  static FieldLayout get() { return {'f', {SymTensor<Dim>::size}, {sizeof(double)}}; }
-};
-template <class T, std::size_t N>
-struct LayoutOf<std::array<T, N>> {
-  static FieldLayout get() {
-    FieldLayout inner = LayoutOf<T>::get();
-    if (inner.scalar == 0) return {};
-    inner.shape.insert(inner.shape.begin(), static_cast<Index>(N));
-    inner.strides.insert(inner.strides.begin(), static_cast<Index>(sizeof(T)));
-    return inner;
-  }
+struct ScalarOf<SymTensor<Dim>> {
+  using type = Real;
 };
 }  // namespace detail
 
-/// The layout of a value of type T.
+/// The scalar type a field of type T is stored as (see the file comment).
 template <class T>
-FieldLayout field_layout() {
-  return detail::LayoutOf<T>::get();
+using FieldScalar = typename detail::ScalarOf<T>::type;
+
+template <class S>
+constexpr ScalarType scalar_type_of() {
+  if constexpr (std::is_same_v<S, double>) return ScalarType::float64;
+  if constexpr (std::is_same_v<S, float>) return ScalarType::float32;
+  if constexpr (std::is_integral_v<S> && std::is_signed_v<S> && sizeof(S) == 8) return ScalarType::int64;
+  if constexpr (std::is_integral_v<S> && std::is_unsigned_v<S> && sizeof(S) == 8) return ScalarType::uint64;
+  if constexpr (std::is_integral_v<S> && std::is_signed_v<S> && sizeof(S) == 4) return ScalarType::int32;
+  if constexpr (std::is_integral_v<S> && std::is_unsigned_v<S> && sizeof(S) == 4) return ScalarType::uint32;
+  if constexpr (std::is_integral_v<S> && std::is_signed_v<S> && sizeof(S) == 1) return ScalarType::int8;
+  if constexpr (std::is_integral_v<S> && std::is_unsigned_v<S> && sizeof(S) == 1) return ScalarType::uint8;
+  return ScalarType::opaque;
 }
 
-/// The storage of a field held in a vector.
+/// One field as bytes.
+struct FieldLayout {
+  std::string name;                        ///< "position", "stress", ... or the on-demand field's key name
+  ScalarType scalar = ScalarType::opaque;  ///< type of each value
+  std::size_t components = 1;              ///< values per particle (bytes per particle when opaque)
+  std::size_t bytes_per_particle() const { return components * scalar_size(scalar); }
+  bool operator==(const FieldLayout&) const = default;
+};
+
+/// The layout of a field named `name` of type T.
 template <class T>
-FieldStorage field_storage(std::vector<T>& values) {
-  return {values.data(), static_cast<Index>(values.size()), static_cast<Index>(sizeof(T)), field_layout<T>()};
+FieldLayout field_layout_of(std::string_view name) {
+  using S = FieldScalar<T>;
+  constexpr ScalarType type = scalar_type_of<S>();
+  static_assert(sizeof(T) % sizeof(S) == 0, "a field's size must be a whole number of its scalars");
+  return {std::string(name), type, sizeof(T) / scalar_size(type)};  // opaque: bytes (scalar_size 1)
 }
 
 }  // namespace mpm

@@ -22,9 +22,15 @@ namespace mpm {
 template <int Dim>
 class OutputWriter {
  public:
-  /// Creates `directory` if needed. `interval` in s (0: first and last frames only).
+  /// Creates `directory` if needed. `interval` in s (0: first and last frames only). With `restart` (a
+  /// checkpoint, entries "output/..." of save_state()), continues that run's series: the .pvd files and
+  /// energy.csv hold its frames and rows up to the checkpoint and no later ones, frame files numbered from
+  /// the checkpoint's next frame on are removed (the run writes them again), and the next frame is due
+  /// when it would have been (throws std::runtime_error when energy.csv cannot be continued).
   OutputWriter(std::filesystem::path directory, std::string prefix, std::vector<std::string> fields, bool grid,
-               Real interval);
+               Real interval, const StateArchive* restart = nullptr);
+  /// The series so far (frame count, output schedule, .pvd frames, length of energy.csv) for a checkpoint.
+  void save_state(StateArchive& archive) const;
   /// Writes a frame if the simulation time has reached the next output time (always for the first call).
   bool write_if_due(const Simulation<Dim>& sim);
   /// Writes a frame now (unless this time was just written).
@@ -38,6 +44,7 @@ class OutputWriter {
   int frames() const { return frame_; }
 
  private:
+  void restore_state(const StateArchive& archive);
   std::filesystem::path directory_;
   std::string prefix_;
   std::vector<std::string> fields_;

@@ -14,6 +14,7 @@
 #include "mpm/module.hpp"
 #include "mpm/scheme.hpp"
 #include "mpm/stability_error.hpp"
+#include "mpm/state_archive.hpp"
 #include "mpm/step_profile.hpp"
 
 namespace mpm {
@@ -34,7 +35,11 @@ class Simulation {
   Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<Dim>> bodies, std::unique_ptr<Scheme<Dim>> scheme,
              GridBoundary<Dim> boundary, const SimulationSettings<Dim>& settings);
 
-  void add_module(std::shared_ptr<Module<Dim>> module) { hooks_.add(std::move(module)); }
+  /// Adds a module (before the first step: its state joins the guard's first snapshot).
+  void add_module(std::shared_ptr<Module<Dim>> module) {
+    module->save_state(snapshot_.modules, module_prefix(*module));
+    hooks_.add(std::move(module));
+  }
   const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
 
   /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), of the viscous
@@ -77,6 +82,15 @@ class Simulation {
   /// Grid boundary conditions (velocity constraints and tractions on the box faces).
   const GridBoundary<Dim>& boundary() const { return boundary_; }
 
+  /// Saves the whole state of the run (simulation_state.cpp): time, step, the time-step control, every
+  /// particle field of every body in id order with the order the particles are stored in, and the modules'
+  /// state. What a checkpoint holds of the simulation.
+  void save_state(StateArchive& archive) const;
+  /// Continues from a saved state, on a simulation built from the same scene (the same bodies with as many
+  /// particles, the same modules); the guard's snapshot is taken there. Returns notes on fields that only one
+  /// side has (a fork that changed the output fields); throws ArchiveError for anything else that differs.
+  std::vector<std::string> restore_state(const StateArchive& archive);
+
   /// Times the phases of every following step (step_profile.hpp). Off by default: the kernels then read
   /// no clock.
   void enable_profiling(bool on = true) { profiling_ = on; }
@@ -94,6 +108,7 @@ class Simulation {
     Index step = 0;
     WaveSpeedBound<Dim> wave_speed;
     std::vector<Real> dts_since;  ///< time steps taken after the snapshot, to replay them exactly
+    StateArchive modules;         ///< the modules' state (Module::save_state)
   };
   void take_step(Real dt);
   void take_snapshot();

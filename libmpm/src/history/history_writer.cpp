@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <optional>
+#include <span>
 
 namespace mpm {
 
 template <int Dim>
-HistoryWriter<Dim>::HistoryWriter(const std::filesystem::path& directory, std::vector<BuiltHistory<Dim>> built) {
+HistoryWriter<Dim>::HistoryWriter(const std::filesystem::path& directory, std::vector<BuiltHistory<Dim>> built,
+                                  const StateArchive* restart) {
   if (built.empty()) return;
   std::filesystem::create_directories(directory);
   for (auto& b : built) {
@@ -14,7 +16,34 @@ HistoryWriter<Dim>::HistoryWriter(const std::filesystem::path& directory, std::v
     for (auto& c : b.history->columns()) columns.push_back(std::move(c));
     const Real interval = b.description->interval;
     const std::filesystem::path file = directory / (b.description->name + ".csv");
-    entries_.push_back({std::move(b), columns, io::CsvLog(file, columns), interval, 0, -1, false, {}});
+    if (!restart || !restart->contains(state_prefix(b.description->name) + "next_time")) {  // new in a fork
+      entries_.push_back({std::move(b), columns, io::CsvLog(file, columns), interval, 0, -1, false, {}});
+      continue;
+    }
+    const std::string prefix = state_prefix(b.description->name);
+    io::CsvLog csv(file, columns, io::load_mark(*restart, prefix + "csv"));
+    b.history->restore_state(*restart, prefix + "history/");
+    entries_.push_back({std::move(b), columns, std::move(csv), interval, restart->number(prefix + "next_time"),
+                        restart->number(prefix + "last_written"), restart->integer(prefix + "started") != 0,
+                        restart->values<double>(prefix + "last_row")});
+  }
+}
+
+template <int Dim>
+std::string HistoryWriter<Dim>::state_prefix(const std::string& name) {
+  return "histories/" + name + "/";
+}
+
+template <int Dim>
+void HistoryWriter<Dim>::save_state(StateArchive& archive) const {
+  for (const auto& e : entries_) {
+    const std::string prefix = state_prefix(e.built.description->name);
+    io::save_mark(archive, prefix + "csv", e.csv.mark());
+    archive.put_number(prefix + "next_time", e.next_time);
+    archive.put_number(prefix + "last_written", e.last_written);
+    archive.put_integer(prefix + "started", e.started ? 1 : 0);
+    archive.put_values<double>(prefix + "last_row", std::span<const double>(e.last_row));
+    e.built.history->save_state(archive, prefix + "history/");
   }
 }
 

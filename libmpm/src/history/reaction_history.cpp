@@ -92,6 +92,22 @@ class ReactionRecorder final : public Module<Dim> {
     accumulate(step, ctx.dt);
   }
 
+  /// The impulse accumulated since the last row, for a checkpoint (History::save_state).
+  void save_state(StateArchive& archive, const std::string& prefix) const {
+    archive.put_values<Real>(prefix + "impulse_force", std::span<const Real>(impulse_.force.data(), Dim));
+    archive.put_values<Real>(prefix + "impulse_moment", std::span<const Real>(impulse_.first_moment.data(), 3));
+    archive.put_number(prefix + "span", span_);
+  }
+  void restore_state(const StateArchive& archive, const std::string& prefix) {
+    const auto force = archive.values<Real>(prefix + "impulse_force");
+    const auto moment = archive.values<Real>(prefix + "impulse_moment");
+    if (force.size() != Dim || moment.size() != 3)
+      throw ArchiveError("'" + prefix + "impulse_force': not a reaction history's impulse of this dimension");
+    for (int d = 0; d < Dim; ++d) impulse_.force[d] = force[d];
+    for (int k = 0; k < 3; ++k) impulse_.first_moment[k] = moment[k];
+    span_ = archive.number(prefix + "span");
+  }
+
   /// The mean force and moment since the last call (zero before the first step), and a new interval.
   Reaction<Dim> take_mean() {
     Reaction<Dim> mean;
@@ -143,6 +159,12 @@ class ReactionHistory final : public History<Dim> {
     for (int d = 0; d < Dim; ++d) row.push_back(mean.force[d]);
     if (moment_)
       for (int k = Dim == 2 ? 2 : 0; k < 3; ++k) row.push_back(mean.first_moment[k]);
+  }
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    recorder_->save_state(archive, prefix);
+  }
+  void restore_state(const StateArchive& archive, const std::string& prefix) override {
+    recorder_->restore_state(archive, prefix);
   }
 
  private:

@@ -2,6 +2,7 @@
 
 #include "mpm/io/atomic_file.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -36,6 +37,40 @@ CsvLog::CsvLog(std::filesystem::path path, std::vector<std::string> columns)
     out.close();
     if (!out) throw std::runtime_error("CsvLog: cannot write '" + path_.string() + "'");
   });
+  out_.open(path_, std::ios::binary | std::ios::app);
+  if (!out_) throw std::runtime_error("CsvLog: cannot open '" + path_.string() + "' to append");
+}
+
+CsvLog::CsvLog(std::filesystem::path path, std::vector<std::string> columns, const FileMark& from)
+    : path_(std::move(path)), columns_(std::move(columns)) {
+  if (columns_.empty()) throw std::invalid_argument("CsvLog: '" + path_.string() + "' has no columns");
+  continue_file(from, path_);
+  std::ifstream in(path_, std::ios::binary);
+  std::string line, header;
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    if (i) header += ',';
+    header += csv_quote(columns_[i]);
+  }
+  if (!std::getline(in, line) || line != header)
+    throw std::runtime_error("cannot continue '" + path_.string() + "': its header is not '" + header + "'");
+  for (int number = 2; std::getline(in, line); ++number) {
+    std::vector<double> row;
+    for (std::size_t begin = 0; begin <= line.size();) {
+      const std::size_t end = std::min(line.find(',', begin), line.size());
+      double v = 0;
+      const auto [ptr, error] = std::from_chars(line.data() + begin, line.data() + end, v);
+      if (error != std::errc() || ptr != line.data() + end)
+        throw std::runtime_error("cannot continue '" + path_.string() + "': line " + std::to_string(number) +
+                                 " is not a row of numbers");
+      row.push_back(v);
+      begin = end + 1;
+    }
+    if (row.size() != columns_.size())
+      throw std::runtime_error("cannot continue '" + path_.string() + "': line " + std::to_string(number) + " has " +
+                               std::to_string(row.size()) + " values for " + std::to_string(columns_.size()) +
+                               " columns");
+  }
+  in.close();
   out_.open(path_, std::ios::binary | std::ios::app);
   if (!out_) throw std::runtime_error("CsvLog: cannot open '" + path_.string() + "' to append");
 }

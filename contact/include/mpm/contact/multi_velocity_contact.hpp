@@ -72,6 +72,10 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   void after_p2g(StepContext<Dim>& ctx) override;
   void on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) override;
   void end_of_step(StepContext<Dim>& ctx) override;
+  /// Plane positions, the impulses since the last CSV row, the onset time, the last forces and the length of
+  /// the force CSV (continued by restore_state(), io/continued_file.hpp).
+  void save_state(StateArchive& archive, const std::string& prefix) const override;
+  void restore_state(const StateArchive& archive, const std::string& prefix) override;
 
   /// Time (end of the step) of the first contact correction, or a negative value if none happened yet.
   Real onset_time() const { return onset_time_; }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mpm/simulation.hpp"
+#include "mpm/state_archive.hpp"
 
 namespace mpm {
 
@@ -38,6 +39,11 @@ class History {
   virtual std::vector<std::string> columns() const = 0;
   /// Appends one value per column for the current state of `sim`.
   virtual void sample(const Simulation<Dim>& sim, OutputFieldCache<Dim>& fields, std::vector<double>& row) = 0;
+  /// What the history carries between two rows (a reaction's impulse since the last row), as entries
+  /// `prefix`NAME of a checkpoint (state_archive.hpp), so that a restart writes the same rows. Most
+  /// histories read the state at the row's time and carry nothing.
+  virtual void save_state(StateArchive& /*archive*/, const std::string& /*prefix*/) const {}
+  virtual void restore_state(const StateArchive& /*archive*/, const std::string& /*prefix*/) {}
 };
 
 /// The unit of an extensive quantity in a Dim-dimensional run: "N" in 3D, "N/m" in 2D (per unit thickness),

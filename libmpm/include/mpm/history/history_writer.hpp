@@ -20,7 +20,12 @@ class HistoryWriter {
  public:
   /// Writes the header of each history's CSV into `directory` (created if there is any history). Build the
   /// histories first (build_histories: it throws SceneError for a bad one), so that a refused scene writes nothing.
-  HistoryWriter(const std::filesystem::path& directory, std::vector<BuiltHistory<Dim>> histories);
+  /// With `restart` (a checkpoint's state, run_checkpoints.hpp), each CSV is continued from its length at the
+  /// checkpoint (continued_file.hpp) and the schedules and the histories' own state are restored.
+  HistoryWriter(const std::filesystem::path& directory, std::vector<BuiltHistory<Dim>> histories,
+                const StateArchive* restart = nullptr);
+  /// The CSVs' lengths, the schedules and the histories' state, as entries histories/NAME/... of a checkpoint.
+  void save_state(StateArchive& archive) const;
   /// Writes a row of every history whose next time has come (of all at the first call).
   void write_if_due(const Simulation<Dim>& sim);
   /// Writes a row of every history now, unless it was written at this time (the last row of a run).
@@ -44,6 +49,7 @@ class HistoryWriter {
     std::vector<double> last_row;
   };
   void write_rows(const Simulation<Dim>& sim, bool all);
+  static std::string state_prefix(const std::string& name);
 
   std::vector<Entry> entries_;
 };

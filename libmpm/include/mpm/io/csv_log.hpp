@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/io/continued_file.hpp"
+
 namespace mpm::io {
 
 /// A CSV table: a header line of column names, then one line per row, numbers in full precision
@@ -19,6 +21,13 @@ class CsvLog {
   /// Writes the header to `path` (replacing any previous file). Throws std::invalid_argument if
   /// `columns` is empty.
   CsvLog(std::filesystem::path path, std::vector<std::string> columns);
+  /// Continues the table of a checkpointed run (continued_file.hpp): `path` becomes the first from.bytes
+  /// bytes of from.path, whose rows are checked (numbers, one per column) and then appended to. Throws std::runtime_error naming the file when they
+  /// cannot be, or when its header is not `columns`.
+  CsvLog(std::filesystem::path path, std::vector<std::string> columns, const FileMark& from);
+
+  /// The table's length on disk now, for a checkpoint.
+  FileMark mark() const { return mark_file(path_); }
 
   /// Appends a row to the file. Throws std::invalid_argument, and writes nothing, if row.size() != the
   /// number of columns or if a value is not finite; std::runtime_error if the file cannot be written.
