@@ -1,21 +1,28 @@
-// The `mpm` command line program: `mpm run SCENE`, `mpm check SCENE`, `mpm particles INPUT`, `mpm reference
-// --materials [FILE]`. Exit statuses in run_scene.hpp.
+// The `mpm` command line program: `mpm run SCENE [--restart FILE|DIR]`, `mpm check SCENE`, `mpm particles INPUT`,
+// `mpm reference --materials [FILE]`, `mpm diff RUN_A RUN_B`, `mpm verify SCENE`, `mpm checkpoint FILE`. Exit
+// statuses in run_scene.hpp.
 #include <tbb/global_control.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
 
+#include "mpm/app/checkpoint_command.hpp"
+#include "mpm/app/diff_command.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/particles_command.hpp"
 #include "mpm/app/reference_command.hpp"
+#include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_scene.hpp"
+#include "mpm/app/verify_command.hpp"
+#include "mpm/checkpoint/checkpoint_file.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
@@ -68,6 +75,19 @@ int main(int argc, char** argv) {
   auto* end_time_opt =
       run_cmd->add_option("--end-time", end_time, "simulated time to stop at, s (> 0; replaces solver.end_time)")
           ->check(CLI::Validator(check_end_time, "T", "end time"));
+  std::string restart;
+  run_cmd->add_option("--restart", restart,
+                      "continue the checkpoint FILE, or the newest valid one in DIR; the scene may differ only in "
+                      "run-control keys (end_time, cfl, output, prescribed boundary velocities): a fork");
+  run_cmd->footer(
+      "Signals: SIGINT (Ctrl-C), SIGTERM and SIGUSR1 finish the current step, write a checkpoint and the last frame, "
+      "print the command that resumes the run, and exit with 128 + the signal number (130, 143, 138); a second "
+      "SIGINT exits at once.\nExit statuses: 0 done, 1 I/O or internal error, 2 bad scene, command line or "
+      "checkpoint, 3 stopped by the stability guard, 128 + N stopped by signal N.");
+  std::string checkpoint_file;  // `mpm checkpoint FILE`
+  auto* checkpoint_cmd =
+      cli.add_subcommand("checkpoint", "print what a checkpoint holds (time, step, bodies, fields) and verify it");
+  checkpoint_cmd->add_option("file", checkpoint_file, "checkpoint file (.h5)")->required();
   auto* check_cmd = cli.add_subcommand("check", "validate a scene without running it");
   check_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
   ParticlesOptions particles;  // `mpm particles`: particle sets of meshes, images and scenes for ParaView
@@ -94,6 +114,34 @@ int main(int argc, char** argv) {
   reference_cmd->add_flag("--materials", materials, "the material parameter tables (the only reference so far)")
       ->required();
   reference_cmd->add_option("file", reference_file, "Markdown file whose generated blocks to rewrite");
+  DiffOptions diff;  // `mpm diff`: two output directories compared for regression checks
+  std::string diff_a, diff_b;
+  auto* diff_cmd = cli.add_subcommand("diff", "compare two output directories frame by frame and field by field");
+  diff_cmd->add_option("run_a", diff_a, "first output directory")->required();
+  diff_cmd->add_option("run_b", diff_b, "second output directory")->required();
+  diff_cmd->add_option("--tolerance", diff.relative, "relative tolerance: |a-b| <= REL * max|a| of the field (0)")
+      ->check(CLI::NonNegativeNumber);
+  diff_cmd->add_option("--absolute", diff.absolute, "absolute tolerance (0)")->check(CLI::NonNegativeNumber);
+  VerifyOptions verify;  // `mpm verify`: solution verification at several resolutions
+  std::string verify_output;
+  auto* verify_cmd = cli.add_subcommand("verify",
+                                        "run a scene at several resolutions and report the observed order, the "
+                                        "Richardson extrapolation and the GCI of chosen history values");
+  verify_cmd->add_option("scene", scene_file, "scene file (YAML) with output.histories")->required();
+  verify_cmd->add_option("--refine", verify.runs, "number of runs (resolutions), >= 2 (default 3)")
+      ->check(CLI::Range(2, 12));
+  verify_cmd->add_option("--ratio", verify.ratio, "cell size ratio between runs, > 1 (default 2)");
+  verify_cmd
+      ->add_option("--quantity", verify.quantities,
+                   "HISTORY.COLUMN, HISTORY.COLUMN@TIME (s) or HISTORY.COLUMN@START:TIME (the change); repeatable")
+      ->required();
+  verify_cmd->add_option("--order", verify.order, "assumed order of convergence (needed with --refine 2)");
+  verify_cmd->add_option("-o,--output", verify_output, "report directory (default: verify)");
+  verify_cmd->add_option("--threads", threads, "number of threads (default: all cores)")->check(CLI::PositiveNumber);
+  verify_cmd->add_flag(
+      "--no-plot", [&](std::int64_t) { verify.plot = false; }, "do not draw verify.png");
+  verify_cmd->add_flag("--finest", verify.scene_is_finest,
+                       "the scene is the finest run, the others coarser (default: the coarsest, the others finer)");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -105,6 +153,12 @@ int main(int argc, char** argv) {
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   if (particles_cmd->parsed()) return particles_command(particles, std::cout, std::cerr);
+  if (diff_cmd->parsed()) {
+    diff.a = diff_a;
+    diff.b = diff_b;
+    return diff_command(diff, std::cout, std::cerr);
+  }
+  if (checkpoint_cmd->parsed()) return checkpoint_command(checkpoint_file, std::cout, std::cerr);
   if (reference_cmd->parsed()) {
     std::optional<std::filesystem::path> file;
     if (!reference_file.empty()) file = reference_file;
@@ -112,6 +166,11 @@ int main(int argc, char** argv) {
   }
   try {
     register_modules();  // the optional modules' material models, before the scene is read
+    if (verify_cmd->parsed()) {
+      verify.scene = scene_file;
+      if (!verify_output.empty()) verify.output = verify_output;
+      return verify_command(verify, std::cout, std::cerr);
+    }
     const mpm::SceneDescription scene = mpm::load_scene(scene_file);
     if (check_cmd->parsed()) {
       check_scene(scene, std::cout);
@@ -123,9 +182,16 @@ int main(int argc, char** argv) {
     options.profile = profile;
     if (steps_opt->count() > 0) options.steps = steps;
     if (end_time_opt->count() > 0) options.end_time = end_time;
-    run_scene(scene, options, std::cerr);
-    return exit_ok;
+    if (!restart.empty()) options.restart = restart;
+    const RunSummary summary = run_scene(scene, options, std::cerr);
+    return summary.stopped_by_signal != 0 ? 128 + summary.stopped_by_signal : exit_ok;
   } catch (const mpm::SceneError& e) {
+    std::cerr << "error: " << e.what() << missing_module_note(e, missing_modules()) << '\n';
+    return exit_bad_input;
+  } catch (const RestartError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  } catch (const mpm::checkpoint::CheckpointError& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
   } catch (const mpm::StabilityError& e) {

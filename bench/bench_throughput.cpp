@@ -57,6 +57,7 @@ struct Options {
   double target_seconds = 3.0;  ///< wall time aimed at per timed run when steps are calibrated
   int repeat = 1;               ///< timed runs per thread count; the row reports the median rate
   bool profile = false;         ///< one more run of the same steps with the phase timers on
+  std::string print_scene;      ///< --print-scene NAME: print that case's scene and exit
 };
 
 struct Row {
@@ -258,7 +259,7 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 void usage(std::ostream& os) {
   os << "usage: bench_throughput [--quick] [--steps N] [--case NAME[,NAME...]] [--threads 1,2] [--seconds S] "
-        "[--repeat N] [--profile] [--csv FILE]\n"
+        "[--repeat N] [--profile] [--csv FILE] [--print-scene NAME]\n"
         "  --quick      blocks of about 2.5e5 particles and ~0.5 s per timed run (smoke run)\n"
         "  --steps N    time exactly N steps per run (default: set by a 2-step probe after the warm-up to last "
         "~--seconds)\n"
@@ -268,6 +269,8 @@ void usage(std::ostream& os) {
         "  --repeat N   N timed runs per thread count; report the median (default 1)\n"
         "  --profile    then run the same steps again with the phase timers on and print the time per phase\n"
         "  --csv FILE   also write the table as CSV\n"
+        "  --print-scene NAME  print the YAML scene of case NAME (with --quick: its quick size) and exit (for "
+        "bench/python_overhead.py and `mpm run`)\n"
         "cases:";
   for (const auto& c : all_cases()) os << ' ' << c.name;
   os << '\n';
@@ -307,6 +310,8 @@ Options parse_args(int argc, char** argv) {
       if (o.repeat < 1) throw std::invalid_argument("--repeat must be >= 1");
     } else if (a == "--profile") {
       o.profile = true;
+    } else if (a == "--print-scene") {
+      o.print_scene = value();
     } else if (a == "-h" || a == "--help") {
       usage(std::cout);
       std::exit(0);
@@ -316,7 +321,9 @@ Options parse_args(int argc, char** argv) {
   }
   o.target_seconds = seconds.value_or(o.quick ? 0.5 : 3.0);
   const auto known = all_cases();
-  for (const auto& name : o.cases)
+  std::vector<std::string> named = o.cases;
+  if (!o.print_scene.empty()) named.push_back(o.print_scene);
+  for (const auto& name : named)
     if (std::none_of(known.begin(), known.end(), [&](const Case& c) { return c.name == name; }))
       throw std::invalid_argument("unknown case '" + name + "'");
   return o;
@@ -390,6 +397,11 @@ int main(int argc, char** argv) {
     std::cerr << "bench_throughput: " << e.what() << '\n';
     usage(std::cerr);
     return 2;
+  }
+  if (!opt.print_scene.empty()) {
+    for (const auto& c : all_cases())
+      if (c.name == opt.print_scene) std::cout << scene_yaml(c, block_cells(c.dim, opt.quick));
+    return 0;
   }
   try {
     // As the `mpm` program does: a build with optional modules registers them (their cost, if any, is part

@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # One-command set-up on a fresh Debian 12 machine (as root):
-#   bash scripts/setup.sh           install what is missing, build the `mpm` program only, run the default
-#                                   example into ./output/
+#   bash scripts/setup.sh           install what is missing, build the `mpm` program and the Python package
+#                                   (build/python: PYTHONPATH=build/python /usr/bin/python3 -c "import mpm"), run
+#                                   the default example into ./output/
+#   bash scripts/setup.sh install   the same, then `cmake --install build` (default prefix /usr/local): the
+#                                   program, the libraries with their CMake package, and the Python package
+#                                   where /usr/bin/python3 finds it
 #   bash scripts/setup.sh test      install, build everything (library, program, tests, benchmarks) and run
 #                                   the whole test suite (this is what CI runs)
 #   bash scripts/setup.sh sanitize  install, build the program and the unit and stability tests with the
@@ -9,14 +13,16 @@
 #                                   `ctest -L 'unit|stability'` there (any sanitizer report fails its test)
 set -euo pipefail
 mode=${1:-example}
-case "$mode" in example|test|sanitize) ;; *) echo "usage: bash scripts/setup.sh [example|test|sanitize]" >&2; exit 2;; esac
+case "$mode" in example|install|test|sanitize) ;; *) echo "usage: bash scripts/setup.sh [example|install|test|sanitize]" >&2; exit 2;; esac
 cd "$(dirname "$0")/.."
 
-# Every Debian package the project needs: build tools, libraries, and the Python used for plots.
+# Every Debian package the project needs: build tools, libraries, the Python used for plots, and the Python
+# package's bindings (pybind11, Python's headers), tests (pytest) and notebook execution (nbconvert, a kernel).
 packages=(cmake g++ make pkg-config git clang-format clang-tidy
           libeigen3-dev libtbb-dev libyaml-cpp-dev libvtk9-dev libcgal-dev libgtest-dev libgmock-dev
-          libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev
-          python3 python3-numpy python3-matplotlib python3-vtk9)
+          libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev libhdf5-dev
+          python3 python3-numpy python3-matplotlib python3-vtk9
+          pybind11-dev python3-dev python3-pytest jupyter-nbconvert python3-ipykernel)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -44,10 +50,16 @@ if [ "$mode" = sanitize ]; then
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DMPM_WARNINGS_AS_ERRORS=$werror
-if [ "$mode" = example ]; then
-  cmake --build build -j "$jobs" --target mpm  # the program only: the tests and benchmarks are built by `test`
+if [ "$mode" = example ] || [ "$mode" = install ]; then
+  # the program and the Python package only: the tests and benchmarks are built by `test`
+  cmake --build build -j "$jobs" --target mpm
+  if grep -q '^MPM_WITH_PYTHON:BOOL=ON' build/CMakeCache.txt; then cmake --build build -j "$jobs" --target mpm_python; fi
+  if [ "$mode" = install ]; then
+    cmake --install build
+    exit 0
+  fi
   ./build/apps/mpm run examples/02_two_disks/scene.yaml -o output
-  echo "Open output/particles.pvd in ParaView."
+  echo "Open output/particles.pvd in ParaView. Python: PYTHONPATH=build/python /usr/bin/python3 -c 'import mpm'"
 else
   cmake --build build -j "$jobs"
   ctest --test-dir build --output-on-failure -j "$jobs"

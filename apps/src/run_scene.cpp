@@ -9,7 +9,11 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "mpm/app/run_checkpoints.hpp"
+#include "mpm/app/run_description.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/app/stop_signals.hpp"
+#include "mpm/history/history_writer.hpp"
 #include "mpm/output_writer.hpp"
 
 namespace mpm::app {
@@ -17,9 +21,55 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// Thrown after a step when a signal asked the run to stop.
+struct StopRequested {};
+
+/// What the run loop carries besides the simulation and the output, saved in checkpoints.
+struct RunRecord {
+  double initial_energy = 0;  ///< J, for the relative energy change of the summary
+  std::vector<bool> warned;   ///< per body: its material's state warning was logged
+  std::vector<std::string> warnings;
+
+  void save(StateArchive& archive) const {
+    archive.put_number("run/initial_energy", initial_energy);
+    const std::vector<std::int8_t> flags(warned.begin(), warned.end());
+    archive.put_values<std::int8_t>("run/warned", flags);
+    std::string text;
+    for (const auto& w : warnings) text += w + '\n';
+    archive.put_text("run/warnings", text);
+  }
+  void restore(const StateArchive& archive) {
+    initial_energy = archive.number("run/initial_energy");
+    const auto flags = archive.values<std::int8_t>("run/warned");
+    if (flags.size() == warned.size()) warned.assign(flags.begin(), flags.end());
+    const std::string text = archive.text("run/warnings");
+    for (std::size_t begin = 0, end; (end = text.find('\n', begin)) != std::string::npos; begin = end + 1)
+      warnings.push_back(text.substr(begin, end - begin));
+  }
+};
+
+/// Continues `point` (restart_point of run_checkpoints.hpp) on `sim`: says what it continues and what a fork
+/// changed; a checkpoint that does not fit the built simulation is a RestartError.
+template <int Dim>
+void restore_simulation(Simulation<Dim>& sim, const RestartPoint& point, std::ostream& log) {
+  std::vector<std::string> notes;
+  try {
+    notes = sim.restore_state(point.archive);
+  } catch (const ArchiveError& e) {
+    throw RestartError(fmt::format("{}: does not fit the scene: {}", point.file.string(), e.what()));
+  }
+  fmt::print(log, "restart: continuing {} at step {} (t = {:.9g} s)\n", point.file.string(), sim.step(), sim.time());
+  for (const auto& d : point.changes)
+    fmt::print(log, "fork: {}:{}: {}: {} in the checkpoint, {} now\n", d.where.file, d.where.line, d.key, d.was, d.now);
+  for (const auto& n : notes) fmt::print(log, "note: {}\n", n);
+}
+
 template <int Dim>
 void check(const SceneDescription& scene, std::ostream& out) {
   auto sim = build_simulation<Dim>(scene);
+  std::vector<std::string> warnings;
+  build_histories<Dim>(scene, *sim, warnings);  // what only the built bodies can refuse
+  for (const auto& w : warnings) fmt::print(out, "warning: {}\n", w);
   const Real dt = sim->next_time_step();
   fmt::print(out,
              "{}: valid. {}D{}, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
@@ -31,6 +81,16 @@ void check(const SceneDescription& scene, std::ostream& out) {
              sim->particle_count(), sim->bodies().size(), sim->grid().size(), enum_name(scene.solver.scheme),
              scene.solver.shape_function, dt, sim->stable_time_step(), sim->time_step_limiter(),
              static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
+}
+
+/// The command line's changes to the scene, as "key: value" lines (recorded in the output files).
+std::vector<std::string> overrides(const RunOptions& options) {
+  std::vector<std::string> lines;
+  if (options.output_directory) lines.push_back("output.directory: " + options.output_directory->string());
+  if (options.end_time) lines.push_back(fmt::format("solver.end_time: {}", *options.end_time));
+  if (options.steps) lines.push_back(fmt::format("steps: {}  # --steps", *options.steps));
+  for (const auto& line : options.overrides) lines.push_back(line);
+  return lines;
 }
 
 template <int Dim>
@@ -45,14 +105,37 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
           fmt::format("--end-time must be a positive number of seconds, not {}", *options.end_time));
     scene.solver.end_time = *options.end_time;
   }
+  const StopSignals stop_signals;  // SIGINT, SIGTERM, SIGUSR1: stop after the current step
   auto sim = build_simulation<Dim>(scene);
-  const auto& o = scene.output;
-  OutputWriter<Dim> writer(options.output_directory.value_or(o.directory), o.prefix, o.fields, o.grid, o.interval);
   RunSummary summary;
+  auto built_histories = build_histories<Dim>(scene, *sim, summary.warnings);  // output.histories
+  for (const auto& w : summary.warnings) fmt::print(log, "warning: {}\n", w);
+  const auto& o = scene.output;
+  const std::filesystem::path directory = options.output_directory.value_or(o.directory);
+  const std::string scene_text = read_scene_text(scene);
+  RunCheckpoints checkpoints(
+      scene, scene_text,
+      o.checkpoint.directory.empty() ? directory / "checkpoints" : std::filesystem::path(o.checkpoint.directory));
+  std::optional<RestartPoint> restart;
+  if (options.restart) {
+    restart = find_restart_point(*options.restart, scene, scene_text, log);
+    restore_simulation(*sim, *restart, log);
+    if (const int removed = checkpoints.restore(restart->archive))
+      fmt::print(log, "restart: removed {} later checkpoint(s) of the interrupted run from {}\n", removed,
+                 checkpoints.directory().string());
+  }
+  OutputWriter<Dim> writer(directory, o.prefix, o.fields, o.grid, o.interval, restart ? &restart->archive : nullptr);
+  HistoryWriter<Dim> histories(writer.directory(), std::move(built_histories), restart ? &restart->archive : nullptr);
+  writer.set_field_data(run_field_data(scene, overrides(options)));  // self-describing files
+  io::write_view_script(writer.directory() / "view.py", view_script_for(scene));
   summary.particles = static_cast<std::size_t>(sim->particle_count());
   for (const auto& b : sim->bodies())
     summary.bytes_per_particle = std::max(summary.bytes_per_particle, b.particles.bytes_per_particle());
-  const Real e0 = sim->energy().total();
+  RunRecord record;
+  record.warned.assign(sim->bodies().size(), false);
+  record.initial_energy = sim->energy().total();
+  if (restart) record.restore(restart->archive);
+  const Real e0 = record.initial_energy;
   // With a module that bounds the time step (heat conduction: diffusion), say which bound governs.
   if (std::any_of(sim->modules().begin(), sim->modules().end(),
                   [&](const auto& m) { return std::isfinite(m->stable_time_step(sim->bodies())); }))
@@ -62,43 +145,68 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   // Output is timed only when profiling (the profile's "output" phase).
   auto write = [&](const Simulation<Dim>& s, bool always) {
     const auto t0 = options.profile ? Clock::now() : Clock::time_point{};
-    if (always)
+    if (always) {
       writer.write(s);
-    else
+      histories.write(s);
+    } else {
       writer.write_if_due(s);
+      histories.write_if_due(s);
+    }
     if (options.profile) sim->add_to_profile(StepPhase::output, StepProfile::since(t0));
   };
-  write(*sim, false);
+  if (!restart) write(*sim, false);
 
   // The materials' validity checks (e.g. the density tolerance of a weakly compressible fluid), every
   // 50 steps and at the end; the first warning of each body is logged once.
-  std::vector<bool> warned(sim->bodies().size(), false);
   auto check_state = [&](const Simulation<Dim>& s) {
     for (std::size_t b = 0; b < s.bodies().size(); ++b) {
-      if (warned[b]) continue;
+      if (record.warned[b]) continue;
       const auto& body = s.bodies()[b];
       const std::string message = body.material->state_warning(body.particles);
       if (message.empty()) continue;
-      warned[b] = true;
-      summary.warnings.push_back(fmt::format("body {} at t = {:.6g} s: {}", body.name, s.time(), message));
+      record.warned[b] = true;
+      record.warnings.push_back(fmt::format("body {} at t = {:.6g} s: {}", body.name, s.time(), message));
       if (options.progress) log << '\n';
-      fmt::print(log, "warning: {}\n", summary.warnings.back());
+      fmt::print(log, "warning: {}\n", record.warnings.back());
     }
+  };
+  // A checkpoint of the state after the current step (at most one per step).
+  std::optional<std::filesystem::path> last_checkpoint;
+  Index last_checkpoint_step = restart ? sim->step() : -1;
+  auto write_checkpoint = [&](const Simulation<Dim>& s) {
+    if (s.step() == last_checkpoint_step) return;
+    const auto t0 = Clock::now();
+    StateArchive archive;
+    s.save_state(archive);
+    writer.save_state(archive);
+    histories.save_state(archive);
+    record.save(archive);
+    last_checkpoint = checkpoints.write(archive, s.step(), s.time());
+    last_checkpoint_step = s.step();
+    if (options.progress) log << '\n';
+    fmt::print(log, "checkpoint: {} (step {}, t = {:.9g} s; {:.3g} MB in {:.3g} s)\n", last_checkpoint->string(),
+               s.step(), s.time(), 1e-6 * static_cast<double>(std::filesystem::file_size(*last_checkpoint)),
+               std::chrono::duration<double>(Clock::now() - t0).count());
   };
 
   const auto start = Clock::now();
+  const Index first_step = sim->step();  // 0, or the step a restart continues
   auto last_print = start;
   auto after_step = [&](const Simulation<Dim>& s) {
     write(s, false);
     if (s.step() % 50 == 0) check_state(s);
+    if (checkpoints.due(s.time())) write_checkpoint(s);
+    debug_raise_at_step(s.step());
+    if (StopSignals::requested() != 0) throw StopRequested{};
     if (!options.progress) return;
     const auto now = Clock::now();
     if (now - last_print < std::chrono::milliseconds(500)) return;
     last_print = now;
     const double wall = std::chrono::duration<double>(now - start).count();
-    const double rate = static_cast<double>(s.particle_count()) * s.step() / wall;
+    const double rate = static_cast<double>(s.particle_count()) * (s.step() - first_step) / wall;
     double eta = wall * (s.settings().end_time - s.time()) / std::max(s.time(), 1e-300);
-    if (options.steps) eta = std::min(eta, wall * static_cast<double>(*options.steps - s.step()) / s.step());
+    if (options.steps)
+      eta = std::min(eta, wall * static_cast<double>(*options.steps - s.step()) / (s.step() - first_step));
     fmt::print(log, "\rstep {:>8}  t = {:<12.6g} s  {:9.3g} particle-updates/s  ETA {:7.1f} s ", s.step(), s.time(),
                rate, eta);
     log.flush();
@@ -107,16 +215,32 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     sim->run(after_step, options.steps ? std::optional<Index>(*options.steps) : std::nullopt);
   } catch (const StabilityError&) {
     writer.write(*sim);  // the simulation was rolled back to the last good step
+    histories.write(*sim);
     if (options.progress) log << '\n';
     throw;
+  } catch (const StopRequested&) {
+    // The checkpoint first, then the last frame: a restart replaces that frame (it is after the checkpoint).
+    write_checkpoint(*sim);
+    writer.write(*sim);
+    histories.write(*sim);
+    summary.stopped_by_signal = StopSignals::requested();
+    fmt::print(log, "stopped by {} at step {} (t = {:.9g} s); resume with: mpm run {} --restart {}{}\n",
+               signal_name(summary.stopped_by_signal), sim->step(), sim->time(), scene.file,
+               last_checkpoint ? last_checkpoint->string() : checkpoints.directory().string(),
+               options.output_directory ? " -o " + options.output_directory->string() : std::string());
+    summary.steps = sim->step();
+    summary.warnings.insert(summary.warnings.end(), record.warnings.begin(), record.warnings.end());
+    return summary;
   }
   summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();  // stepping only
   check_state(*sim);
+  if (checkpoints.enabled() && sim->finished()) write_checkpoint(*sim);  // a fork may continue past the end
   write(*sim, true);
+  summary.warnings.insert(summary.warnings.end(), record.warnings.begin(), record.warnings.end());
   if (options.progress) log << '\n';
   summary.steps = sim->step();
   summary.particle_updates_per_second =
-      static_cast<double>(summary.particles) * summary.steps / std::max(summary.wall_seconds, 1e-300);
+      static_cast<double>(summary.particles) * (summary.steps - first_step) / std::max(summary.wall_seconds, 1e-300);
   const Real e1 = sim->energy().total();
   summary.relative_energy_change = e0 != 0 ? (e1 - e0) / std::abs(e0) : e1;
   fmt::print(log,

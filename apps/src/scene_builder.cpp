@@ -13,10 +13,12 @@
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
+#include "mpm/history/history_kind.hpp"
 #include "mpm/material_registry.hpp"
 #include "mpm/output_fields.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
+#include "particle_file_body.hpp"
 
 namespace mpm::app {
 namespace {
@@ -164,15 +166,29 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   body.index = index;
   body.material = make_material<Dim>(scene.materials.at(bd.material));
   std::vector<std::string> warnings;  // repairs of mesh files (printed, the run goes on)
-  const geometry::CpdiParticles<Dim> elements = particle_elements<Dim>(scene, bd, index, geometry, shape, warnings);
+  geometry::CpdiParticles<Dim> elements;
+  std::optional<SeedParticles<Dim>> seed;  // a body from a particle file
+  if (bd.shape.type == "particles") {
+    if (shape.domain_corners > 0)
+      throw SceneError(bd.shape.where, body_key(index, "shape"),
+                       "a particle file gives no particle domains, which " + scene.solver.shape_function +
+                           " needs: use a shape function without them (not cpdi_*)");
+    seed = read_seed_particles<Dim>(bd, index, geometry);
+    elements.positions = seed->positions;
+    elements.volumes = seed->volumes;
+  } else {
+    elements = particle_elements<Dim>(scene, bd, index, geometry, shape, warnings);
+  }
   add_particles<Dim>(body, bd, elements);
+  if (seed) apply_seed_state(body, *seed);
   track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
   if (scene.solver.velocity_transfer == VelocityTransfer::apic)
     body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
   if constexpr (Dim == 2)
     if (geometry.coordinates == Coordinates::axisymmetric) axisym::add_hoop_fields(body.particles);  // F_tt, L_tt
-  prepare_output_fields<Dim>(scene.output.fields, body);  // what the output reads (displacement: X_p)
-  body.material->prepare_particles(body.particles);       // the model's history fields (plasticity), if any
+  prepare_output_fields<Dim>(scene.output.fields, body);                  // what the output reads (displacement: X_p)
+  prepare_output_fields<Dim>(history_output_fields(scene.output), body);  // and what the histories read
+  body.material->prepare_particles(body.particles);  // the model's history fields (plasticity), if any
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
   return body;
 }

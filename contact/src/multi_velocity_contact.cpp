@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <cstring>
@@ -10,6 +11,8 @@
 #include <stdexcept>
 
 #include "mpm/contact/contact_law.hpp"
+#include "mpm/io/continued_file.hpp"
+#include "mpm/state_archive.hpp"
 #include "shape_passes.hpp"
 
 namespace mpm::contact {
@@ -143,6 +146,7 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
   impulse_.assign(slots, Vec<Dim>::Zero());
   impulse_n_.assign(slots, 0);
   step_force_.assign(slots, Vec<Dim>::Zero());
+  step_moment_.assign(slots, Vec3::Zero());
   step_normal_.assign(slots, 0);
 }
 
@@ -338,11 +342,13 @@ void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVel
   CorrectionPass pass{
       member, record, ctx.settings.mass_cutoff, ctx.dt, body_count_ + static_cast<int>(settings_.planes.size()), {}};
   pass.plane_velocity.resize(settings_.planes.size());
+  pass.geometry = &ctx.grid.geometry;
   for (std::size_t P = 0; P < pass.plane_velocity.size(); ++P)
     pass.plane_velocity[P] = plane_velocity(static_cast<int>(P), t);
   if (record)
     for (std::size_t s = 0; s < step_force_.size(); ++s) {
       step_force_[s].setZero();
+      step_moment_[s].setZero();
       step_normal_[s] = 0;
     }
   Index corrected_nodes = 0;
@@ -379,6 +385,10 @@ bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Ind
   if (!pass.record) return true;
   const Vec<Dim> f = body_grids_[k].node[I].mass * (v - before) / pass.dt;
   step_force_[k * pass.slots + other] += f;
+  Vec3 x3 = Vec3::Zero(), f3 = Vec3::Zero();
+  x3.template head<Dim>() = pass.geometry->node_position(pass.geometry->node_indices(I));
+  f3.template head<Dim>() = f;
+  step_moment_[k * pass.slots + other] += x3.cross(f3);
   step_normal_[k * pass.slots + other] -= f.dot(n);
   return true;
 }
@@ -477,6 +487,28 @@ void MultiVelocityContact<Dim>::log_forces(const CorrectionPass& pass, Index cor
 }
 
 template <int Dim>
+std::vector<std::string> MultiVelocityContact<Dim>::reaction_partners() const {
+  std::vector<std::string> names;
+  for (const auto& plane : settings_.planes) names.push_back(plane.name);
+  for (const auto& rigid : settings_.rigid_bodies) names.push_back(bodies_[rigid.body].name);
+  return names;
+}
+
+template <int Dim>
+Reaction<Dim> MultiVelocityContact<Dim>::last_reaction(int k) const {
+  const int planes = static_cast<int>(settings_.planes.size());
+  const int slots = body_count_ + planes;
+  const int other = k < planes ? body_count_ + k : settings_.rigid_bodies[k - planes].body;
+  Reaction<Dim> r;
+  for (int b = 0; b < body_count_; ++b) {  // on every deformable body, in body order
+    if (rigid_of_[b] >= 0) continue;
+    r.force += step_force_[b * slots + other];
+    r.first_moment += step_moment_[b * slots + other];
+  }
+  return r;
+}
+
+template <int Dim>
 void MultiVelocityContact<Dim>::end_of_step(StepContext<Dim>& ctx) {
   const Real t = ctx.time + ctx.dt;
   // Rigid particles keep exactly the prescribed velocity (the grid gives it up to round-off).
@@ -536,6 +568,71 @@ void MultiVelocityContact<Dim>::write_forces(Real time) {
     if (rigid) row(name_of(o), "all", reaction[o], touched[o] ? reaction_n[o] : 0);
   }
   csv_.flush();
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::save_state(StateArchive& archive, const std::string& prefix) const {
+  auto flat = [](const std::vector<Vec<Dim>>& v) {
+    std::vector<Real> out;
+    for (const auto& x : v) out.insert(out.end(), x.data(), x.data() + Dim);
+    return out;
+  };
+  archive.put_values<Real>(prefix + "plane_point", flat(plane_point_), Dim);
+  archive.put_values<Real>(prefix + "impulse", flat(impulse_), Dim);
+  archive.put_values<Real>(prefix + "impulse_normal", impulse_n_);
+  archive.put_number(prefix + "onset_time", onset_time_);
+  archive.put_number(prefix + "last_row_time", last_row_time_);
+  archive.put_integer(prefix + "contact_nodes_last", contact_nodes_last_);
+  std::vector<int> pairs;
+  std::vector<Real> forces;
+  for (const auto& f : last_forces_) {
+    pairs.insert(pairs.end(), {f.body, f.other});
+    forces.insert(forces.end(), f.force.data(), f.force.data() + Dim);
+    forces.insert(forces.end(), {f.normal, f.tangential});
+  }
+  archive.put_values<int>(prefix + "last_force_pairs", pairs, 2);
+  archive.put_values<Real>(prefix + "last_forces", forces, Dim + 2);
+  // The force CSV is flushed after every row group: its length on disk is what was written (nothing yet while
+  // it is not open, whatever an older run left there).
+  io::FileMark mark = io::mark_file(settings_.force_file.empty() ? "." : settings_.force_file);
+  if (!csv_.is_open()) mark.bytes = 0;
+  io::save_mark(archive, prefix + "force_file", mark);
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::restore_state(const StateArchive& archive, const std::string& prefix) {
+  auto unflat = [](const std::vector<Real>& in, std::vector<Vec<Dim>>& out, const std::string& name) {
+    if (in.size() != out.size() * Dim) throw ArchiveError(name + ": the checkpoint has another number of entries");
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = Eigen::Map<const Vec<Dim>>(in.data() + k * Dim);
+  };
+  unflat(archive.values<Real>(prefix + "plane_point"), plane_point_, prefix + "plane_point");
+  unflat(archive.values<Real>(prefix + "impulse"), impulse_, prefix + "impulse");
+  impulse_n_ = archive.values<Real>(prefix + "impulse_normal");
+  if (impulse_n_.size() != impulse_.size()) throw ArchiveError(prefix + "impulse_normal: wrong number of entries");
+  onset_time_ = archive.number(prefix + "onset_time");
+  last_row_time_ = archive.number(prefix + "last_row_time");
+  contact_nodes_last_ = archive.integer(prefix + "contact_nodes_last");
+  const auto pairs = archive.values<int>(prefix + "last_force_pairs");
+  const auto forces = archive.values<Real>(prefix + "last_forces");
+  last_forces_.clear();
+  for (std::size_t k = 0; 2 * k + 1 < pairs.size() && (k + 1) * (Dim + 2) <= forces.size(); ++k) {
+    PairForce<Dim> f;
+    f.body = pairs[2 * k];
+    f.other = pairs[2 * k + 1];
+    const Real* values = forces.data() + k * (Dim + 2);
+    f.force = Eigen::Map<const Vec<Dim>>(values);
+    f.normal = values[Dim];
+    f.tangential = values[Dim + 1];
+    last_forces_.push_back(f);
+  }
+  if (settings_.force_file.empty()) return;
+  const io::FileMark mark = io::load_mark(archive, prefix + "force_file");
+  if (csv_.is_open()) csv_.close();
+  io::continue_file(mark, settings_.force_file);
+  if (mark.bytes == 0) return;  // the header comes with the first row
+  csv_.open(settings_.force_file, std::ios::app);
+  if (!csv_) throw std::runtime_error("contact: cannot write the force file " + settings_.force_file);
+  csv_.precision(10);
 }
 
 template class MultiVelocityContact<1>;

@@ -38,7 +38,9 @@ void register_module() {
                               .parse = &parse_contact_section,
                               .build_1d = &build_contact<1>,
                               .build_2d = &build_contact<2>,
-                              .build_3d = &build_contact<3>});
+                              .build_3d = &build_contact<3>,
+                              .run_control_keys = {"contact.rigid_bodies.*.velocity", "contact.planes.*.velocity",
+                                                   "contact.force_file", "contact.force_interval"}});
   });
 }
 

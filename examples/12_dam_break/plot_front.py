@@ -1,19 +1,15 @@
 # Surge front of the Martin & Moyce scene against the experiment: Z = x_front / a against T = t sqrt(2 g / a),
-# x_front = the largest particle x plus half a particle spacing (as tests/verification/dam_break.cpp).
+# x_front = the largest particle x (the history front.csv, column x_max) plus half a particle spacing (as
+# tests/verification/dam_break.cpp).
 # usage: /usr/bin/python3 plot_front.py OUTPUT_DIR [PICTURE.png]   (OUTPUT_DIR of `mpm run martin_moyce.yaml`)
-import os, sys, glob, math, numpy as np, vtk
-from vtk.util.numpy_support import vtk_to_numpy as n
+import csv, os, sys, math, numpy as np
 import matplotlib; matplotlib.use("Agg"); import matplotlib.pyplot as plt
 
 a, g, spacing = 0.05715, 9.81, 0.0017859375 / 2
 out = sys.argv[1]
-times = [float(l.split('timestep="')[1].split('"')[0]) for l in open(out + "/particles.pvd") if "timestep=" in l]
-files = sorted(glob.glob(out + "/particles_*.vtu"))
-T, Z = [], []
-for t, f in zip(times, files):
-    r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(f); r.Update()
-    x = n(r.GetOutput().GetPoints().GetData())
-    T.append(t * math.sqrt(2 * g / a)); Z.append((x[:, 0].max() + spacing / 2) / a)
+rows = list(csv.DictReader(open(os.path.join(out, "front.csv"))))
+T = [float(r["time [s]"]) * math.sqrt(2 * g / a) for r in rows]
+Z = [(float(r["x_max [m]"]) + spacing / 2) / a for r in rows]
 csv = os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../tests/data/dam_break_martin_moyce.csv")
 data = np.array([[float(v) for v in l.split(",")] for l in open(csv) if l[0].isdigit()])
 exp = data[data[:, 0] == 2.25]

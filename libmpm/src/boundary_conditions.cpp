@@ -32,6 +32,7 @@ GridBoundary<Dim>::GridBoundary(const GridGeometry<Dim>& g, const std::array<Fac
       const auto& constraint = faces[face].component[c];
       if (!constraint) continue;
       Constraint k;
+      k.face = face;
       k.component = c;
       auto e = std::make_shared<Expression>(*constraint, std::vector<std::string>{"t"});
       if (!(e->is_constant() && e->constant_value() == 0)) k.value = std::move(e);
@@ -54,6 +55,29 @@ void GridBoundary<Dim>::apply(std::vector<NodeVelocity<Dim>>& velocity, VecU<Dim
   for (const auto& k : constraints_) {
     const Real value = k.value ? (*k.value)(0, 0, 0, t) : 0;  // evaluated once per face, not per node
     for (Index n : k.nodes) (velocity[n].*member)[k.component] = value;
+  }
+}
+
+template <int Dim>
+bool GridBoundary<Dim>::constrains_face(int face) const {
+  for (const auto& k : constraints_)
+    if (k.face == face) return true;
+  return false;
+}
+
+template <int Dim>
+void GridBoundary<Dim>::reactions(int face, const std::vector<NodeRecord<Dim>>& node, const Vec<Dim>& gravity,
+                                  Real mass_cutoff, Real t, Real dt,
+                                  const std::function<void(Index, int, Real)>& f) const {
+  for (const auto& k : constraints_) {
+    if (k.face != face) continue;
+    // The prescribed acceleration over the step (zero for a constant velocity).
+    const Real a = k.value ? ((*k.value)(0, 0, 0, t + dt) - (*k.value)(0, 0, 0, t)) / dt : 0;
+    const int c = k.component;
+    for (Index n : k.nodes) {
+      const NodeRecord<Dim>& r = node[n];
+      if (r.mass > mass_cutoff) f(n, c, r.mass * a - (r.force[c] + r.mass * gravity[c]));
+    }
   }
 }
 

@@ -1,6 +1,7 @@
 #include "mpm/output_fields.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -186,6 +187,20 @@ void append_output_field(std::string_view name, const Body<Dim>& body, std::vect
 }
 
 template <int Dim>
+std::optional<std::string> output_field_undefined_on(const OutputField& field, const Body<Dim>& body) {
+  if (!field.carrier.empty() && !body.particles.has_field(field.carrier))
+    return fmt::format("body '{}' does not carry {} ({}{}{})", body.name, field.name, field.absent,
+                       field.remedies.empty() ? "" : "; ", fmt::join(field.remedies, ", or "));
+  if (field.material_output) {
+    std::vector<double> scratch;
+    if (!body.material->append_output(field.name, body.particles, scratch))
+      return fmt::format("the material of body '{}' (model {}) does not define {}", body.name, body.material->model(),
+                         field.name);
+  }
+  return std::nullopt;
+}
+
+template <int Dim>
 void prepare_output_fields(const std::vector<std::string>& requested, Body<Dim>& body) {
   for (const auto& name : requested)
     if (const OutputField* f = find_output_field(name); f && f->template prepare<Dim>())
@@ -225,5 +240,9 @@ template std::optional<std::string> unavailable_output_field<2>(const std::vecto
                                                                 const std::vector<Body<2>>&);
 template std::optional<std::string> unavailable_output_field<3>(const std::vector<std::string>&,
                                                                 const std::vector<Body<3>>&);
+
+template std::optional<std::string> output_field_undefined_on<1>(const OutputField&, const Body<1>&);
+template std::optional<std::string> output_field_undefined_on<2>(const OutputField&, const Body<2>&);
+template std::optional<std::string> output_field_undefined_on<3>(const OutputField&, const Body<3>&);
 
 }  // namespace mpm

@@ -11,7 +11,7 @@ namespace mpm {
 
 template <int Dim>
 OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string prefix, std::vector<std::string> fields,
-                                bool grid, Real interval)
+                                bool grid, Real interval, const StateArchive* restart)
     : directory_(std::move(directory)),
       prefix_(std::move(prefix)),
       fields_(std::move(fields)),
@@ -26,11 +26,17 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
   }
   fields_.push_back("id");
   if (grid_) grid_pvd_ = std::make_unique<io::PvdCollection>(directory_ / (prefix_ + "_grid.pvd"));
-  energy_ = std::make_unique<io::CsvLog>(
-      directory_ / "energy.csv",
-      std::vector<std::string>{"time", "step", "kinetic_energy", "strain_energy", "gravity_potential_energy",
-                               "total_energy", "momentum_x", "momentum_y", "momentum_z", "mass", "plastic_work",
-                               "thermal_energy"});
+  const std::vector<std::string> columns{
+      "time",         "step",          "kinetic_energy", "strain_energy", "gravity_potential_energy",
+      "total_energy", "momentum_x",    "momentum_y",     "momentum_z",    "mass",
+      "plastic_work", "thermal_energy"};
+  if (restart) {
+    energy_ =
+        std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns, io::load_mark(*restart, "output/energy"));
+    restore_state(*restart);
+  } else {
+    energy_ = std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns);
+  }
 }
 
 template <int Dim>
@@ -63,13 +69,20 @@ bool OutputWriter<Dim>::write_if_due(const Simulation<Dim>& sim) {
 template <int Dim>
 void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
   if (sim.time() == last_written_) return;
+  io::FieldData data = field_data_;  // self-describing files: the run's description, the time and the step
+  data.numbers.emplace_back("TIME", sim.time());
+  data.numbers.emplace_back("step", static_cast<double>(sim.step()));
   const std::string name = fmt::format("{}_{:06d}.vtu", prefix_, frame_);
-  io::write_vtu(directory_ / name, particle_cloud(sim));
+  io::PointCloud cloud = particle_cloud(sim);
+  cloud.field_data = data;
+  io::write_vtu(directory_ / name, cloud);
   particles_pvd_.add(sim.time(), directory_ / name);
   particles_pvd_.write();
   if (domains_pvd_) {
     const std::string domains_name = fmt::format("{}_domains_{:06d}.vtu", prefix_, frame_);
-    io::write_cells_vtu(directory_ / domains_name, particle_domain_mesh(sim.bodies()));
+    io::CellMesh mesh = particle_domain_mesh(sim.bodies());
+    mesh.field_data = data;
+    io::write_cells_vtu(directory_ / domains_name, mesh);
     domains_pvd_->add(sim.time(), directory_ / domains_name);
     domains_pvd_->write();
   }
@@ -90,6 +103,7 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
     if (g.geometry.coordinates == Coordinates::axisymmetric)
       velocity.component_names = force.component_names = io::cylindrical_component_names(3);
     image.fields = {mass, velocity, force};
+    image.field_data = data;
     for (const auto& [name, values] : g.node_fields)  // modules' nodal fields (thermal: temperature)
       if (static_cast<Index>(values.size()) == g.size()) image.fields.push_back({name, 1, values});
     const std::string grid_name = fmt::format("{}_grid_{:06d}.vti", prefix_, frame_);

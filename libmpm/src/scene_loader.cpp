@@ -35,12 +35,13 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
 
   SceneDescription scene;
   scene.file = file_name_for_messages;
+  scene.source = yaml_text;
   scene.dimension = sections::read_dimension(reader, top);
   scene.grid = sections::read_grid(reader, top.required("grid"), scene.dimension);
   scene.materials = sections::read_materials(reader, top.required("materials"));
   scene.bodies = sections::read_bodies(reader, top.required("bodies"), scene);
   scene.solver = sections::read_solver(reader, top.required("solver"), scene);
-  if (const auto output = top.find("output")) scene.output = sections::read_output(reader, *output);
+  if (const auto output = top.find("output")) scene.output = sections::read_output(reader, *output, scene);
   for (const auto& key : scene_extension_keys())  // module sections last: they may refer to bodies
     if (const auto section = top.find(key))
       scene.extensions[key] = find_scene_extension(key)->parse(reader, *section, scene);

@@ -26,10 +26,14 @@ Simulation<Dim>::Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<
       boundary_(std::move(boundary)),
       settings_(settings) {
   scheme_->initialize(bodies_, grid_);
-  for (auto& b : bodies_) {
-    wave_speed_.merge(b.material->wave_speed_bound(b.particles));
-    kinematic_viscosity_ = std::max(kinematic_viscosity_, b.material->kinematic_viscosity());
-  }
+  for (auto& b : bodies_) kinematic_viscosity_ = std::max(kinematic_viscosity_, b.material->kinematic_viscosity());
+  particles_changed();
+}
+
+template <int Dim>
+void Simulation<Dim>::particles_changed() {
+  wave_speed_ = WaveSpeedBound<Dim>{};
+  for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
   take_snapshot();
 }
 
@@ -82,8 +86,18 @@ Real Simulation<Dim>::next_time_step() const {
 
 template <int Dim>
 bool Simulation<Dim>::finished() const {
-  // A step that lands within a millionth of a step of end_time counts as the last one.
-  return time_ >= settings_.end_time - 1e-6 * next_time_step();
+  return reached(settings_.end_time);
+}
+
+template <int Dim>
+bool Simulation<Dim>::reached(Real target_time) const {
+  // A step that lands within a millionth of a step of the target counts as the last one.
+  return time_ >= target_time - 1e-6 * next_time_step();
+}
+
+template <int Dim>
+Real Simulation<Dim>::time_step_toward(Real target_time) const {
+  return std::min(next_time_step(), target_time - time_ + 1e-12 * target_time);
 }
 
 template <int Dim>
@@ -137,7 +151,7 @@ void Simulation<Dim>::advance(Real dt) {
 template <int Dim>
 void Simulation<Dim>::run(const std::function<void(const Simulation&)>& after_step, std::optional<Index> last_step) {
   while (!finished() && !(last_step && step_ >= *last_step)) {
-    advance(std::min(next_time_step(), settings_.end_time - time_ + 1e-12 * settings_.end_time));
+    advance(time_step_toward(settings_.end_time));
     if (after_step) after_step(*this);
   }
 }
@@ -151,6 +165,8 @@ void Simulation<Dim>::take_snapshot() {
   snapshot_.step = step_;
   snapshot_.wave_speed = wave_speed_;
   snapshot_.dts_since.clear();
+  snapshot_.modules = StateArchive();
+  for (const auto& m : hooks_.all()) m->save_state(snapshot_.modules, module_prefix(*m));
 }
 
 // Restores the snapshot and replays the steps taken since, which reproduces the state at the end of the
@@ -162,6 +178,7 @@ void Simulation<Dim>::roll_back_to_previous_step() {
   time_ = snapshot_.time;
   step_ = snapshot_.step;
   wave_speed_ = snapshot_.wave_speed;
+  for (const auto& m : hooks_.all()) m->restore_state(snapshot_.modules, module_prefix(*m));
   for (Real dt : replay) take_step(dt);
   take_snapshot();
 }
@@ -210,22 +227,32 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
 }
 
 template <int Dim>
+void Simulation<Dim>::add_body_energy(const Body<Dim>& b, EnergyBalance& e) const {
+  const Vec<Dim>& g = settings_.transfer.gravity;
+  const auto& p = b.particles;
+  for (Index i = 0; i < p.size(); ++i) {
+    const Real m = p.mass[i];
+    e.kinetic += 0.5 * m * p.v[i].squaredNorm();
+    e.gravity -= m * g.dot(Vec<Dim>(p.x[i]));
+    e.momentum.template head<Dim>() += m * p.v[i];
+    e.mass += m;
+  }
+  e.strain += b.material->strain_energy(p);
+  e.plastic_work += b.material->dissipated_energy(p);
+  for (const auto& m : hooks_.all()) m->add_energy(b, e);
+}
+
+template <int Dim>
 EnergyBalance Simulation<Dim>::energy() const {
   EnergyBalance e;
-  const Vec<Dim>& g = settings_.transfer.gravity;
-  for (const auto& b : bodies_) {
-    const auto& p = b.particles;
-    for (Index i = 0; i < p.size(); ++i) {
-      const Real m = p.mass[i];
-      e.kinetic += 0.5 * m * p.v[i].squaredNorm();
-      e.gravity -= m * g.dot(Vec<Dim>(p.x[i]));
-      e.momentum.template head<Dim>() += m * p.v[i];
-      e.mass += m;
-    }
-    e.strain += b.material->strain_energy(p);
-    e.plastic_work += b.material->dissipated_energy(p);
-  }
-  for (const auto& m : hooks_.all()) m->add_energy(bodies_, e);
+  for (const auto& b : bodies_) add_body_energy(b, e);
+  return e;
+}
+
+template <int Dim>
+EnergyBalance Simulation<Dim>::body_energy(const Body<Dim>& body) const {
+  EnergyBalance e;
+  add_body_energy(body, e);
   return e;
 }
 

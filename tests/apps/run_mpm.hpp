@@ -33,10 +33,12 @@ inline fs::path scratch(const std::string& name) {
   return dir;
 }
 
-/// Runs `mpm ARGS` with stdin from /dev/null; stdout and stderr go through files in `dir`.
-inline Result mpm(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string(MPM_EXECUTABLE) + " " + args + " > " + (dir / "stdout").string() + " 2> " +
-                          (dir / "stderr").string() + " < /dev/null";
+/// Runs `mpm ARGS` with stdin from /dev/null; stdout and stderr go through files in `dir`. `environment`
+/// ("NAME=value ...") is set for the program only.
+inline Result mpm(const std::string& args, const fs::path& dir, const std::string& environment = "") {
+  const std::string cmd = (environment.empty() ? "" : "env " + environment + " ") + std::string(MPM_EXECUTABLE) + " " +
+                          args + " > " + (dir / "stdout").string() + " 2> " + (dir / "stderr").string() +
+                          " < /dev/null";
   const int raw = std::system(cmd.c_str());
   Result r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -73,8 +73,11 @@ std::string taylor_anvil_scene(const TaylorSpec& s) {
       "  end_time: {:g}\n"
       "output:\n"
       "  interval: 10.0e-6\n"
-      "  fields: [velocity, plastic_strain, plastic_strain_rate, pressure, von_mises_stress, displacement]\n",
+      "  fields: [velocity, plastic_strain, plastic_strain_rate, pressure, von_mises_stress, displacement]\n"
+      "  histories:  # the rod's shape from the particle centres (README: L_f, D_f, W_f) and its energies\n",
       s.scheme, s.shape_function, s.cfl, s.max_time);
+  const double band_min = 0.2 * L0 - 0.5 * s.h, band_max = 0.2 * L0 + 0.5 * s.h;  // within h/2 of 5.08 mm
+  const std::string energy_history = "    - {name: rod, type: energy, interval: 1.0e-6}\n";
   if (s.axisymmetric)
     return fmt::format(
                "# Taylor anvil (review 6.3.1, Table 5) as an axisymmetric run (x = r, y = z): OFHC copper, L0 = 25.4 "
@@ -98,7 +101,14 @@ std::string taylor_anvil_scene(const TaylorSpec& s) {
                "    particles_per_cell: {}\n"
                "    velocity: [0, -190]\n",
                ppc) +
-           solver_output;
+           solver_output +
+           fmt::format(
+               "    - {{name: length, type: extent, axis: y, interval: 1.0e-6}}\n"
+               "    - {{name: foot, type: extent, axis: x, interval: 1.0e-6}}  # x = r: the foot's radius\n"
+               "    - {{name: bulge, type: extent, axis: x, interval: 1.0e-6, box: {{min: [0, {:.6g}], max: [0.02, "
+               "{:.6g}]}}}}\n",
+               band_min, band_max) +
+           energy_history;
   return fmt::format(
              "# Taylor anvil (review 6.3.1, Table 5): OFHC copper, L0 = 25.4 mm, D0 = 7.6 mm, 190 m/s onto a rigid\n"
              "# frictionless wall at z = 0. Written by bench_taylor --print-scene "
@@ -119,7 +129,17 @@ std::string taylor_anvil_scene(const TaylorSpec& s) {
              "    particles_per_cell: {}\n"
              "    velocity: [0, 0, -190]\n",
              ppc) +
-         solver_output;
+         solver_output +
+         fmt::format(
+             "    - {{name: length, type: extent, axis: z, interval: 1.0e-6}}\n"
+             "    - {{name: foot, type: extent, radial: {{axis: z, through: [0, 0, 0]}}, interval: 1.0e-6}}\n"
+             "    - name: bulge  # the particles within h/2 of 0.2 L0 = 5.08 mm from the wall\n"
+             "      interval: 1.0e-6\n"
+             "      type: extent\n"
+             "      radial: {{axis: z, through: [0, 0, 0]}}\n"
+             "      box: {{min: [-0.02, -0.02, {:.6g}], max: [0.02, 0.02, {:.6g}]}}\n",
+             band_min, band_max) +
+         energy_history;
 }
 
 namespace {

@@ -74,7 +74,9 @@ std::string tensile_necking_scene(const TensileSpec& s) {
       "output:\n"
       "  interval: {8:.6g}\n"
       "  fields: [velocity, stress, deformation_gradient, volume, displacement, plastic_strain, damage, "
-      "von_mises_stress]\n",
+      "von_mises_stress]\n"
+      "  histories:  # the load: the force the moving grip (the face z_max) exerts on the specimen\n"
+      "    - {{name: load, type: reaction, face: z_max}}\n",
       -R0, 2 * R0, L0, s.h, v, s.shape_function, s.cfl,
       // the time at which the grips have moved max_strain L0 / 2 each (Newton on u(t) = max_strain L0 / 2)
       [&] {

@@ -5,6 +5,7 @@
 /// where the algorithms overwrite them (v^t, v~^{t+dt}, v^{t+dt}).
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -41,9 +42,20 @@ class GridBoundary {
   const Vec<Dim>& wall_upper() const { return wall_upper_; }
   /// Sets the constrained components of `member` of every face node to their value at time t.
   void apply(std::vector<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member, Real t) const;
+  /// True when `face` (0 .. 2 Dim - 1, the order of GridDescription::face_names) holds a velocity component.
+  bool constrains_face(int face) const;
+  /// The force the velocity conditions of `face` exert on the grid in the step from t to t + dt: for every
+  /// node with mass above `mass_cutoff` and every component the face holds, calls f(node, component, R) with
+  /// R = m_I (v(t + dt) - v(t)) / dt - (f_I + m_I g)_c, what the condition adds to the nodal force (with
+  /// gravity) for the node to follow the prescribed velocity v (0 for a fixed or slip face). `node` holds the
+  /// nodal masses and forces of the step (after P2G and tractions). A node held in the same component by two
+  /// faces (a shared edge) is reported for both. Used by reaction histories only.
+  void reactions(int face, const std::vector<NodeRecord<Dim>>& node, const Vec<Dim>& gravity, Real mass_cutoff, Real t,
+                 Real dt, const std::function<void(Index, int, Real)>& f) const;
 
  private:
   struct Constraint {
+    int face = 0;
     int component = 0;
     std::shared_ptr<const Expression> value;  ///< of t; null means 0
     std::vector<Index> nodes;

@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -13,6 +14,8 @@
 #include "mpm/step_context.hpp"
 
 namespace mpm {
+
+class StateArchive;
 
 /// Stages at which the nodal velocities are (re)computed, for modules that constrain them (contact).
 enum class GridStage {
@@ -48,9 +51,24 @@ class Module {
   virtual Real stable_time_step(const std::vector<Body<Dim>>&) const { return std::numeric_limits<Real>::infinity(); }
   /// What stable_time_step() bounds, for the log ("diffusion bound h^2 rho c / (2 dim k)").
   virtual std::string_view time_step_bound() const { return name(); }
-  /// Adds the module's share of the conservation audit (e.g. the thermal energy) to `e`.
-  virtual void add_energy(const std::vector<Body<Dim>>&, EnergyBalance&) const {}
+  /// Adds the module's share of the conservation audit of one body (e.g. its thermal energy) to `e`
+  /// (called for every body in turn: energy.csv and the per-body energy histories).
+  virtual void add_energy(const Body<Dim>&, EnergyBalance&) const {}
+  /// What the module carries from one step to the next outside the particle fields (positions of moving
+  /// planes, force sums, the length of its CSV file, ...), as entries `prefix`NAME (state_archive.hpp): for
+  /// checkpoints and for the stability guard's snapshots. A module whose state is all in particle fields
+  /// saves nothing.
+  virtual void save_state(StateArchive&, const std::string& /*prefix*/) const {}
+  /// Restores what save_state() saved (a restart, or the guard's roll-back to its snapshot); throws
+  /// ArchiveError when an entry is missing.
+  virtual void restore_state(const StateArchive&, const std::string& /*prefix*/) {}
 };
+
+/// Where a module's state goes in a StateArchive: "modules/NAME/" (module names are unique in a run).
+template <int Dim>
+std::string module_prefix(const Module<Dim>& m) {
+  return "modules/" + std::string(m.name()) + "/";
+}
 
 /// The modules of a run, sorted by phase.
 template <int Dim>

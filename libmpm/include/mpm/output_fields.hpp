@@ -39,6 +39,9 @@ struct OutputField {
   std::string carrier;
   std::string absent;
   std::vector<std::string> remedies;
+  /// Written by the body's material (Material::append_output; plasticity: plastic_strain): a body whose
+  /// material does not write it has no such field (a history on that body is refused).
+  bool material_output = false;
   OutputAppend<1> append_1d;
   OutputAppend<2> append_2d;
   OutputAppend<3> append_3d;
@@ -98,6 +101,11 @@ void prepare_output_fields(const std::vector<std::string>& requested, Body<Dim>&
 template <int Dim>
 std::optional<std::string> unavailable_output_field(const std::vector<std::string>& requested,
                                                     const std::vector<Body<Dim>>& bodies);
+
+/// Why `field` means nothing on `body` (its material does not write it, or the body does not carry the
+/// particle field it reads), or nothing when it is defined there. For histories that name a body.
+template <int Dim>
+std::optional<std::string> output_field_undefined_on(const OutputField& field, const Body<Dim>& body);
 
 /// The dimension of a Body type (for the generic callables of OutputField).
 template <class B>

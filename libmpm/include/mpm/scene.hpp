@@ -63,8 +63,8 @@ struct MaterialDescription {
 /// The shape a body is filled from (docs/scene-reference.md, bodies[].shape): a primitive, a polygon, a CAD
 /// mesh, an image, or the union / intersection / difference of shapes (filled by geometry/).
 struct ShapeDescription {
-  /// "box", "disk" (2D), "sphere" (3D), "cylinder" (3D), "polygon" (2D), "mesh", "image", "union",
-  /// "intersection", "difference"
+  /// "box", "disk" (2D), "sphere" (3D), "cylinder" (3D), "polygon" (2D), "mesh", "image", "particles" (a
+  /// particle file), "union", "intersection", "difference"
   std::string type;
   std::array<double, 3> min{0, 0, 0}, max{0, 0, 0};  ///< box corners, m
   std::array<double, 3> center{0, 0, 0};             ///< disk/sphere centre, cylinder base centre, m
@@ -75,17 +75,18 @@ struct ShapeDescription {
   std::vector<std::array<double, 2>> vertices;       ///< polygon corners, m (either orientation)
   std::vector<ShapeDescription> parts;  ///< union/intersection/difference operands (difference: first minus the rest)
   // CAD meshes and images
-  std::string file;                            ///< mesh or image file (made relative to the working directory)
-  double scale = 1;                            ///< mesh: factor on the file's coordinates (1e-3 for mm), applied first
-  std::array<double, 3> rotation{0, 0, 0};     ///< mesh: rotation angles about x, then y, then z, degrees
-  std::array<double, 3> translation{0, 0, 0};  ///< mesh: added last, m
-  std::optional<double> section;               ///< 2D scene: the mesh is cut by the plane z = section, m
-  std::array<double, 3> pixel_size{0, 0, 0};   ///< image: pixel/voxel size per axis, m (0: the .vti's spacing)
+  std::string file;                         ///< mesh, image or particle file (made relative to the working directory)
+  double scale = 1;                         ///< mesh: factor on the file's coordinates (1e-3 for mm), applied first
+  std::array<double, 3> rotation{0, 0, 0};  ///< mesh: rotation angles about x, then y, then z, degrees
+  std::array<double, 3> translation{0, 0, 0};         ///< mesh: added last, m
+  std::optional<double> section;                      ///< 2D scene: the mesh is cut by the plane z = section, m
+  std::array<double, 3> pixel_size{0, 0, 0};          ///< image: pixel/voxel size per axis, m (0: the .vti's spacing)
   std::optional<std::array<double, 3>> image_origin;  ///< image: lower corner of the image, m
   std::optional<double> threshold;                    ///< image: pixels with value >= threshold form the body
   std::optional<double> label;                        ///< image: pixels with exactly this value form the body
-  bool pixel_particles = false;  ///< image: one particle per selected pixel instead of the grid lattice
-  SourceLocation where;          ///< of the shape, for errors found while filling it
+  bool pixel_particles = false;      ///< image: one particle per selected pixel instead of the grid lattice
+  std::optional<int> particle_body;  ///< particles: only the rows whose field `body` has this value
+  SourceLocation where;              ///< of the shape, for errors found while filling it
 };
 
 /// A body: a set of particles with one material.
@@ -119,17 +120,43 @@ struct SolverDescription {
   SourceLocation dt_where;
 };
 
+/// One entry of `output.histories` (docs/scene-reference.md#histories): a quantity written to its own CSV,
+/// one row per `interval`. `type` names a kind of the history registry (history/history_kind.hpp); `spec` is
+/// what that kind's parser returned.
+struct HistoryDescription {
+  std::string name;     ///< the CSV is NAME.csv in the output directory
+  std::string type;     ///< probe, reaction, energy, extent, ...
+  double interval = 0;  ///< s between rows (0: every output frame of `output.interval`, or only first and last)
+  std::any spec;
+  SourceLocation where;
+  std::string path;  ///< its key path for messages, e.g. "output.histories[2]"
+};
+
+/// `output.checkpoint`: when a run writes checkpoints (docs/scene-reference.md). Without it a run writes one
+/// only when a signal stops it.
+struct CheckpointDescription {
+  bool enabled = false;                 ///< the scene has the section
+  std::optional<double> interval;       ///< s of simulated time between checkpoints
+  std::optional<double> wall_interval;  ///< s of wall-clock time between checkpoints
+  int keep = 2;                         ///< newest checkpoints kept (older ones are removed)
+  std::string directory;                ///< empty: OUTPUT_DIRECTORY/checkpoints
+  SourceLocation where;
+};
+
 struct OutputDescription {
   std::string directory = "output";
   std::string prefix = "particles";
   double interval = 0;  ///< s between output frames (0 = only first and last)
   std::vector<std::string> fields{"velocity", "stress", "mass", "volume", "body"};
-  bool grid = false;  ///< also write the grid (.vti) at each frame
+  bool grid = false;                          ///< also write the grid (.vti) at each frame
+  std::vector<HistoryDescription> histories;  ///< probes, reactions, energies, extents (one CSV each)
+  CheckpointDescription checkpoint;
   SourceLocation where;
 };
 
 struct SceneDescription {
-  std::string file;  ///< path of the scene file
+  std::string file;    ///< path of the scene file
+  std::string source;  ///< the file's YAML text as read (written into every output file's field data)
   int dimension = 2;
   GridDescription grid;
   std::map<std::string, MaterialDescription> materials;

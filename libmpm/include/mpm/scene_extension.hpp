@@ -52,6 +52,9 @@ struct SceneExtension {
   SectionBuilder<1> build_1d = nullptr;
   SectionBuilder<2> build_2d = nullptr;
   SectionBuilder<3> build_3d = nullptr;
+  /// Keys of the section a fork may change when it continues a checkpoint (`mpm run --restart` with a changed
+  /// scene): dotted paths from the top, `*` for any key or list index ("contact.planes.*.velocity").
+  std::vector<std::string> run_control_keys{};
 };
 
 /// Registers (or replaces) the section with this key. Called by a module's register_module().

@@ -14,6 +14,7 @@
 #include "mpm/module.hpp"
 #include "mpm/scheme.hpp"
 #include "mpm/stability_error.hpp"
+#include "mpm/state_archive.hpp"
 #include "mpm/step_profile.hpp"
 
 namespace mpm {
@@ -34,7 +35,11 @@ class Simulation {
   Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<Dim>> bodies, std::unique_ptr<Scheme<Dim>> scheme,
              GridBoundary<Dim> boundary, const SimulationSettings<Dim>& settings);
 
-  void add_module(std::shared_ptr<Module<Dim>> module) { hooks_.add(std::move(module)); }
+  /// Adds a module (before the first step: its state joins the guard's first snapshot).
+  void add_module(std::shared_ptr<Module<Dim>> module) {
+    module->save_state(snapshot_.modules, module_prefix(*module));
+    hooks_.add(std::move(module));
+  }
   const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
 
   /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), of the viscous
@@ -51,7 +56,17 @@ class Simulation {
   /// Advances until end_time, or until step() reaches `last_step` when one is given (`mpm run --steps`);
   /// `after_step` is called after every step (for output and progress).
   void run(const std::function<void(const Simulation&)>& after_step = {}, std::optional<Index> last_step = {});
+  /// reached(end_time).
   bool finished() const;
+  /// Call after changing particle data between steps from outside the step (the Python package's writable
+  /// views): the time-step bound is recomputed from the changed state and the stability guard's snapshot is
+  /// taken again, so that a roll-back restores the changed state rather than the one before the change.
+  void particles_changed();
+  /// Whether time() has reached `target_time` (a step that lands within a millionth of a step of it counts).
+  bool reached(Real target_time) const;
+  /// The size of the next step toward `target_time`: next_time_step(), shortened to land on target_time
+  /// (run() steps toward end_time with it).
+  Real time_step_toward(Real target_time) const;
 
   Real time() const { return time_; }
   Index step() const { return step_; }
@@ -62,6 +77,19 @@ class Simulation {
   const Scheme<Dim>& scheme() const { return *scheme_; }
   Index particle_count() const;
   EnergyBalance energy() const;
+  /// The audit of one body (energy() is the sum over the bodies, accumulated in the same order).
+  EnergyBalance body_energy(const Body<Dim>& body) const;
+  /// Grid boundary conditions (velocity constraints and tractions on the box faces).
+  const GridBoundary<Dim>& boundary() const { return boundary_; }
+
+  /// Saves the whole state of the run (simulation_state.cpp): time, step, the time-step control, every
+  /// particle field of every body in id order with the order the particles are stored in, and the modules'
+  /// state. What a checkpoint holds of the simulation.
+  void save_state(StateArchive& archive) const;
+  /// Continues from a saved state, on a simulation built from the same scene (the same bodies with as many
+  /// particles, the same modules); the guard's snapshot is taken there. Returns notes on fields that only one
+  /// side has (a fork that changed the output fields); throws ArchiveError for anything else that differs.
+  std::vector<std::string> restore_state(const StateArchive& archive);
 
   /// Times the phases of every following step (step_profile.hpp). Off by default: the kernels then read
   /// no clock.
@@ -80,11 +108,14 @@ class Simulation {
     Index step = 0;
     WaveSpeedBound<Dim> wave_speed;
     std::vector<Real> dts_since;  ///< time steps taken after the snapshot, to replay them exactly
+    StateArchive modules;         ///< the modules' state (Module::save_state)
   };
   void take_step(Real dt);
   void take_snapshot();
   StabilityReport diagnose(Real dt) const;
   void roll_back_to_previous_step();
+  /// Adds body's share of the audit to e (energy() and body_energy()).
+  void add_body_energy(const Body<Dim>& body, EnergyBalance& e) const;
 
   Grid<Dim> grid_;
   std::vector<Body<Dim>> bodies_;

@@ -51,6 +51,13 @@ void PvdCollection::add(double time, const std::filesystem::path& file) {
   frames_.push_back({time, std::filesystem::absolute(file).lexically_normal().lexically_relative(dir)});
 }
 
+std::vector<std::pair<double, std::filesystem::path>> PvdCollection::frames() const {
+  const auto dir = std::filesystem::absolute(path_).parent_path();
+  std::vector<std::pair<double, std::filesystem::path>> out;
+  for (const auto& f : frames_) out.emplace_back(f.time, (dir / f.file).lexically_normal());
+  return out;
+}
+
 void PvdCollection::write() const {
   write_atomically(path_, [this](const std::filesystem::path& tmp) {
     std::ofstream out(tmp, std::ios::binary);

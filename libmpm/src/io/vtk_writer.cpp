@@ -7,11 +7,13 @@
 #include <vtkCellType.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
@@ -73,6 +75,23 @@ void add_fields(vtkPointData* data, const std::vector<FieldArray>& fields) {
   for (const auto& f : fields) data->AddArray(to_vtk(f));
 }
 
+// The data set's field data: one tuple per array.
+void add_field_data(const char* where, vtkDataObject* object, const FieldData& data) {
+  for (const auto& [name, value] : data.numbers) {
+    if (!std::isfinite(value)) fail(where, "field data '" + name + "' is not finite");
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name.c_str());
+    a->InsertNextValue(value);
+    object->GetFieldData()->AddArray(a);
+  }
+  for (const auto& [name, value] : data.text) {
+    vtkNew<vtkStringArray> a;
+    a->SetName(name.c_str());
+    a->InsertNextValue(value);
+    object->GetFieldData()->AddArray(a);
+  }
+}
+
 // Keeps the last error VTK reports on the writer, for the exception message.
 class ErrorCapture : public vtkCommand {
  public:
@@ -104,7 +123,7 @@ void write_xml(const char* where, const std::filesystem::path& path, Writer* wri
 // Every cell has its own `corners` consecutive points (offsets k * corners, connectivity 0..n-1).
 void write_unstructured(const char* where, const std::filesystem::path& path, const std::vector<double>& xyz,
                         int cell_type, int corners, const std::vector<FieldArray>& point_fields,
-                        const std::vector<FieldArray>& cell_fields) {
+                        const std::vector<FieldArray>& cell_fields, const FieldData& field_data) {
   if (xyz.size() % 3 != 0) fail(where, std::to_string(xyz.size()) + " coordinates is not 3 per point");
   const auto n = xyz.size() / 3;
   if (corners < 1 || n % static_cast<std::size_t>(corners) != 0)
@@ -135,6 +154,7 @@ void write_unstructured(const char* where, const std::filesystem::path& path, co
   grid->SetCells(cell_type, cells);
   add_fields(grid->GetPointData(), point_fields);
   for (const auto& f : cell_fields) grid->GetCellData()->AddArray(to_vtk(f));
+  add_field_data(where, grid, field_data);
 
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetInputData(grid);
@@ -144,11 +164,12 @@ void write_unstructured(const char* where, const std::filesystem::path& path, co
 }  // namespace
 
 void write_vtu(const std::filesystem::path& path, const PointCloud& cloud) {
-  write_unstructured("write_vtu", path, cloud.points, VTK_VERTEX, 1, cloud.fields, {});
+  write_unstructured("write_vtu", path, cloud.points, VTK_VERTEX, 1, cloud.fields, {}, cloud.field_data);
 }
 
 void write_cells_vtu(const std::filesystem::path& path, const CellMesh& mesh) {
-  write_unstructured("write_cells_vtu", path, mesh.points, mesh.cell_type, mesh.corners, {}, mesh.cell_fields);
+  write_unstructured("write_cells_vtu", path, mesh.points, mesh.cell_type, mesh.corners, {}, mesh.cell_fields,
+                     mesh.field_data);
 }
 
 void write_vti(const std::filesystem::path& path, const ImageGrid& grid) {
@@ -170,6 +191,7 @@ void write_vti(const std::filesystem::path& path, const ImageGrid& grid) {
   image->SetSpacing(grid.spacing.data());
   image->SetDimensions(grid.nodes.data());
   add_fields(image->GetPointData(), grid.fields);
+  add_field_data(where, image, grid.field_data);
 
   vtkNew<vtkXMLImageDataWriter> writer;
   writer->SetInputData(image);

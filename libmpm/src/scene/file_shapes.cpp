@@ -1,4 +1,5 @@
-// Shapes read from files: `mesh:` (a closed surface, STL/OBJ/OFF/PLY) and `image:` (PNG/PGM in 2D, VTI in 3D).
+// Shapes read from files: `mesh:` (a closed surface, STL/OBJ/OFF/PLY), `image:` (PNG/PGM in 2D, VTI in 3D) and
+// `particles:` (a particle set, VTU or CSV).
 // The files themselves are read by geometry/ when the body is filled; here only their names and keys.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -106,6 +107,17 @@ void read_image(const YamlReader& reader, const YamlMap& map, int dimension, con
     if (shape.pixel_particles && !whole_shape)
       reader.fail(*resolution, "resolution: pixel needs the image to be the whole shape of the body");
   }
+}
+
+void read_particles(const YamlReader& reader, const YamlMap& map, const std::string& scene_file, bool whole_shape,
+                    ShapeDescription& shape) {
+  const YamlValue file = *map.find("particles");
+  if (!whole_shape)
+    reader.fail(file, "a particle file is the whole shape of a body, not part of a union, intersection or difference");
+  map.allow({"particles", "body"});
+  shape.type = "particles";
+  shape.file = read_file_name(reader, file, scene_file, {".vtu", ".csv"}, "particle");
+  if (const auto body = map.find("body")) shape.particle_body = reader.integer(*body, 0);
 }
 
 }  // namespace mpm::sections

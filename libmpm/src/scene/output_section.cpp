@@ -5,10 +5,29 @@
 #include "sections.hpp"
 
 namespace mpm::sections {
+namespace {
 
-OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue& value) {
+/// `output.checkpoint: {interval, wall_interval, keep, directory}`.
+CheckpointDescription read_checkpoint(const io::YamlReader& reader, const io::YamlValue& value) {
   const io::YamlMap map = reader.map(value);
-  map.allow({"directory", "prefix", "interval", "fields", "grid"});
+  map.allow({"interval", "wall_interval", "keep", "directory"});
+  CheckpointDescription checkpoint;
+  checkpoint.enabled = true;
+  checkpoint.where = reader.location(value.mark);
+  if (const auto interval = map.find("interval"))
+    checkpoint.interval = reader.number(*interval, io::Range::above(0), "s");
+  if (const auto wall = map.find("wall_interval"))
+    checkpoint.wall_interval = reader.number(*wall, io::Range::above(0), "s");
+  if (const auto keep = map.find("keep")) checkpoint.keep = reader.integer(*keep, 1);
+  if (const auto directory = map.find("directory")) checkpoint.directory = reader.name(*directory);
+  return checkpoint;
+}
+
+}  // namespace
+
+OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue& value, const SceneDescription& scene) {
+  const io::YamlMap map = reader.map(value);
+  map.allow({"directory", "prefix", "interval", "fields", "grid", "histories", "checkpoint"});
   OutputDescription output;
   output.where = reader.location(value.mark);
   if (const auto directory = map.find("directory")) output.directory = reader.name(*directory);
@@ -28,6 +47,9 @@ OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue&
     }
   }
   if (const auto grid = map.find("grid")) output.grid = reader.boolean(*grid);
+  if (const auto histories = map.find("histories"))
+    output.histories = read_histories(reader, *histories, scene, output.interval);
+  if (const auto checkpoint = map.find("checkpoint")) output.checkpoint = read_checkpoint(reader, *checkpoint);
   return output;
 }
 

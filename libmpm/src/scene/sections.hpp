@@ -40,7 +40,10 @@ std::vector<BodyDescription> read_bodies(const io::YamlReader& reader, const io:
                                          const SceneDescription& scene);
 /// `solver:` (solver_section.cpp); needs the grid.
 SolverDescription read_solver(const io::YamlReader& reader, const io::YamlValue& value, const SceneDescription& scene);
-/// `output:` (output_section.cpp).
-OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue& value);
+/// `output:` (output_section.cpp); needs the grid and the bodies (its histories name them).
+OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue& value, const SceneDescription& scene);
+/// `output.histories:` (histories_section.cpp); `output_interval` is the default interval.
+std::vector<HistoryDescription> read_histories(const io::YamlReader& reader, const io::YamlValue& value,
+                                               const SceneDescription& scene, double output_interval);
 
 }  // namespace mpm::sections

@@ -33,7 +33,7 @@ std::optional<Bounds> set_operation_box(const ShapeDescription& shape, int dimen
 
 std::optional<Bounds> bounding_box(const ShapeDescription& shape, int dimension) {
   if (shape.type == "box") return Bounds{shape.min, shape.max};
-  if (shape.type == "mesh" || shape.type == "image") return std::nullopt;
+  if (shape.type == "mesh" || shape.type == "image" || shape.type == "particles") return std::nullopt;
   if (shape.type == "union" || shape.type == "intersection" || shape.type == "difference")
     return set_operation_box(shape, dimension);
   std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};

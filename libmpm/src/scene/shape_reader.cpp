@@ -91,16 +91,20 @@ ShapeDescription read_shape(const YamlReader& reader, const YamlValue& value, in
   ShapeDescription shape;
   shape.where = reader.location(value.mark);
   std::vector<std::string> given;
-  for (const auto& key : std::vector<std::string>{"type", "mesh", "image", "union", "intersection", "difference"})
+  for (const auto& key :
+       std::vector<std::string>{"type", "mesh", "image", "particles", "union", "intersection", "difference"})
     if (map.find(key)) given.push_back(key);
-  if (given.empty()) map.required("type", "key", " (or one of mesh, image, union, intersection, difference)");
+  if (given.empty())
+    map.required("type", "key", " (or one of mesh, image, particles, union, intersection, difference)");
   if (given.size() > 1)
     reader.fail(*map.find(given[1]),
-                fmt::format("a shape is either a type, a mesh, an image, a union, an intersection or a "
-                            "difference; this one has both {} and {}",
+                fmt::format("a shape is either a type, a mesh, an image, a union, an intersection or a difference; "
+                            "this one has both {} and {} (a particle file is a shape of its own too)",
                             given[0], given[1]));
   const std::string& kind = given[0];
-  if (kind == "mesh") {
+  if (kind == "particles") {
+    read_particles(reader, map, scene_file, whole_shape, shape);
+  } else if (kind == "mesh") {
     read_mesh(reader, map, dimension, scene_file, shape);
   } else if (kind == "image") {
     read_image(reader, map, dimension, scene_file, whole_shape, shape, labels);

@@ -30,6 +30,10 @@ void read_mesh(const io::YamlReader& reader, const io::YamlMap& map, int dimensi
 void read_image(const io::YamlReader& reader, const io::YamlMap& map, int dimension, const std::string& scene_file,
                 bool whole_shape, ShapeDescription& shape, std::vector<double>* labels);
 
+/// `particles: FILE` (.vtu or .csv) with an optional `body` (the rows of that body of this program's output).
+void read_particles(const io::YamlReader& reader, const io::YamlMap& map, const std::string& scene_file,
+                    bool whole_shape, ShapeDescription& shape);
+
 /// Lower and upper corners (first `dimension` axes meaningful), m.
 using Bounds = std::pair<std::array<double, 3>, std::array<double, 3>>;
 /// Axis-aligned bounding box of a shape, or nothing when only the mesh or image file knows it (the scene

@@ -10,11 +10,13 @@ namespace mpm::plasticity {
 void register_output_fields() {
   for (const auto& o : plastic_outputs<3>) {
     // the body's material writes it (PlasticBatch::append_output); any other body has no plastic flow
-    register_output_field(output_field(o.name, 1, o.unit, o.description,
-                                       [name = std::string(o.name)](const auto& body, std::vector<double>& out) {
-                                         if (!body.material->append_output(name, body.particles, out))
-                                           out.insert(out.end(), static_cast<std::size_t>(body.particles.size()), 0.0);
-                                       }));
+    OutputField field = output_field(o.name, 1, o.unit, o.description,
+                                     [name = std::string(o.name)](const auto& body, std::vector<double>& out) {
+                                       if (!body.material->append_output(name, body.particles, out))
+                                         out.insert(out.end(), static_cast<std::size_t>(body.particles.size()), 0.0);
+                                     });
+    field.material_output = true;
+    register_output_field(std::move(field));
   }
   register_output_field(carried_scalar_output(
       mpm::keys::temperature, "K",

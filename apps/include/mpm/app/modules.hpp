@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/scene_error.hpp"
+
 namespace mpm::app {
 
 /// Registers the material models (and other extensions) of every module compiled in. Idempotent and
@@ -15,5 +17,13 @@ void register_modules();
 
 /// Names of the modules compiled in (e.g. "plasticity").
 std::vector<std::string> compiled_modules();
+
+/// Names of the optional modules this build was configured without (their CMake option MPM_WITH_<NAME> off).
+std::vector<std::string> missing_modules();
+
+/// For a scene error about a name a missing module could define (an unknown material model, top-level section
+/// or output field): "; this build has no plasticity module (CMake option MPM_WITH_PLASTICITY=ON), ..." to append
+/// to its message; empty otherwise or when `missing` is empty. The `mpm` program and the Python package append it.
+std::string missing_module_note(const SceneError& error, const std::vector<std::string>& missing);
 
 }  // namespace mpm::app

@@ -27,6 +27,11 @@ struct RunOptions {
   bool profile = false;            ///< time the phases of every step and print the breakdown at the end (`--profile`)
   std::optional<long long> steps;  ///< stop after this many steps (`--steps`, >= 1), or at the end time if sooner
   std::optional<double> end_time;  ///< s, replaces the scene's solver.end_time (`--end-time`, > 0)
+  /// Changes made to the scene before the run by its caller (`mpm verify`: the refinement), "key: value" lines
+  /// recorded in the output files' field data with the command line's.
+  std::vector<std::string> overrides;
+  /// Continue this checkpoint, or the newest valid one of this directory (`--restart`; run_checkpoints.hpp).
+  std::optional<std::filesystem::path> restart;
 };
 
 struct RunSummary {
@@ -37,17 +42,23 @@ struct RunSummary {
   std::size_t particles = 0;
   std::size_t bytes_per_particle = 0;
   StepProfile profile;  ///< per-phase wall time, with RunOptions::profile (all zero otherwise)
-  /// Warnings of the materials about their state (Material::state_warning), the first of each body,
-  /// as logged: "body NAME at t = ... s: MESSAGE".
+  /// Warnings, as logged: of the histories when they are built ("output.histories[i]: ..."), and of the
+  /// materials about their state (Material::state_warning), the first of each body: "body NAME at t = ... s:
+  /// MESSAGE".
   std::vector<std::string> warnings;
+  /// The signal that stopped the run after it wrote a checkpoint and the last frame (stop_signals.hpp), or 0;
+  /// the program then exits with 128 + it.
+  int stopped_by_signal = 0;
 };
 
 /// Builds the scene's simulation without running it (throws SceneError like load_scene).
 void check_scene(const SceneDescription& scene, std::ostream& out);
 
-/// Runs the scene to its end time (or options.end_time, or options.steps steps), writing output; returns the
-/// summary. Throws SceneError for a scene that only fails once built, StabilityError (after writing the last
-/// good state) if the guard trips, std::invalid_argument for steps < 1 or an end time that is not positive.
+/// Runs the scene to its end time (or options.end_time, or options.steps steps, or until SIGINT, SIGTERM or
+/// SIGUSR1), writing output and checkpoints, or continues a checkpoint (options.restart); returns the
+/// summary. Throws RestartError or CheckpointError for a checkpoint it cannot continue. Throws SceneError for a scene
+/// that only fails once built, StabilityError (after writing the last good state) if the guard trips,
+/// std::invalid_argument for steps < 1 or an end time that is not positive.
 RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& log);
 
 }  // namespace mpm::app

@@ -18,6 +18,7 @@
 
 #include "mpm/expression.hpp"
 #include "mpm/module.hpp"
+#include "mpm/reaction_provider.hpp"
 
 namespace mpm::contact {
 
@@ -60,7 +61,7 @@ template <int Dim>
 class ShapePasses;
 
 template <int Dim>
-class MultiVelocityContact final : public Module<Dim> {
+class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<Dim> {
  public:
   /// Gives every body its own nodal arrays; `shape_function` is the scene's (for the normals).
   MultiVelocityContact(const GridGeometry<Dim>& grid, std::vector<Body<Dim>>& bodies, const std::string& shape_function,
@@ -71,6 +72,10 @@ class MultiVelocityContact final : public Module<Dim> {
   void after_p2g(StepContext<Dim>& ctx) override;
   void on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) override;
   void end_of_step(StepContext<Dim>& ctx) override;
+  /// Plane positions, the impulses since the last CSV row, the onset time, the last forces and the length of
+  /// the force CSV (continued by restore_state(), io/continued_file.hpp).
+  void save_state(StateArchive& archive, const std::string& prefix) const override;
+  void restore_state(const StateArchive& archive, const std::string& prefix) override;
 
   /// Time (end of the step) of the first contact correction, or a negative value if none happened yet.
   Real onset_time() const { return onset_time_; }
@@ -80,6 +85,10 @@ class MultiVelocityContact final : public Module<Dim> {
   Index contact_node_count() const { return contact_nodes_last_; }
   /// Position of plane k at the current time (it moves with its velocity).
   Vec<Dim> plane_point(int k) const { return plane_point_[k]; }
+  /// The planes' names, then the rigid bodies' (reaction histories, reaction_provider.hpp).
+  std::vector<std::string> reaction_partners() const override;
+  /// The force partner k exerted on the deformable bodies in the last step (sum of the step's corrections).
+  Reaction<Dim> last_reaction(int k) const override;
 
  private:
   void find_candidates(StepContext<Dim>& ctx);
@@ -95,6 +104,7 @@ class MultiVelocityContact final : public Module<Dim> {
     Real dt;      ///< s
     int slots;    ///< partners per body: bodies, then planes
     std::vector<Vec<Dim>> plane_velocity;
+    const GridGeometry<Dim>* geometry = nullptr;  ///< node positions, for the moments of the forces
   };
   /// The contact correction at every candidate node: two-body nodes (eqs 5.2-5.8), nodes of three or more
   /// bodies, nodes behind a plane; then the force log of the step.
@@ -144,6 +154,7 @@ class MultiVelocityContact final : public Module<Dim> {
   std::vector<Real> impulse_n_;
   std::vector<PairForce<Dim>> last_forces_;
   std::vector<Vec<Dim>> step_force_;  ///< per (body, other slot): force of this step
+  std::vector<Vec3> step_moment_;     ///< per (body, other slot): sum of x_I x f_I of this step, N m
   std::vector<Real> step_normal_;
   Real onset_time_ = -1;
   Index contact_nodes_last_ = 0;

@@ -3,34 +3,43 @@
 /// A small CSV table written as the run goes (one row per output frame: time, energies...).
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
+
+#include "mpm/io/continued_file.hpp"
 
 namespace mpm::io {
 
 /// A CSV table: a header line of column names, then one line per row, numbers in full precision
-/// (%.17g, always with '.' as decimal point). Rows are kept in memory and the whole file is
-/// rewritten atomically by the constructor (header only) and by each append(), so the file on disk
-/// is always complete.
+/// (%.17g, always with '.' as decimal point). The constructor writes the header atomically (replacing any
+/// previous file); each append() adds its line, formatted first and written with one flushed write, at the
+/// end of the open file, so that the file on disk holds every row appended so far. (Rewriting the whole
+/// file per row, as this class once did, made a history written every step quadratic in the run length.)
 class CsvLog {
  public:
   /// Writes the header to `path` (replacing any previous file). Throws std::invalid_argument if
   /// `columns` is empty.
   CsvLog(std::filesystem::path path, std::vector<std::string> columns);
+  /// Continues the table of a checkpointed run (continued_file.hpp): `path` becomes the first from.bytes
+  /// bytes of from.path, whose rows are checked (numbers, one per column) and then appended to. Throws std::runtime_error naming the file when they
+  /// cannot be, or when its header is not `columns`.
+  CsvLog(std::filesystem::path path, std::vector<std::string> columns, const FileMark& from);
 
-  /// Adds a row and rewrites the file. Throws std::invalid_argument, and keeps the table unchanged,
-  /// if row.size() != the number of columns or if a value is not finite.
+  /// The table's length on disk now, for a checkpoint.
+  FileMark mark() const { return mark_file(path_); }
+
+  /// Appends a row to the file. Throws std::invalid_argument, and writes nothing, if row.size() != the
+  /// number of columns or if a value is not finite; std::runtime_error if the file cannot be written.
   void append(const std::vector<double>& row);
 
   /// Where the table is written.
   const std::filesystem::path& path() const { return path_; }
 
  private:
-  void write() const;
-
   std::filesystem::path path_;
   std::vector<std::string> columns_;
-  std::vector<std::vector<double>> rows_;
+  std::ofstream out_;  ///< the file after its header, in append mode
 };
 
 }  // namespace mpm::io

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <utility>
 #include <vector>
 
 namespace mpm::io {
@@ -27,6 +28,8 @@ class PvdCollection {
   const std::filesystem::path& path() const { return path_; }
   /// Number of frames added.
   std::size_t size() const { return frames_.size(); }
+  /// The frames added so far: time and file (absolute), as add() takes them (a checkpoint saves them).
+  std::vector<std::pair<double, std::filesystem::path>> frames() const;
 
  private:
   struct Frame {

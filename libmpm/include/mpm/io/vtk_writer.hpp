@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mpm::io {
@@ -28,10 +29,19 @@ struct FieldArray {
 /// run (x = r, y = z, out of plane = theta); empty for other component counts.
 std::vector<std::string> cylindrical_component_names(int components);
 
+/// What describes a data set as a whole, written as VTK field data (ParaView: the Information panel, or a
+/// Spreadsheet view of Field Data): texts (the scene, the program and its commit) and finite numbers (`TIME`,
+/// which ParaView takes as the data set's time; the step; the thread count).
+struct FieldData {
+  std::vector<std::pair<std::string, std::string>> text;
+  std::vector<std::pair<std::string, double>> numbers;
+};
+
 /// Points (always 3 coordinates per point, z = 0 in 2D) and their fields.
 struct PointCloud {
   std::vector<double> points;
   std::vector<FieldArray> fields;
+  FieldData field_data;
   /// Number of points.
   std::size_t size() const { return points.size() / 3; }
 };
@@ -43,6 +53,7 @@ struct CellMesh {
   int cell_type = 1;
   int corners = 1;
   std::vector<FieldArray> cell_fields;
+  FieldData field_data;
   std::size_t cells() const { return points.size() / 3 / static_cast<std::size_t>(corners); }
 };
 
@@ -53,6 +64,7 @@ struct ImageGrid {
   std::array<double, 3> spacing{1, 1, 1};
   std::array<int, 3> nodes{1, 1, 1};
   std::vector<FieldArray> fields;
+  FieldData field_data;
 };
 
 /// Writes the particles as a VTK XML UnstructuredGrid (.vtu), one VTK_VERTEX cell per point, binary
@@ -60,7 +72,7 @@ struct ImageGrid {
 /// Throws std::runtime_error, before anything is written, if a coordinate or a field value is not
 /// finite (the message names the field and the point index), if points.size() is not a multiple of
 /// 3, if a field's values.size() != components * size(), if a field has an empty or duplicate name
-/// or components < 1; and if VTK fails to write the file.
+/// or components < 1, if a field-data number is not finite; and if VTK fails to write the file.
 void write_vtu(const std::filesystem::path& path, const PointCloud& cloud);
 
 /// Writes cells (particle domains) as a VTK XML UnstructuredGrid, same rules as write_vtu, with the

@@ -47,6 +47,7 @@ struct RotationMemory<3> {
 /// The deviatoric stress is not stored: s' = R^T dev(sigma) R, so the Cauchy stress and R_t carry it.
 template <int Dim>
 struct PlasticState {
+  using scalar_type = Real;  ///< a struct of Reals: checkpointed as an array of doubles (field_layout.hpp)
   [[no_unique_address]] RotationMemory<Dim> rotation;  ///< R of F = R U at the last step
   Real plastic_strain = 0;                             ///< equivalent plastic strain eps_p, -
   Real plastic_strain_rate = 0;                        ///< d eps_p / dt over the last step, 1/s

@@ -41,6 +41,7 @@ struct HenckyJ2Params {
 /// History of one material point. Dim fixes which components of G^p can be non-zero (types.hpp).
 template <int Dim>
 struct HenckyJ2State {
+  using scalar_type = Real;  ///< a struct of Reals: checkpointed as an array of doubles (field_layout.hpp)
   SymTensor<Dim> plastic_metric = SymTensor<Dim>::from(Mat3::Identity());  ///< G^p (eq. 20), 1 when virgin
   Real xi = 0;            ///< hardening variable xi, the equivalent plastic strain (after eq. 42)
   Real plastic_work = 0;  ///< the sum of Delta D over the committed steps, J/m^3 of reference volume

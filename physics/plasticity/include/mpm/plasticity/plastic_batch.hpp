@@ -6,6 +6,7 @@
 /// field mpm::keys::temperature (K), added only when the model tracks it. Both are resolved once per block,
 /// never per particle. Outputs: the list of output_fields.hpp; energy audit: plastic_work.
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -36,8 +37,12 @@ class PlasticBatch final : public Material<Dim> {
     if (params_.thermal) p.add_field(mpm::keys::temperature, params_.room_temperature);  // kept if present
   }
 
-  /// Whole packs of lane_count particles run the vector law; the last few particles of a block the
-  /// scalar one (the same arithmetic, lanes.hpp).
+  /// Which law a particle runs depends on its index only, never on the block [begin, end): the vector law in
+  /// packs aligned to the index (particles g .. g + lane_count - 1, g a multiple of lane_count; a pack that
+  /// the block cuts is padded, and a lane's result does not depend on its pack-mates), the scalar law for the
+  /// last size() % lane_count particles of the set. The blocks are chosen by TBB at run time, and the two laws
+  /// agree only to round-off: so a particle's update is the same bits whatever the thread count (a restart
+  /// at another thread count) and however the range is split.
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
     if constexpr (Dim == 2)  // axisymmetric bodies: F_tt and L_tt join the law (one test per block)
       if (const axisym::HoopFields hoop = axisym::hoop_fields(p)) return update_block<true>(p, begin, end, L, dt, hoop);
@@ -99,10 +104,13 @@ class PlasticBatch final : public Material<Dim> {
     State* state = p.field(state_field).data();
     Real* temperature = params_.thermal ? p.field(mpm::keys::temperature).data() : nullptr;
     Real max_c2 = 0;
-    Index i = begin;
-    for (; i + lane_count <= end; i += lane_count)
-      max_c2 = std::max(max_c2, update_pack<Hoop>(p, i, L + (i - begin), dt, state, temperature, hoop));
-    for (; i != end; ++i) {
+    const Index packed_end = std::min(end, p.size() - p.size() % lane_count);
+    for (Index g = begin - begin % lane_count; g < packed_end; g += lane_count) {
+      const Index first = std::max(g, begin), last = std::min<Index>(g + lane_count, packed_end);
+      max_c2 =
+          std::max(max_c2, update_pack<Hoop>(p, g, first, last, L + (first - begin), dt, state, temperature, hoop));
+    }
+    for (Index i = std::max(begin, packed_end); i < end; ++i) {
       Real J = 0, size = 0;
       size_of<Hoop>(p, i, hoop, J, size);
       Model::template update_point<Dim>(params_, Mat<Dim>(p.F[i]), Mat<Dim>(L[i - begin]), J, dt, size, state[i],
@@ -123,20 +131,21 @@ class PlasticBatch final : public Material<Dim> {
     return bound;
   }
 
-  /// Particles i .. i + lane_count - 1 (L: their velocity gradients) through the vector law; returns the
-  /// largest squared wave speed among them.
+  /// Particles first .. last - 1 of the pack that starts at particle g (L: their velocity gradients) through
+  /// the vector law; lanes outside [first, last) repeat particle `first` and are not stored. Returns the
+  /// largest squared wave speed among the particles.
   template <bool Hoop>
-  Real update_pack(ParticleSet<Dim>& p, Index i, const MatU<Dim>* L, Real dt, State* state, Real* temperature,
-                   [[maybe_unused]] const axisym::HoopFields& hoop) const {
+  Real update_pack(ParticleSet<Dim>& p, Index g, Index first, Index last, const MatU<Dim>* L, Real dt, State* state,
+                   Real* temperature, [[maybe_unused]] const axisym::HoopFields& hoop) const {
     PointLanes<Dim, Pack> lanes;
     if constexpr (!Hoop) lanes.L_hoop = Pack::Zero();
     for (int l = 0; l < lane_count; ++l) {
-      const Index k = i + l;
+      const Index k = g + l >= first && g + l < last ? g + l : first;
       const Mat<Dim> F = p.F[k];
       for (int r = 0; r < Dim; ++r)
         for (int c = 0; c < Dim; ++c) {
           lanes.F[r][c][l] = F(r, c);
-          lanes.L[r][c][l] = L[l](r, c);
+          lanes.L[r][c][l] = L[k - first](r, c);
         }
       if constexpr (Hoop) lanes.L_hoop[l] = hoop.rate[k];
       size_of<Hoop>(p, k, hoop, lanes.J[l], lanes.volume[l]);
@@ -145,13 +154,13 @@ class PlasticBatch final : public Material<Dim> {
       for (int c = 0; c < SymTensor<Dim>::size; ++c) lanes.stress[c][l] = p.stress[k].c[c];
     }
     Model::template update<Dim, Pack>(params_, dt, temperature != nullptr, lanes);
-    for (int l = 0; l < lane_count; ++l) {
-      const Index k = i + l;
+    for (Index k = first; k < last; ++k) {
+      const int l = static_cast<int>(k - g);
       lanes.store_state(state[k], l);
       if (temperature) temperature[k] = lanes.temperature[l];
       for (int c = 0; c < SymTensor<Dim>::size; ++c) p.stress[k].c[c] = lanes.stress[c][l];
     }
-    return Model::wave_speed_squared(params_, lanes.J).maxCoeff();
+    return Model::wave_speed_squared(params_, lanes.J).maxCoeff();  // padded lanes repeat a particle
   }
 
   std::string key_;

@@ -34,6 +34,7 @@
 #include "mpm/field_keys.hpp"
 #include "mpm/module.hpp"
 #include "mpm/shape/stencil.hpp"
+#include "mpm/state_archive.hpp"
 #include "mpm/thermal/field_keys.hpp"
 #include "mpm/thermal/thermal_body.hpp"
 
@@ -95,14 +96,20 @@ class HeatConduction final : public Module<Dim> {
   void set_cell_size(const GridGeometry<Dim>& g) { h_min_ = g.h.minCoeff(); }
 
   /// Thermal energy sum m c (T - T_ref), J.
-  void add_energy(const std::vector<Body<Dim>>& bodies, EnergyBalance& e) const override {
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      const auto& p = bodies[b].particles;
-      const auto& T = p.field(mpm::keys::temperature);
-      const auto& tb = setup_.bodies[b];
-      for (Index i = 0; i < p.size(); ++i)
-        e.thermal += p.mass[i] * tb.specific_heat * (T[i] - tb.reference_temperature);
-    }
+  void add_energy(const Body<Dim>& body, EnergyBalance& e) const override {
+    const auto& p = body.particles;
+    const auto& T = p.field(mpm::keys::temperature);
+    const auto& tb = setup_.bodies[static_cast<std::size_t>(body.index)];
+    for (Index i = 0; i < p.size(); ++i) e.thermal += p.mass[i] * tb.specific_heat * (T[i] - tb.reference_temperature);
+  }
+
+  /// Whether the first step's flux has been computed: the rest of the module's state is in particle fields
+  /// (temperature, heat_flux, temperature_increment) or recomputed every step.
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    archive.put_integer(prefix + "flux_ready", flux_ready_ ? 1 : 0);
+  }
+  void restore_state(const StateArchive& archive, const std::string& prefix) override {
+    flux_ready_ = archive.integer(prefix + "flux_ready") != 0;
   }
 
   /// The grid temperature T_I^{t+dt} of the last step (K; zero on nodes without heat capacity).

@@ -1,0 +1,25 @@
+#pragma once
+/// \file diff_command.hpp
+/// `mpm diff RUN_A RUN_B [--tolerance REL] [--absolute ABS]`: compares two output directories for regression
+/// checks. Every .pvd series of RUN_A frame by frame (the frames' times, the points, every point field; particles
+/// matched by body and id when both runs write them), and every CSV (energy.csv, the histories, the contact
+/// forces) column by column; prints per field the largest absolute and relative difference and the first frame
+/// (or row) that differs. A value differs when |a - b| > max(ABS, REL * the largest |a| of that field in that
+/// frame); by default (0, 0) only identical values are equal.
+
+#include <filesystem>
+#include <iosfwd>
+
+namespace mpm::app {
+
+struct DiffOptions {
+  std::filesystem::path a, b;
+  double relative = 0;  ///< --tolerance
+  double absolute = 0;  ///< --absolute
+};
+
+/// Exit status: 0 equal within the tolerance, 1 different, 2 bad input (a directory missing, no output in it,
+/// an unreadable file).
+int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace mpm::app

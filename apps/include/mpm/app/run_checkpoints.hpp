@@ -1,0 +1,76 @@
+#pragma once
+/// \file run_checkpoints.hpp
+/// The checkpoints of one `mpm run` (docs/scene-reference.md, output.checkpoint; README "Long runs"): when
+/// they are due (every `interval` of simulated time, every `wall_interval` of wall-clock time, at the end,
+/// on a stop signal), what they hold besides the simulation's and the output's state (the program version,
+/// the scene text and its hash, the checkpoint schedule), where they go (checkpoint_STEP.h5 in the
+/// checkpoint directory, written atomically) and how many are kept. And the way back: the checkpoint a
+/// restart continues, checked against this program and this scene.
+
+#include <chrono>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "mpm/app/scene_diff.hpp"
+#include "mpm/scene.hpp"
+#include "mpm/state_archive.hpp"
+
+namespace mpm::app {
+
+/// A restart that cannot go on: no valid checkpoint, another program version, a scene that differs in more
+/// than run-control keys. Bad input (exit status 2); what() says what and where.
+class RestartError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The scene file's text (what a checkpoint stores and a restart compares).
+std::string read_scene_text(const SceneDescription& scene);
+
+class RunCheckpoints {
+ public:
+  using Clock = std::chrono::steady_clock;
+  /// `directory`: where checkpoints go (output.checkpoint.directory, or OUTPUT/checkpoints). With
+  /// output.checkpoint in the scene, checks at once that checkpoints can be written there (SceneError at
+  /// the key otherwise).
+  RunCheckpoints(const SceneDescription& scene, std::string scene_text, std::filesystem::path directory);
+
+  /// A checkpoint is due after a step that reached `time` (s): its interval or its wall interval has passed.
+  bool due(double time) const;
+  /// Adds the run's metadata and schedule to `archive` and writes it as checkpoint_STEP.h5; then removes
+  /// the older checkpoints beyond `keep`. Returns the file.
+  std::filesystem::path write(StateArchive& archive, long long step, double time);
+  /// Continues the schedule of the checkpoint a restart read; removes the checkpoints of this directory
+  /// that are later than it (the interrupted run's, which this run writes again). Returns their count.
+  int restore(const StateArchive& archive);
+
+  bool enabled() const { return settings_.enabled; }
+  const std::filesystem::path& directory() const { return directory_; }
+
+ private:
+  CheckpointDescription settings_;
+  std::string scene_file_, scene_text_;
+  std::filesystem::path directory_;
+  double next_time_ = 0;
+  Clock::time_point last_wall_;
+};
+
+/// The checkpoint `mpm run SCENE --restart FILE|DIR` continues: FILE, or the newest valid checkpoint of DIR (or of
+/// DIR/checkpoints, when DIR is an output directory)
+/// (an invalid one, such as a file cut short by a crash, is reported in `log` and skipped). Checks that it
+/// was written by this version of the program and that the scene differs from its scene only in run-control
+/// keys (a fork, whose changes `changes` lists); throws RestartError otherwise, or CheckpointError when FILE
+/// is not a valid checkpoint.
+struct RestartPoint {
+  std::filesystem::path file;
+  StateArchive archive;
+  std::vector<SceneDifference> changes;
+};
+RestartPoint find_restart_point(const std::filesystem::path& file_or_directory, const SceneDescription& scene,
+                                const std::string& scene_text, std::ostream& log);
+
+}  // namespace mpm::app

@@ -1,0 +1,139 @@
+#include "mpm/app/scene_diff.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "mpm/io/yaml_reader.hpp"
+#include "mpm/scene_error.hpp"
+#include "mpm/scene_extension.hpp"
+
+namespace mpm::app {
+namespace {
+
+/// The core's run-control keys; the modules add theirs (SceneExtension::run_control_keys).
+const std::vector<std::string> core_run_control_keys{"solver.end_time", "solver.cfl", "output",
+                                                     "grid.boundary.*.velocity"};
+
+std::vector<std::string> split(const std::string& path) {
+  std::vector<std::string> parts;
+  std::string part;
+  for (const char c : path) {
+    if (c == '.' || c == '[' || c == ']') {
+      if (!part.empty()) parts.push_back(part);
+      part.clear();
+    } else {
+      part += c;
+    }
+  }
+  if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
+/// `pattern` (with `*` for any one key or index) is `key` or a group that holds it.
+bool matches(const std::string& pattern, const std::string& key) {
+  const auto p = split(pattern), k = split(key);
+  if (p.size() > k.size()) return false;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p[i] != "*" && p[i] != k[i]) return false;
+  return true;
+}
+
+std::string text_of(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "(absent)";
+  if (node.IsScalar()) return node.Scalar();
+  YAML::Emitter out;
+  out << YAML::Flow << node;
+  return out.c_str();
+}
+
+bool same_scalar(const YAML::Node& a, const YAML::Node& b) {
+  if (a.Scalar() == b.Scalar()) return true;
+  const auto x = io::parse_number(a.Scalar()), y = io::parse_number(b.Scalar());
+  return x && y && *x == *y;
+}
+
+class Differ {
+ public:
+  Differ(const std::string& file, std::vector<SceneDifference>& out) : file_(file), out_(out) {}
+
+  void compare(const YAML::Node& saved, const YAML::Node& now, const std::string& path, const YAML::Mark& mark) {
+    const bool had = saved.IsDefined() && !saved.IsNull(), has = now.IsDefined() && !now.IsNull();
+    if (!had && !has) return;
+    if (had && has && saved.Type() == now.Type()) {
+      if (now.IsMap()) return compare_maps(saved, now, path, mark);
+      if (now.IsSequence() && saved.size() == now.size()) {
+        for (std::size_t i = 0; i < now.size(); ++i)
+          compare(saved[i], now[i], path + "[" + std::to_string(i) + "]", now[i].Mark());
+        return;
+      }
+      if (now.IsScalar() && same_scalar(saved, now)) return;
+    }
+    SceneDifference d;
+    d.key = path;
+    d.was = text_of(saved);
+    d.now = text_of(now);
+    if (has) {
+      d.where = {file_, mark.line + 1, mark.column + 1};
+    } else {
+      const YAML::Mark m = saved.Mark();
+      d.where = {"the checkpoint's scene", m.line + 1, m.column + 1};
+    }
+    d.run_control = is_run_control_key(path);
+    out_.push_back(std::move(d));
+  }
+
+ private:
+  void compare_maps(const YAML::Node& saved, const YAML::Node& now, const std::string& path, const YAML::Mark& mark) {
+    auto key_path = [&](const std::string& key) { return path.empty() ? key : path + "." + key; };
+    std::vector<std::string> seen;
+    for (const auto& entry : now) {  // keys of the new scene, in its order; then the removed ones
+      const std::string key = entry.first.as<std::string>();
+      seen.push_back(key);
+      compare(saved[key], entry.second, key_path(key),
+              entry.second.IsNull() ? entry.first.Mark() : entry.second.Mark());
+    }
+    for (const auto& entry : saved) {
+      const std::string key = entry.first.as<std::string>();
+      if (std::find(seen.begin(), seen.end(), key) == seen.end())
+        compare(entry.second, YAML::Node(), key_path(key), mark);
+    }
+  }
+
+  std::string file_;
+  std::vector<SceneDifference>& out_;
+};
+
+}  // namespace
+
+bool is_run_control_key(const std::string& key) {
+  auto match = [&](const std::vector<std::string>& patterns) {
+    return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return matches(p, key); });
+  };
+  if (match(core_run_control_keys)) return true;
+  for (const auto& section : scene_extension_keys())
+    if (match(find_scene_extension(section)->run_control_keys)) return true;
+  return false;
+}
+
+std::vector<SceneDifference> scene_differences(const std::string& saved, const std::string& current,
+                                               const std::string& current_file) {
+  YAML::Node before, after;
+  try {
+    before = YAML::Load(saved);
+  } catch (const YAML::Exception& e) {
+    throw SceneError({"the checkpoint's scene", e.mark.line + 1, e.mark.column + 1}, "",
+                     "the scene stored in the checkpoint is not YAML: " + e.msg);
+  }
+  try {
+    after = YAML::Load(current);
+  } catch (const YAML::Exception& e) {
+    throw SceneError({current_file, e.mark.line + 1, e.mark.column + 1}, "", "YAML syntax error: " + e.msg);
+  }
+  std::vector<SceneDifference> out;
+  Differ(current_file, out).compare(before, after, "", after.Mark());
+  return out;
+}
+
+}  // namespace mpm::app

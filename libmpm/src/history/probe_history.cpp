@@ -1,0 +1,344 @@
+// `type: probe` (docs/scene-reference.md#histories): output fields (the one table of output_fields.hpp, so a
+// module's fields are probe-able too) at a point, from the particles within a radius or from the grid, or
+// over the particles of a box (mean, min, max, sum).
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "history_support.hpp"
+#include "mpm/axisymmetric.hpp"
+#include "mpm/exact_sum.hpp"
+
+namespace mpm::history {
+namespace {
+
+enum class Where { particles, grid, box };
+const std::vector<std::string> statistic_names{"mean", "min", "max", "sum"};
+enum Statistic { stat_mean, stat_min, stat_max, stat_sum };
+
+struct ProbeSpec {
+  std::vector<std::string> fields;
+  int body = -1;  ///< -1: every body that defines the fields
+  Where where = Where::particles;
+  std::array<double, 3> point{0, 0, 0};
+  double radius = 0;  ///< m (from: particles); 0: the largest cell size of the built grid (follows refinement)
+  Box box;
+  std::vector<int> statistics;  ///< box: indices into statistic_names
+};
+
+/// The fields a probe can read: every selectable output field with point values (not `domains`).
+std::vector<std::string> probe_fields() {
+  std::vector<std::string> names;
+  for (auto& name : output_field_names())
+    if (find_output_field(name)->components > 0) names.push_back(std::move(name));
+  return names;
+}
+
+std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescription& scene) {
+  ProbeSpec s;
+  const std::vector<std::string> valid = probe_fields();
+  for (const auto& item : reader.list(entry.required("fields"), std::nullopt, "field names")) {
+    std::string field = reader.choice(item, valid);
+    if (std::find(s.fields.begin(), s.fields.end(), field) != s.fields.end())
+      reader.fail(item, fmt::format("field '{}' is listed twice", field));
+    s.fields.push_back(std::move(field));
+  }
+  if (s.fields.empty()) reader.fail(entry.required("fields"), "list at least one field");
+  if (const auto body = entry.find("body")) s.body = read_body(reader, *body, scene);
+  const auto point = entry.find("point"), box = entry.find("box"), from = entry.find("from"),
+             radius = entry.find("radius"), statistics = entry.find("statistics");
+  if (point && box) reader.fail(*box, "give either point or box, not both");
+  if (!point && !box)
+    reader.fail(entry.self().mark, entry.self().path, "missing 'point' (a probe at a point) or 'box' (a region)");
+  if (point) {
+    s.point = read_point_in_grid(reader, *point, scene, "probe point");
+    if (statistics) reader.fail(*statistics, "statistics are for a box; a point probe gives one value per component");
+    if (from && reader.choice(*from, {"particles", "grid"}) == "grid") {
+      s.where = Where::grid;
+      if (radius) reader.fail(*radius, "radius is for `from: particles`; `from: grid` uses the cell around the point");
+    } else {
+      if (radius) s.radius = reader.number(*radius, io::Range::above(0), "m");  // else the cell size, when built
+    }
+    return s;
+  }
+  s.where = Where::box;
+  s.box = read_box(reader, *box, scene);
+  if (from) reader.fail(*from, "from is for a point probe; a box probe reads the particles inside the box");
+  if (radius) reader.fail(*radius, "radius is for a point probe; a box probe reads the particles inside the box");
+  if (statistics) {
+    for (const auto& item : reader.list(*statistics, std::nullopt, "statistics")) {
+      const std::string name = reader.choice(item, statistic_names);
+      const int k =
+          static_cast<int>(std::find(statistic_names.begin(), statistic_names.end(), name) - statistic_names.begin());
+      if (std::find(s.statistics.begin(), s.statistics.end(), k) != s.statistics.end())
+        reader.fail(item, fmt::format("statistic '{}' is listed twice", name));
+      s.statistics.push_back(k);
+    }
+    if (s.statistics.empty()) reader.fail(*statistics, "list at least one of mean, min, max, sum");
+  } else {
+    s.statistics = {stat_mean, stat_min, stat_max};
+  }
+  return s;
+}
+
+std::vector<std::string> fields_of(const std::any& spec) { return std::any_cast<const ProbeSpec&>(spec).fields; }
+
+/// One column of values: field f, component c.
+struct Component {
+  const OutputField* field;
+  int offset;
+};
+
+template <int Dim>
+class ProbeHistory final : public History<Dim> {
+ public:
+  ProbeHistory(ProbeSpec spec, std::vector<const OutputField*> fields, std::vector<int> bodies,
+               const GridGeometry<Dim>& grid)
+      : s_(std::move(spec)), fields_(std::move(fields)), bodies_(std::move(bodies)), grid_(grid) {
+    if (s_.where == Where::particles && !(s_.radius > 0)) s_.radius = grid_.h.maxCoeff();
+    for (int d = 0; d < Dim; ++d) x0_[d] = s_.point[d];
+    for (int a = 0; a < (1 << Dim); ++a)  // corner a of the point's cell: bit d set = the upper node on axis d
+      for (int d = 0; d < Dim; ++d) {
+        const int cells = grid_.nodes[d] - 1;
+        const int base =
+            std::clamp(static_cast<int>(std::floor((x0_[d] - grid_.origin[d]) * grid_.inv_h[d])), 0, cells - 1);
+        corner_[a][d] = grid_.origin[d] + grid_.h[d] * (base + ((a >> d) & 1));
+      }
+    for (const OutputField* f : fields_)
+      for (std::size_t c = 0; c < component_suffixes(*f, Dim).size(); ++c)
+        components_.push_back({f, static_cast<int>(c)});
+  }
+
+  std::vector<std::string> columns() const override {
+    std::vector<std::string> names;
+    for (const OutputField* f : fields_)
+      for (const auto& suffix : component_suffixes(*f, Dim)) {
+        if (s_.where != Where::box) {
+          names.push_back(column_name(f->name + suffix, f->unit));
+          continue;
+        }
+        for (int k : s_.statistics) names.push_back(column_name(f->name + suffix + "_" + statistic_names[k], f->unit));
+      }
+    names.push_back(column_name("count", "-"));
+    return names;
+  }
+
+  void sample(const Simulation<Dim>& sim, OutputFieldCache<Dim>& cache, std::vector<double>& row) override {
+    switch (s_.where) {
+      case Where::particles:
+        return fit_particles(sim, cache, row);
+      case Where::grid:
+        return from_grid(sim, cache, row);
+      case Where::box:
+        return over_box(sim, cache, row);
+    }
+  }
+
+  /// Particles the probe reads now (for the warning at t = 0).
+  Index particle_count(const Simulation<Dim>& sim) const {
+    Index n = 0;
+    for (int b : bodies_) {
+      const auto& p = sim.bodies()[static_cast<std::size_t>(b)].particles;
+      for (Index i = 0; i < p.size(); ++i) n += reads(p.x[i]);
+    }
+    return n;
+  }
+
+ private:
+  bool reads(const VecU<Dim>& x) const {
+    if (s_.where == Where::box) return s_.box.contains<Dim>(x);
+    if (s_.where == Where::particles) return (Vec<Dim>(x) - x0_).squaredNorm() < s_.radius * s_.radius;
+    for (int a = 0; a < (1 << Dim); ++a)
+      if (hat(a, x) > 0) return true;
+    return false;
+  }
+
+  /// The value of a particle's component.
+  const double* values(OutputFieldCache<Dim>& cache, const Component& c, int b) const {
+    return cache.values(c.field->name, b).data() + c.offset;
+  }
+
+  /// Moving least squares: the weighted linear fit a + b.(x - x0) of the particles within the radius, with
+  /// weights V_p (1 - r^2/R^2)^2; its value at the point is a. Exact for fields linear in x; the weighted mean
+  /// where the particles do not span the space (fewer than Dim + 1, or on a line/plane).
+  void fit_particles(const Simulation<Dim>& sim, OutputFieldCache<Dim>& cache, std::vector<double>& row) const {
+    using Basis = Eigen::Matrix<double, Dim + 1, 1>;
+    using Moments = Eigen::Matrix<double, Dim + 1, Dim + 1>;
+    struct Near {
+      int b;
+      Index i;
+      double w;
+      Basis phi;
+    };
+    std::vector<Near> near;
+    const Real R2 = s_.radius * s_.radius;
+    for (int b : bodies_) {
+      const auto& p = sim.bodies()[static_cast<std::size_t>(b)].particles;
+      const Real* hoop = axisym::hoop_stretch_of(p);  // V_p = V_p^0 det F F_tt in an axisymmetric run
+      for (Index i = 0; i < p.size(); ++i) {
+        const Vec<Dim> d = Vec<Dim>(p.x[i]) - x0_;
+        const Real r2 = d.squaredNorm();
+        if (!(r2 < R2)) continue;
+        const Real q = 1 - r2 / R2;
+        Basis phi;
+        phi[0] = 1;
+        phi.template tail<Dim>() = d / s_.radius;
+        near.push_back({b, i, p.volume0[i] * axisym::volume_ratio(p, i, hoop) * q * q, phi});
+      }
+    }
+    Moments M = Moments::Zero();
+    for (const Near& n : near) M += n.w * n.phi * n.phi.transpose();
+    bool linear = static_cast<Index>(near.size()) >= Dim + 1 && M(0, 0) > 0;
+    Eigen::LDLT<Moments> solver;
+    if (linear) {
+      const Eigen::SelfAdjointEigenSolver<Moments> eigen(M / M(0, 0), Eigen::EigenvaluesOnly);
+      linear = eigen.eigenvalues().minCoeff() > 1e-8 * eigen.eigenvalues().maxCoeff();
+      if (linear) solver.compute(M);
+    }
+    for (const Component& c : components_) {
+      Basis rhs = Basis::Zero();
+      for (const Near& n : near) rhs += n.w * values(cache, c, n.b)[n.i * c.field->components] * n.phi;
+      if (near.empty() || !(M(0, 0) > 0))
+        row.push_back(0);
+      else
+        row.push_back(linear ? Basis(solver.solve(rhs))[0] : rhs[0] / M(0, 0));
+    }
+    row.push_back(static_cast<double>(near.size()));
+  }
+
+  /// The linear hat of corner a of the point's cell at x (review eq. 3.1).
+  Real hat(int a, const VecU<Dim>& x) const {
+    Real w = 1;
+    for (int d = 0; d < Dim; ++d) w *= std::max<Real>(0, 1 - std::abs(x[d] - corner_[a][d]) * grid_.inv_h[d]);
+    return w;
+  }
+
+  /// The particles' values projected on the corners of the point's cell with the linear hat, mass-weighted
+  /// (what P2G does with momentum), then interpolated at the point from the corners that have mass.
+  void from_grid(const Simulation<Dim>& sim, OutputFieldCache<Dim>& cache, std::vector<double>& row) const {
+    constexpr int corners = 1 << Dim;
+    std::array<ExactSum, corners> mass;
+    std::vector<std::array<ExactSum, corners>> value(components_.size());
+    Index count = 0;
+    std::array<Real, corners> w{};
+    std::vector<const double*> column(components_.size());
+    for (int b : bodies_) {
+      const auto& p = sim.bodies()[static_cast<std::size_t>(b)].particles;
+      for (std::size_t k = 0; k < components_.size(); ++k) column[k] = values(cache, components_[k], b);
+      for (Index i = 0; i < p.size(); ++i) {
+        bool touches = false;
+        for (int a = 0; a < corners; ++a) touches = (w[a] = hat(a, p.x[i])) > 0 || touches;
+        if (!touches) continue;
+        ++count;
+        for (int a = 0; a < corners; ++a) {
+          mass[a] += w[a] * p.mass[i];
+          for (std::size_t k = 0; k < components_.size(); ++k)
+            value[k][a] += w[a] * p.mass[i] * column[k][i * components_[k].field->components];
+        }
+      }
+    }
+    std::array<Real, corners> m{}, N{};
+    Real weight = 0;
+    for (int a = 0; a < corners; ++a) {
+      m[a] = mass[a].value();
+      N[a] = m[a] > 0 ? hat(a, VecU<Dim>(x0_)) : 0;
+      weight += N[a];
+    }
+    for (std::size_t k = 0; k < components_.size(); ++k) {
+      Real v = 0;
+      for (int a = 0; a < corners; ++a)
+        if (N[a] > 0) v += N[a] * value[k][a].value() / m[a];
+      row.push_back(weight > 0 ? v / weight : 0);
+    }
+    row.push_back(static_cast<double>(count));
+  }
+
+  /// Volume-weighted mean (current volumes), min, max and sum over the particles in the box, summed exactly.
+  void over_box(const Simulation<Dim>& sim, OutputFieldCache<Dim>& cache, std::vector<double>& row) const {
+    const std::size_t n = components_.size();
+    std::vector<ExactSum> weighted(n), sum(n);
+    std::vector<double> lo(n, std::numeric_limits<double>::infinity()), hi(n, -std::numeric_limits<double>::infinity());
+    ExactSum volume;
+    Index count = 0;
+    std::vector<const double*> column(n);
+    for (int b : bodies_) {
+      const auto& p = sim.bodies()[static_cast<std::size_t>(b)].particles;
+      for (std::size_t k = 0; k < n; ++k) column[k] = values(cache, components_[k], b);
+      const Real* hoop = axisym::hoop_stretch_of(p);  // the ring volumes of an axisymmetric run
+      for (Index i = 0; i < p.size(); ++i) {
+        if (!s_.box.contains<Dim>(p.x[i])) continue;
+        ++count;
+        const Real V = p.volume0[i] * axisym::volume_ratio(p, i, hoop);
+        volume += V;
+        for (std::size_t k = 0; k < n; ++k) {
+          const double v = column[k][i * components_[k].field->components];
+          weighted[k] += V * v;
+          sum[k] += v;
+          lo[k] = std::min(lo[k], v);
+          hi[k] = std::max(hi[k], v);
+        }
+      }
+    }
+    const Real V = volume.value();
+    for (std::size_t k = 0; k < n; ++k)
+      for (int stat : s_.statistics) {
+        if (count == 0) {
+          row.push_back(0);
+          continue;
+        }
+        switch (stat) {
+          case stat_mean:
+            row.push_back(V > 0 ? weighted[k].value() / V : 0);
+            break;
+          case stat_min:
+            row.push_back(lo[k]);
+            break;
+          case stat_max:
+            row.push_back(hi[k]);
+            break;
+          default:
+            row.push_back(sum[k].value());
+        }
+      }
+    row.push_back(static_cast<double>(count));
+  }
+
+  ProbeSpec s_;
+  std::vector<const OutputField*> fields_;
+  std::vector<int> bodies_;
+  GridGeometry<Dim> grid_;
+  Vec<Dim> x0_ = Vec<Dim>::Zero();
+  std::array<VecU<Dim>, (1 << Dim)> corner_{};
+  std::vector<Component> components_;
+};
+
+template <int Dim>
+std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescription&, Simulation<Dim>& sim,
+                                   std::vector<std::string>& warnings) {
+  const auto& s = std::any_cast<const ProbeSpec&>(h.spec);
+  std::vector<const OutputField*> fields;
+  for (const auto& name : s.fields) fields.push_back(find_output_field(name));
+  std::vector<int> bodies = bodies_defining<Dim>(h, fields, s.body, sim.bodies());
+  auto probe = std::make_unique<ProbeHistory<Dim>>(s, std::move(fields), std::move(bodies), sim.grid().geometry);
+  if (probe->particle_count(sim) == 0)
+    warnings.push_back(
+        fmt::format("{}: history '{}': no particle in the probe's region at t = 0 (its values are 0 "
+                    "while count is 0)",
+                    h.path, h.name));
+  return probe;
+}
+
+}  // namespace
+
+HistoryKind probe_kind() {
+  return history_kind("probe",
+                      "output fields at a point (from the particles within a radius, or from the grid) or over the "
+                      "particles of a box (mean, min, max, sum)",
+                      {"fields", "body", "point", "from", "radius", "box", "statistics"}, parse, make<1>, make<2>,
+                      make<3>, fields_of);
+}
+
+}  // namespace mpm::history

@@ -1,0 +1,227 @@
+// `type: reaction` (docs/scene-reference.md#histories): the force (and moment about a point) that a grid face
+// with a velocity condition, a rigid plane or a rigid body exerts on the bodies, as the mean over the interval
+// since the previous row (impulse / time). Faces: from the nodal forces of every step on the constrained nodes
+// (GridBoundary::reactions), summed exactly; planes and rigid bodies: from the module that holds them
+// (reaction_provider.hpp; contact/). The accumulation is a module built only for a reaction history.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <Eigen/Geometry>
+
+#include "history_support.hpp"
+#include "mpm/exact_sum.hpp"
+#include "mpm/reaction_provider.hpp"
+
+namespace mpm::history {
+namespace {
+
+struct ReactionSpec {
+  int face = -1;            ///< a grid face (order of GridDescription::face_names), or -1
+  std::string partner;      ///< a rigid plane's or rigid body's name (`plane:` / `body:`), when face < 0
+  std::string partner_key;  ///< "plane" or "body", for messages
+  std::optional<std::array<double, 3>> moment_about;  ///< m
+};
+
+std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescription& scene) {
+  ReactionSpec s;
+  const auto face = entry.find("face"), plane = entry.find("plane"), body = entry.find("body");
+  if ((face ? 1 : 0) + (plane ? 1 : 0) + (body ? 1 : 0) != 1)
+    reader.fail(entry.self().mark, entry.self().path,
+                "give exactly one of face (a grid face with a velocity condition), plane (a rigid plane) or body (a "
+                "rigid body)");
+  if (face) {
+    std::vector<std::string> faces(
+        GridDescription::face_names.begin(),
+        GridDescription::face_names.begin() + 2 * static_cast<std::ptrdiff_t>(scene.dimension));
+    const std::string name = reader.choice(*face, faces);
+    s.face = static_cast<int>(std::find(faces.begin(), faces.end(), name) - faces.begin());
+    const auto& held = scene.grid.boundary[static_cast<std::size_t>(s.face)].component;
+    if (std::none_of(held.begin(), held.begin() + scene.dimension, [](const auto& c) { return c.has_value(); }))
+      reader.fail(*face, fmt::format("face {} has no velocity condition (grid.boundary.{}: fixed, slip or a "
+                                     "velocity), so nothing holds the bodies there",
+                                     name, name));
+  } else if (plane) {
+    s.partner = reader.name(*plane);
+    s.partner_key = "plane";
+  } else {
+    s.partner = scene.bodies[static_cast<std::size_t>(read_body(reader, *body, scene))].name;
+    s.partner_key = "body";
+  }
+  if (const auto about = entry.find("moment_about")) {
+    if (scene.dimension == 1) reader.fail(*about, "a 1D run has no moment");
+    if (scene.grid.coordinates == Coordinates::axisymmetric)  // the rings' forces: an axial resultant on the axis
+      reader.fail(*about,
+                  "an axisymmetric run has no moment: the forces of a full revolution have an axial "
+                  "resultant on the axis, with no moment about any point");
+    s.moment_about = reader.vector(*about, scene.dimension, io::Range::any(), "m");
+  }
+  return s;
+}
+
+/// The impulse of the reaction since the last row, accumulated every step.
+template <int Dim>
+class ReactionRecorder final : public Module<Dim> {
+ public:
+  ReactionRecorder(int face, const ReactionProvider<Dim>* provider, int partner, const Vec3& about)
+      : face_(face), provider_(provider), partner_(partner), about_(about) {}
+  std::string_view name() const override { return "reaction history"; }
+  unsigned phases() const override { return face_ >= 0 ? phase_grid_velocity : phase_end_of_step; }
+
+  void on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) override {
+    if (stage != GridStage::updated) return;  // the nodal forces of the step are final here in every scheme
+    std::array<ExactSum, Dim> force;
+    std::array<ExactSum, 3> moment;
+    const auto& g = ctx.grid.geometry;
+    ctx.boundary.reactions(face_, ctx.grid.node, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time, ctx.dt,
+                           [&](Index n, int c, Real R) {
+                             force[c] += R;
+                             Vec3 r = Vec3::Zero(), f = Vec3::Zero();
+                             r.template head<Dim>() = g.node_position(g.node_indices(n));
+                             r -= about_;
+                             f[c] = R;
+                             const Vec3 m = r.cross(f);
+                             for (int k = 0; k < 3; ++k) moment[k] += m[k];
+                           });
+    Reaction<Dim> step;
+    for (int d = 0; d < Dim; ++d) step.force[d] = force[d].value();
+    for (int k = 0; k < 3; ++k) step.first_moment[k] = moment[k].value();
+    accumulate(step, ctx.dt);
+  }
+
+  void end_of_step(StepContext<Dim>& ctx) override {
+    Reaction<Dim> step = provider_->last_reaction(partner_);
+    Vec3 f = Vec3::Zero();
+    f.template head<Dim>() = step.force;
+    step.first_moment -= about_.cross(f);  // about the point instead of the origin
+    accumulate(step, ctx.dt);
+  }
+
+  /// The impulse accumulated since the last row, for a checkpoint (History::save_state).
+  void save_state(StateArchive& archive, const std::string& prefix) const {
+    archive.put_values<Real>(prefix + "impulse_force", std::span<const Real>(impulse_.force.data(), Dim));
+    archive.put_values<Real>(prefix + "impulse_moment", std::span<const Real>(impulse_.first_moment.data(), 3));
+    archive.put_number(prefix + "span", span_);
+  }
+  void restore_state(const StateArchive& archive, const std::string& prefix) {
+    const auto force = archive.values<Real>(prefix + "impulse_force");
+    const auto moment = archive.values<Real>(prefix + "impulse_moment");
+    if (force.size() != Dim || moment.size() != 3)
+      throw ArchiveError("'" + prefix + "impulse_force': not a reaction history's impulse of this dimension");
+    for (int d = 0; d < Dim; ++d) impulse_.force[d] = force[d];
+    for (int k = 0; k < 3; ++k) impulse_.first_moment[k] = moment[k];
+    span_ = archive.number(prefix + "span");
+  }
+
+  /// The mean force and moment since the last call (zero before the first step), and a new interval.
+  Reaction<Dim> take_mean() {
+    Reaction<Dim> mean;
+    if (span_ > 0) {
+      mean.force = impulse_.force / span_;
+      mean.first_moment = impulse_.first_moment / span_;
+    }
+    impulse_ = {};
+    span_ = 0;
+    return mean;
+  }
+
+ private:
+  void accumulate(const Reaction<Dim>& step, Real dt) {
+    impulse_.force += dt * step.force;
+    impulse_.first_moment += dt * step.first_moment;
+    span_ += dt;
+  }
+
+  int face_;
+  const ReactionProvider<Dim>* provider_;
+  int partner_;
+  Vec3 about_;
+  Reaction<Dim> impulse_;  ///< N s (the moment about the history's point)
+  Real span_ = 0;          ///< s
+};
+
+template <int Dim>
+class ReactionHistory final : public History<Dim> {
+ public:
+  ReactionHistory(std::shared_ptr<ReactionRecorder<Dim>> recorder, bool moment, Coordinates coordinates)
+      : recorder_(std::move(recorder)), moment_(moment), coordinates_(coordinates) {}
+
+  std::vector<std::string> columns() const override {
+    std::vector<std::string> names;
+    names.reserve(Dim + 3);
+    const char* axis[] = {"x", "y", "z"};
+    for (int d = 0; d < Dim; ++d)
+      names.push_back(column_name(std::string("force_") + axis[d], extensive_unit("N", Dim, coordinates_)));
+    if (moment_) {
+      for (int k = Dim == 2 ? 2 : 0; k < 3; ++k)
+        names.push_back(column_name(std::string("moment_") + axis[k], extensive_unit("N m", Dim, coordinates_)));
+    }
+    return names;
+  }
+
+  void sample(const Simulation<Dim>&, OutputFieldCache<Dim>&, std::vector<double>& row) override {
+    const Reaction<Dim> mean = recorder_->take_mean();
+    for (int d = 0; d < Dim; ++d) row.push_back(mean.force[d]);
+    if (moment_)
+      for (int k = Dim == 2 ? 2 : 0; k < 3; ++k) row.push_back(mean.first_moment[k]);
+  }
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    recorder_->save_state(archive, prefix);
+  }
+  void restore_state(const StateArchive& archive, const std::string& prefix) override {
+    recorder_->restore_state(archive, prefix);
+  }
+
+ private:
+  std::shared_ptr<ReactionRecorder<Dim>> recorder_;
+  bool moment_;
+  Coordinates coordinates_;
+};
+
+template <int Dim>
+std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescription& scene, Simulation<Dim>& sim,
+                                   std::vector<std::string>&) {
+  const auto& s = std::any_cast<const ReactionSpec&>(h.spec);
+  Vec3 about = Vec3::Zero();
+  if (s.moment_about)
+    for (int d = 0; d < Dim; ++d) about[d] = (*s.moment_about)[d];
+  std::shared_ptr<ReactionRecorder<Dim>> recorder;
+  if (s.face >= 0) {
+    recorder = std::make_shared<ReactionRecorder<Dim>>(s.face, nullptr, 0, about);
+  } else {
+    std::vector<std::string> known;
+    for (const auto& m : sim.modules()) {
+      const auto* provider = dynamic_cast<const ReactionProvider<Dim>*>(m.get());
+      if (!provider) continue;
+      const auto names = provider->reaction_partners();
+      const auto it = std::find(names.begin(), names.end(), s.partner);
+      if (it != names.end()) {
+        recorder = std::make_shared<ReactionRecorder<Dim>>(-1, provider, static_cast<int>(it - names.begin()), about);
+        break;
+      }
+      known.insert(known.end(), names.begin(), names.end());
+    }
+    if (!recorder)
+      fail(
+          h, s.partner_key,
+          s.partner_key == "plane"
+              ? fmt::format("no rigid plane named '{}'{}", s.partner,
+                            known.empty() ? " (the scene has no contact: section with planes)"
+                                          : fmt::format("; rigid planes and bodies: {}", fmt::join(known, ", ")))
+              : fmt::format("body '{}' is not a rigid body of the contact: section{}", s.partner,
+                            known.empty() ? "" : fmt::format("; rigid planes and bodies: {}", fmt::join(known, ", "))));
+  }
+  sim.add_module(recorder);
+  return std::make_unique<ReactionHistory<Dim>>(std::move(recorder), s.moment_about.has_value(),
+                                                scene.grid.coordinates);
+}
+
+}  // namespace
+
+HistoryKind reaction_kind() {
+  return history_kind("reaction",
+                      "the force (and moment about a point) a grid face with a velocity condition, a rigid plane or a "
+                      "rigid body exerts on the bodies, mean over the interval",
+                      {"face", "plane", "body", "moment_about"}, parse, make<1>, make<2>, make<3>);
+}
+
+}  // namespace mpm::history

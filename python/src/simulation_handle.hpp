@@ -1,0 +1,105 @@
+#pragma once
+/// \file simulation_handle.hpp
+/// A built simulation of any dimension behind one interface, for the Python bindings: the same
+/// build_simulation() and Simulation as the `mpm` program, the scene's output section written by the same
+/// OutputWriter at the same moments as `mpm run`, stepping inside a task arena of the requested number of
+/// threads. Nothing here knows Python: the bindings release the interpreter lock around the stepping calls
+/// and wrap the callbacks.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mpm/energy.hpp"
+#include "mpm/field_storage.hpp"
+#include "mpm/scene.hpp"
+
+namespace mpm::python {
+
+/// A field's values in place, for a NumPy view.
+struct FieldArray {
+  FieldStorage storage;
+  std::vector<Index> shape;    ///< of the whole array (particles or nodes first)
+  std::vector<Index> strides;  ///< bytes
+  bool writable = false;
+};
+
+/// What run() does besides stepping.
+struct RunControl {
+  std::optional<Index> steps;  ///< stop after this many more steps (else at the end time)
+  Index every = 1;             ///< call `callback` after the steps whose number is a multiple of this
+  /// Called after every `every`-th step; returns true to stop the run after that step.
+  std::function<bool()> callback;
+  /// Called about every `poll_seconds` of wall time and once at the end (progress display, Ctrl-C).
+  std::function<void()> poll;
+  double poll_seconds = 0.25;
+};
+
+/// The grid's geometry, for the Python grid object.
+struct GridInfo {
+  std::vector<double> origin, cell_size;  ///< m, per axis
+  std::vector<Index> nodes;               ///< per axis
+};
+
+class SimulationHandle {
+ public:
+  virtual ~SimulationHandle() = default;
+  virtual int dimension() const = 0;
+
+  // Stepping. Each call first applies changes made through writable views (particles_changed()) and writes
+  // the frames of the scene's output that are due, as `mpm run` does before its first step.
+  /// One step toward the end time (landing on it); past the end time, a step of the stable size.
+  virtual void step() = 0;
+  /// Steps until time t, the last step landing on t; `poll` (if set) as in RunControl, every `poll_seconds`.
+  virtual void advance_to(double t, const std::function<void()>& poll, double poll_seconds) = 0;
+  /// Steps to the end time (or RunControl::steps more steps, or until the callback stops it), writing the
+  /// frames that are due and a last frame where it stops, like `mpm run`. Returns whether the callback stopped it.
+  virtual bool run(const RunControl& control) = 0;
+
+  virtual double time() const = 0;
+  virtual Index step_count() const = 0;
+  /// The size of the next step() (the stable step times the CFL factor, or the fixed dt; shortened to land on
+  /// the end time), for the state as changed through the views.
+  virtual double dt() = 0;
+  virtual double end_time() const = 0;
+  /// Whether the end time has been reached (Simulation::finished()).
+  virtual bool finished() const = 0;
+  virtual double stable_time_step() = 0;
+  virtual Index particle_count() const = 0;
+  virtual EnergyBalance energy() const = 0;
+  /// Writes a frame of the current state to `directory` (the scene's fields and prefix; a .pvd series and
+  /// energy.csv per directory, continued by later calls).
+  virtual void write_frame(const std::string& directory) = 0;
+  /// The output directory of the scene's output section, or empty when the simulation writes none.
+  virtual std::string output_directory() const = 0;
+
+  virtual std::vector<std::string> body_names() const = 0;
+  virtual Index body_size(int body) const = 0;
+  /// The fields of a body that field() can view: the core's, then the on-demand ones that are arrays of
+  /// numbers.
+  virtual std::vector<std::string> particle_fields(int body) = 0;
+  /// Throws std::out_of_range for a name that particle_fields() does not list (saying why for a record field).
+  virtual FieldArray particle_field(int body, const std::string& name) = 0;
+  /// ParticleSet::generation() of the body: a view made when it had another value is stale.
+  virtual std::uint64_t generation(int body) const = 0;
+  /// The values the output writes for the named output field (output_fields.hpp), `components` per particle.
+  virtual std::vector<double> output_values(int body, const std::string& name, int& components) const = 0;
+  /// Records that particle data was changed through a view: the next step first calls particles_changed().
+  virtual void mark_changed() = 0;
+
+  virtual GridInfo grid_info() const = 0;
+  virtual std::vector<std::string> grid_fields() const = 0;
+  /// A read-only view of a nodal field, shaped (nodes_x, nodes_y, nodes_z[, components]).
+  virtual FieldArray grid_field(const std::string& name) = 0;
+};
+
+/// Builds the simulation of `scene` with build_simulation() inside an arena of `threads` threads (0: all
+/// cores). `output_directory`: the scene's output section is written there (empty: no output written).
+/// Throws SceneError like the program.
+std::unique_ptr<SimulationHandle> make_simulation(const SceneDescription& scene, int threads,
+                                                  const std::string& output_directory);
+
+}  // namespace mpm::python

@@ -1,0 +1,42 @@
+"""Shared fixtures of the Python package's tests (run by ctest, label `python`, with PYTHONPATH at the built
+package, MPM_EXECUTABLE at the `mpm` program and MPM_SOURCE_DIR at the repository)."""
+
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+SOURCE_DIR = pathlib.Path(os.environ.get("MPM_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+MPM_EXECUTABLE = os.environ.get("MPM_EXECUTABLE", str(SOURCE_DIR / "build" / "apps" / "mpm"))
+
+
+def run_mpm(*args, cwd=None):
+    """The `mpm` program's (exit status, stdout, stderr)."""
+    r = subprocess.run([MPM_EXECUTABLE, *map(str, args)], capture_output=True, text=True, cwd=cwd)
+    return r.returncode, r.stdout, r.stderr
+
+
+@pytest.fixture
+def source_dir():
+    return SOURCE_DIR
+
+
+#: A small 2D scene (two elastic disks, as examples/02_two_disks, on a coarser grid), as a dict.
+def two_disks(sort_interval=20, end_time=0.5, **solver):
+    return {
+        "dimension": 2,
+        "grid": {"origin": [0, 0], "extent": [1, 1], "cell_size": 0.1},
+        "materials": {"elastic": {"model": "linear_elastic", "density": 1000, "youngs_modulus": 1000,
+                                  "poisson_ratio": 0.3}},
+        "bodies": [
+            {"name": "lower_left", "material": "elastic", "shape": {"type": "disk", "center": [0.3, 0.3],
+                                                                   "radius": 0.15},
+             "particles_per_cell": 2, "velocity": [0.1, 0.1]},
+            {"name": "upper_right", "material": "elastic", "shape": {"type": "disk", "center": [0.7, 0.7],
+                                                                    "radius": 0.15},
+             "particles_per_cell": 2, "velocity": [-0.1, -0.1]},
+        ],
+        "solver": {"scheme": "musl", "shape_function": "linear", "dt": 0.002, "end_time": end_time,
+                   "sort_interval": sort_interval, **solver},
+    }

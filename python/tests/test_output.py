@@ -1,0 +1,50 @@
+"""Output through the program's writer: a Python run of examples/02_two_disks equals `mpm run` to the bit."""
+
+import csv
+import filecmp
+
+import pytest
+
+import mpm
+from conftest import SOURCE_DIR, run_mpm, two_disks
+
+
+def test_a_python_run_of_example_02_equals_mpm_run_to_the_bit(tmp_path):
+    scene_file = SOURCE_DIR / "examples/02_two_disks/scene.yaml"
+    status, _, err = run_mpm("run", scene_file, "-o", tmp_path / "program")
+    assert status == 0, err
+    sim = mpm.Simulation(mpm.Scene.from_yaml(str(scene_file)), output=tmp_path / "python")
+    sim.run()
+    assert sim.finished and sim.step_count == 3500
+    program = sorted(p.name for p in (tmp_path / "program").iterdir())
+    python = sorted(p.name for p in (tmp_path / "python").iterdir())
+    assert program == python
+    assert "energy.csv" in program and len([n for n in program if n.endswith(".vtu")]) == 71  # every 0.05 s
+    match, mismatch, errors = filecmp.cmpfiles(tmp_path / "program", tmp_path / "python", program, shallow=False)
+    assert mismatch == [] and errors == [] and len(match) == len(program)
+
+
+def test_write_frame_and_energy_agree(tmp_path):
+    d = two_disks()
+    d["output"] = {"fields": ["velocity", "von_mises_stress"]}
+    sim = mpm.Simulation(mpm.Scene.from_dict(d), output=False)
+    assert sim.output_directory is None
+    with pytest.raises(ValueError, match="give a directory"):
+        sim.write_frame()
+    sim.run(steps=10)
+    sim.write_frame(tmp_path / "frames")
+    sim.run(steps=5)
+    sim.write_frame(tmp_path / "frames")
+    assert sorted(p.name for p in (tmp_path / "frames").iterdir()) == [
+        "energy.csv", "particles.pvd", "particles_000000.vtu", "particles_000001.vtu"]
+    rows = list(csv.DictReader(open(tmp_path / "frames/energy.csv")))
+    e = mpm.energy(sim)
+    assert [int(float(r["step"])) for r in rows] == [10, 15]
+    assert float(rows[-1]["kinetic_energy"]) == pytest.approx(e.kinetic, rel=1e-12)
+    assert float(rows[-1]["total_energy"]) == pytest.approx(e.total, rel=1e-12)
+    # mass and momentum: two disks of equal mass and opposite velocities, so the total momentum is zero up to
+    # the rounding of the sums (each disk carries m v = 8 kg m/s per axis)
+    masses = [b.field("mass").sum() for b in sim.bodies.values()]
+    assert e.mass == pytest.approx(sum(masses), rel=1e-14) and masses[0] == masses[1]
+    assert abs(e.momentum[0]) < 1e-13 and abs(e.momentum[1]) < 1e-13 and e.momentum[2] == 0
+    assert e.total == pytest.approx(e.kinetic + e.strain + e.gravity + e.plastic_work, rel=1e-15)

@@ -1,0 +1,122 @@
+#pragma once
+// What the restart tests share: a small scene, the steps of a run and of its checkpoints, and the comparison of
+// two output directories byte for byte.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "mpm/checkpoint/checkpoint_file.hpp"
+#include "run_mpm.hpp"
+
+namespace restart_support {
+
+namespace fs = std::filesystem;
+using cli::Result;
+using cli::scratch;
+using cli::slurp;
+
+struct Case {
+  std::string name;
+  std::string scene;  ///< ends with output.checkpoint at T/2
+};
+/// How GoogleTest prints a case: its name.
+inline void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+/// Steps of a finished run ("done: N steps").
+inline long long steps_done(const Result& r) {
+  std::smatch m;
+  if (!std::regex_search(r.err, m, std::regex(R"(done: (\d+) steps)"))) return -1;
+  return std::stoll(m[1].str());
+}
+
+/// Steps of the checkpoints in `dir`, ascending.
+inline std::vector<long long> checkpoint_steps(const fs::path& dir) {
+  std::vector<long long> steps;
+  for (const auto& f : mpm::checkpoint::checkpoint_files(dir))
+    steps.push_back(std::stoll(f.filename().string().substr(11, 9)));
+  std::sort(steps.begin(), steps.end());
+  return steps;
+}
+
+inline bool killed(const Result& r) { return r.status == -1 || r.status == 128 + 9; }
+
+/// The files of an output directory (relative paths), without its checkpoints.
+inline std::set<std::string> output_files(const fs::path& dir) {
+  std::set<std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string rel = fs::relative(e.path(), dir).string();
+    if (e.is_regular_file() && rel.rfind("checkpoints", 0) != 0) files.insert(rel);
+  }
+  return files;
+}
+
+/// Every output file of `run` is the reference's, byte for byte, and the final checkpoints hold the same
+/// state (the entries that name paths or the run's own files aside).
+inline void expect_same_output(const fs::path& reference, const fs::path& run, long long final_step) {
+  const auto want = output_files(reference), got = output_files(run);
+  EXPECT_EQ(got, want);
+  int compared = 0;
+  for (const auto& f : want) {
+    if (!got.count(f)) continue;
+    EXPECT_TRUE(slurp(reference / f) == slurp(run / f)) << f << " differs";
+    ++compared;
+  }
+  EXPECT_GE(compared, 3);  // energy.csv, the .pvd and frames at least
+  const auto name = mpm::checkpoint::checkpoint_name(final_step);
+  const auto a = mpm::checkpoint::read_checkpoint(reference / "checkpoints" / name);
+  const auto b = mpm::checkpoint::read_checkpoint(run / "checkpoints" / name);
+  int fields = 0;
+  for (const auto& [key, array] : a.entries()) {
+    if (key.rfind("run/", 0) == 0 || key.rfind("output/", 0) == 0 || key.ends_with("/path")) continue;
+    ASSERT_TRUE(b.contains(key)) << key;
+    EXPECT_TRUE(b.at(key).bytes == array.bytes) << key << " differs in the final checkpoint";
+    if (key.rfind("bodies/", 0) == 0) ++fields;
+  }
+  EXPECT_GE(fields, 7);  // the core fields of one body at least
+}
+
+inline std::string checkpoint_at(double t) { return "  checkpoint: {interval: " + std::to_string(t) + "}\n"; }
+
+inline Case two_disks() {
+  return {"two_disks_musl",
+          "dimension: 2\n"
+          "grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}\n"
+          "materials: {elastic: {model: linear_elastic, density: 1000, youngs_modulus: 1000, poisson_ratio: 0.3}}\n"
+          "bodies:\n"
+          "  - {name: lower_left, material: elastic, shape: {type: disk, center: [0.3, 0.3], radius: 0.15}, "
+          "velocity: [0.5, 0.5]}\n"
+          "  - {name: upper_right, material: elastic, shape: {type: disk, center: [0.7, 0.7], radius: 0.15}, "
+          "velocity: [-0.5, -0.5]}\n"
+          "solver: {scheme: musl, shape_function: linear, dt: 0.002, end_time: 0.4}\n"
+          "output:\n"
+          "  interval: 0.05\n"
+          "  fields: [velocity, stress, body]\n" +
+              checkpoint_at(0.2)};
+}
+
+/// `text` with its first `from` replaced by `to` (a test failure when there is none).
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// `scene` (the two disks') with its checkpoint line replaced by `checkpoint` (empty: no checkpoints).
+inline std::string with_checkpoint(std::string scene, const std::string& checkpoint) {
+  return scene.replace(scene.find("  checkpoint:"), std::string::npos, checkpoint);
+}
+
+/// `scene` (the two disks') with its two body lines replaced by `bodies`.
+inline std::string with_bodies(std::string scene, const std::string& bodies) {
+  const auto first = scene.find("  - {name: lower_left");
+  return scene.replace(first, scene.find("solver:") - first, bodies);
+}
+
+}  // namespace restart_support
