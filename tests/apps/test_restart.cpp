@@ -313,9 +313,7 @@ TEST(Restart, CheckpointsDoNotChangeTheRun) {
   ASSERT_EQ(cli::mpm("run " + (dir / "with.yaml").string() + " -o " + (dir / "with").string(), dir).status, 0);
   ASSERT_EQ(cli::mpm("run " + (dir / "without.yaml").string() + " -o " + (dir / "without").string(), dir).status, 0);
   EXPECT_FALSE(fs::exists(dir / "without" / "checkpoints"));
-  const auto files = output_files(dir / "with");
-  EXPECT_EQ(output_files(dir / "without"), files);
-  for (const auto& f : files) EXPECT_TRUE(slurp(dir / "with" / f) == slurp(dir / "without" / f)) << f;
+  expect_same_files(dir / "with", dir / "without");
   if (!HasFailure()) fs::remove_all(dir);
 }
 
@@ -373,9 +371,7 @@ TEST(Restart, TheGuardStopsTheRestartedRunWhereItStoppedTheOriginal) {
   EXPECT_EQ(resumed.status, 3) << resumed.err;
   const auto guard = [](const std::string& err) { return err.substr(err.find("stability guard: step")); };
   EXPECT_EQ(guard(resumed.err), guard(ref.err));
-  const auto files = output_files(dir / "reference");
-  EXPECT_EQ(output_files(dir / "run"), files);
-  for (const auto& f : files) EXPECT_TRUE(slurp(dir / "reference" / f) == slurp(dir / "run" / f)) << f;
+  expect_same_files(dir / "reference", dir / "run");
   if (!HasFailure()) fs::remove_all(dir);
 }
 
