@@ -22,8 +22,8 @@ class CsvLog {
   /// `columns` is empty.
   CsvLog(std::filesystem::path path, std::vector<std::string> columns);
   /// Continues the table of a checkpointed run (continued_file.hpp): `path` becomes the first from.bytes
-  /// bytes of from.path, whose rows are checked (numbers, one per column) and then appended to. Throws std::runtime_error naming the file when they
-  /// cannot be, or when its header is not `columns`.
+  /// bytes of from.path, whose rows are checked (numbers, one per column) and then appended to. Throws
+  /// std::runtime_error naming the file when they cannot be, or when its header is not `columns`.
   CsvLog(std::filesystem::path path, std::vector<std::string> columns, const FileMark& from);
 
   /// The table's length on disk now, for a checkpoint.
