@@ -238,6 +238,7 @@ Case histories() {
       "  fields: [velocity, stress, body]\n"
       "  histories:\n"
       "    - {name: floor, type: reaction, face: y_min, moment_about: [0, 0], interval: 0.007}\n"
+      "    - {name: wall, type: reaction, face: x_min, interval: 0.013}\n"
       "    - {name: block_energy, type: energy, body: block, interval: 0.011}\n"
       "    - {name: front, type: extent, body: block, axis: x}\n"
       "    - {name: centre, type: probe, point: [0.4, 0.15], radius: 0.08, fields: [velocity, stress]}\n" +
