@@ -4,10 +4,13 @@
 
 #include <chrono>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <stdexcept>
 
+#include "mpm/app/run_description.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/history/history_writer.hpp"
 #include "mpm/output_fields.hpp"
 #include "mpm/output_writer.hpp"
 
@@ -84,8 +87,18 @@ class SimulationFor final : public SimulationHandle {
     SceneDescription scene = scene_in;  // modules writing their own files (contact forces) follow the directory
     if (!output_directory.empty()) scene.output.directory = output_directory;
     output_description_ = scene.output;
-    arena_.execute([&] { sim_ = app::build_simulation<Dim>(scene); });
-    if (!output_directory.empty()) output_ = make_writer(output_directory);
+    field_data_ = app::run_field_data(scene, {});  // self-describing frames, as `mpm run` writes them
+    view_script_ = app::view_script_for(scene);
+    std::vector<BuiltHistory<Dim>> histories;
+    arena_.execute([&] {
+      sim_ = app::build_simulation<Dim>(scene);
+      histories = build_histories<Dim>(scene, *sim_, history_warnings_);  // throws SceneError as the program
+    });
+    for (const auto& w : history_warnings_) std::cerr << "warning: " << w << '\n';  // as `mpm run` logs them
+    if (!output_directory.empty()) {
+      output_ = make_writer(output_directory);
+      histories_ = std::make_unique<HistoryWriter<Dim>>(output_->directory(), std::move(histories));
+    }
   }
 
   int dimension() const override { return Dim; }
@@ -268,7 +281,10 @@ class SimulationFor final : public SimulationHandle {
  private:
   std::unique_ptr<OutputWriter<Dim>> make_writer(const std::string& directory) const {
     const auto& o = output_description_;
-    return std::make_unique<OutputWriter<Dim>>(directory, o.prefix, o.fields, o.grid, o.interval);
+    auto writer = std::make_unique<OutputWriter<Dim>>(directory, o.prefix, o.fields, o.grid, o.interval);
+    writer->set_field_data(field_data_);
+    io::write_view_script(writer->directory() / "view.py", view_script_);
+    return writer;
   }
   void apply_changes() {
     if (!changed_) return;
@@ -277,9 +293,11 @@ class SimulationFor final : public SimulationHandle {
   }
   void after_step() {
     if (output_) output_->write_if_due(*sim_);
+    if (histories_) histories_->write_if_due(*sim_);
   }
   void write_final_frame() {
     if (output_) output_->write(*sim_);
+    if (histories_) histories_->write(*sim_);
   }
   /// Runs `f` in the arena after applying the views' changes and writing the frames that are due; when the
   /// stability guard trips, writes the last good state (the simulation was rolled back) before rethrowing.
@@ -302,6 +320,10 @@ class SimulationFor final : public SimulationHandle {
   std::unique_ptr<Simulation<Dim>> sim_;
   std::unique_ptr<OutputWriter<Dim>> output_;                         ///< the scene's output section
   std::map<std::string, std::unique_ptr<OutputWriter<Dim>>> frames_;  ///< write_frame(), by directory
+  std::unique_ptr<HistoryWriter<Dim>> histories_;                     ///< output.histories, beside output_
+  std::vector<std::string> history_warnings_;
+  io::FieldData field_data_;
+  io::ViewScript view_script_;
   bool changed_ = false;
 };
 

@@ -1,6 +1,7 @@
 """Shared fixtures of the Python package's tests (run by ctest, label `python`, with PYTHONPATH at the built
 package, MPM_EXECUTABLE at the `mpm` program and MPM_SOURCE_DIR at the repository)."""
 
+import filecmp
 import os
 import pathlib
 import subprocess
@@ -15,6 +16,25 @@ def run_mpm(*args, cwd=None):
     """The `mpm` program's (exit status, stdout, stderr)."""
     r = subprocess.run([MPM_EXECUTABLE, *map(str, args)], capture_output=True, text=True, cwd=cwd)
     return r.returncode, r.stdout, r.stderr
+
+
+def files(directory):
+    """The files under `directory`, relative, sorted."""
+    return sorted(p.relative_to(directory).as_posix() for p in pathlib.Path(directory).rglob("*") if p.is_file())
+
+
+def assert_same_output(a, b):
+    """Two output directories hold the same files, each byte for byte but the frames (.vtu, .vti), whose field
+    data name the run that wrote them (threads, command line): their coordinates and field values must be
+    exactly equal (`mpm diff` with zero tolerances). Returns the file names."""
+    names = files(a)
+    assert files(b) == names
+    same = [n for n in names if not n.endswith((".vtu", ".vti"))]
+    match, mismatch, errors = filecmp.cmpfiles(a, b, same, shallow=False)
+    assert mismatch == [] and errors == [], mismatch + errors
+    status, out, err = run_mpm("diff", a, b, "--tolerance", 0, "--absolute", 0)
+    assert status == 0, out + err
+    return names
 
 
 @pytest.fixture

@@ -27,7 +27,7 @@ TEST(ParticleFileBody, SeededFromItsOwnFirstFrameReproducesTheRun) {
   const auto files = output_files(dir / "original");
   EXPECT_EQ(output_files(dir / "seeded"), files);
   EXPECT_GE(files.size(), 10u);
-  for (const auto& f : files) EXPECT_TRUE(slurp(dir / "original" / f) == slurp(dir / "seeded" / f)) << f;
+  expect_same_files(dir / "original", dir / "seeded");
   if (!HasFailure()) fs::remove_all(dir);
 }
 

@@ -96,13 +96,14 @@ class ReactionRecorder final : public Module<Dim> {
     accumulate(step, ctx.dt);
   }
 
-  /// The impulse accumulated since the last row, for a checkpoint (History::save_state).
-  void save_state(StateArchive& archive, const std::string& prefix) const {
+  /// The impulse accumulated since the last row, for a checkpoint (History::save_state, under the history's
+  /// own name: the recorders of several reaction histories share one module name, so not Module::save_state).
+  void save_impulse(StateArchive& archive, const std::string& prefix) const {
     archive.put_values<Real>(prefix + "impulse_force", std::span<const Real>(impulse_.force.data(), Dim));
     archive.put_values<Real>(prefix + "impulse_moment", std::span<const Real>(impulse_.first_moment.data(), 3));
     archive.put_number(prefix + "span", span_);
   }
-  void restore_state(const StateArchive& archive, const std::string& prefix) {
+  void restore_impulse(const StateArchive& archive, const std::string& prefix) {
     const auto force = archive.values<Real>(prefix + "impulse_force");
     const auto moment = archive.values<Real>(prefix + "impulse_moment");
     if (force.size() != Dim || moment.size() != 3)
@@ -165,10 +166,10 @@ class ReactionHistory final : public History<Dim> {
       for (int k = Dim == 2 ? 2 : 0; k < 3; ++k) row.push_back(mean.first_moment[k]);
   }
   void save_state(StateArchive& archive, const std::string& prefix) const override {
-    recorder_->save_state(archive, prefix);
+    recorder_->save_impulse(archive, prefix);
   }
   void restore_state(const StateArchive& archive, const std::string& prefix) override {
-    recorder_->restore_state(archive, prefix);
+    recorder_->restore_impulse(archive, prefix);
   }
 
  private:
