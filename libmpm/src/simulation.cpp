@@ -227,33 +227,35 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
 }
 
 template <int Dim>
-void Simulation<Dim>::add_body_energy(const Body<Dim>& b, EnergyBalance& e) const {
+void Simulation<Dim>::add_body_energy(const Body<Dim>& b, EnergySums& e) const {
+  // One exactly summed term per particle and quantity: the audit is the same bits for any storage order
+  // (sorting, shuffled input) and any split of the particles (threads, ranks): docs/distributed.md §1.
   const Vec<Dim>& g = settings_.transfer.gravity;
   const auto& p = b.particles;
   for (Index i = 0; i < p.size(); ++i) {
     const Real m = p.mass[i];
     e.kinetic += 0.5 * m * p.v[i].squaredNorm();
-    e.gravity -= m * g.dot(Vec<Dim>(p.x[i]));
-    e.momentum.template head<Dim>() += m * p.v[i];
+    e.gravity += -(m * g.dot(Vec<Dim>(p.x[i])));
+    for (int d = 0; d < Dim; ++d) e.momentum[d] += m * p.v[i][d];
     e.mass += m;
   }
-  e.strain += b.material->strain_energy(p);
-  e.plastic_work += b.material->dissipated_energy(p);
+  b.material->add_strain_energy(p, e.strain);
+  b.material->add_dissipated_energy(p, e.plastic_work);
   for (const auto& m : hooks_.all()) m->add_energy(b, e);
 }
 
 template <int Dim>
 EnergyBalance Simulation<Dim>::energy() const {
-  EnergyBalance e;
+  EnergySums e;
   for (const auto& b : bodies_) add_body_energy(b, e);
-  return e;
+  return e.value();
 }
 
 template <int Dim>
 EnergyBalance Simulation<Dim>::body_energy(const Body<Dim>& body) const {
-  EnergyBalance e;
+  EnergySums e;
   add_body_energy(body, e);
-  return e;
+  return e.value();
 }
 
 template class Simulation<1>;

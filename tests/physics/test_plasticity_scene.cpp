@@ -2,16 +2,20 @@
 // the bodies that need them, the output fields, and the point law inside the full step (1D uniaxial strain,
 // 2D energy audit).
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "../libmpm/scene_fixture.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/material_registry.hpp"
 #include "mpm/output_writer.hpp"
+#include "mpm/plasticity/elastoplastic.hpp"
 
 namespace mpm {
 namespace {
@@ -187,6 +191,53 @@ TEST(PlasticityScene, DiskImpactExampleFirstTenMicroseconds) {
   const EnergyBalance e = sim->energy();
   EXPECT_GT(e.plastic_work, 0.25 * e0);
   EXPECT_NEAR(e.total(), e0, 0.005 * e0);
+}
+
+// Thread-count bit identity with a Johnson-Cook body of a million particles (issue 18, docs/distributed.md §1):
+// TBB cuts the particles into blocks of different sizes for one and two threads (and from run to run), and
+// every particle goes through the vector law in a padded pack whatever its block, pack or lane, with the
+// time-step bound taken per particle. 3D, MUSL with linear hats, copper with the Mie-Grueneisen EOS, damage
+// and adiabatic heating, a shearing and compressing velocity field that makes every particle flow from the
+// first step; three steps, so that the time step of the later ones comes from the plastic law's wave speeds.
+std::vector<double> million_particle_state(int threads) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  std::string yaml = two_bodies;
+  yaml.replace(yaml.find("SPECIFIC_HEAT"), 13, "specific_heat: 385");
+  yaml = "dimension: 3\ngrid: {extent: [0.056, 0.056, 0.056], cell_size: 1.0e-3, boundary: {z_min: slip}}\n" +
+         yaml.substr(yaml.find("materials:"), yaml.find("bodies:") - yaml.find("materials:")) +
+         "bodies:\n  - {name: block, material: copper, shape: {type: box, min: [0.003, 0.003, 0], max: [0.053, 0.053, "
+         "0.05]},\n     particles_per_cell: 2, velocity: [\"300*sin(150*z)\", \"300*sin(150*x)\", \"-100\"]}\n"
+         "solver: {scheme: musl, cfl: 0.4, end_time: 1}\n";
+  auto sim = test::simulation_from_yaml<3>(yaml);
+  for (int s = 0; s < 3; ++s) sim->advance(sim->next_time_step());
+  const auto& p = sim->bodies().front().particles;
+  const auto& state = p.field<plasticity::PlasticState<3>>("plasticity");
+  const auto& T = p.field<Real>("temperature");
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(p.size()) * 13 + 1);
+  out.push_back(sim->time());
+  for (Index i = 0; i < p.size(); ++i) {
+    for (double c : p.stress[i].c) out.push_back(c);
+    for (int d = 0; d < 3; ++d) out.push_back(p.v[i][d]);
+    out.push_back(state[i].plastic_strain);
+    out.push_back(state[i].damage);
+    out.push_back(T[i]);
+    out.push_back(p.id[i]);
+  }
+  return out;
+}
+
+TEST(PlasticityScene, MillionParticleJohnsonCookBitIdenticalAcrossThreadCounts) {
+  const std::vector<double> one = million_particle_state(1);
+  const std::vector<double> two = million_particle_state(2);
+  constexpr std::size_t per_particle = 13;  // stress 6, velocity 3, plastic strain, damage, temperature, id
+  ASSERT_GE((one.size() - 1) / per_particle, 1000000u);
+  ASSERT_EQ(one.size(), two.size());
+  std::size_t differ = 0, flowed = 0;
+  for (std::size_t i = 0; i < one.size(); ++i) differ += std::memcmp(&one[i], &two[i], sizeof(double)) != 0;
+  for (std::size_t i = 1 + 9; i < one.size(); i += per_particle) flowed += one[i] > 0;
+  EXPECT_EQ(differ, 0u);
+  EXPECT_GT(flowed, (one.size() - 1) / per_particle / 2);  // most particles flowed plastically
 }
 
 }  // namespace

@@ -2,6 +2,9 @@
 /// \file energy.hpp
 /// Conservation audit (DESIGN.md): energies, linear momentum and mass of all bodies.
 
+#include <array>
+
+#include "mpm/exact_sum.hpp"
 #include "mpm/types.hpp"
 
 namespace mpm {
@@ -17,6 +20,34 @@ struct EnergyBalance {
   Vec3 momentum = Vec3::Zero();  ///< kg m/s
   Real mass = 0;                 ///< kg
   Real total() const { return kinetic + strain + gravity + plastic_work; }
+};
+
+/// The terms of an EnergyBalance as they are gathered, each summed exactly (exact_sum.hpp): the balance
+/// (value()) is then the same bits for any storage order of the particles, any thread count and any split of
+/// the particles into parts whose sums are merged (MPI ranks), docs/distributed.md §1.
+struct EnergySums {
+  ExactSum kinetic, strain, gravity, plastic_work, thermal, mass;
+  std::array<ExactSum, 3> momentum;
+  void merge(const EnergySums& o) {
+    kinetic.merge(o.kinetic);
+    strain.merge(o.strain);
+    gravity.merge(o.gravity);
+    plastic_work.merge(o.plastic_work);
+    thermal.merge(o.thermal);
+    mass.merge(o.mass);
+    for (int d = 0; d < 3; ++d) momentum[d].merge(o.momentum[d]);
+  }
+  EnergyBalance value() const {
+    EnergyBalance e;
+    e.kinetic = kinetic.value();
+    e.strain = strain.value();
+    e.gravity = gravity.value();
+    e.plastic_work = plastic_work.value();
+    e.thermal = thermal.value();
+    e.mass = mass.value();
+    for (int d = 0; d < 3; ++d) e.momentum[d] = momentum[d].value();
+    return e;
+  }
 };
 
 }  // namespace mpm

@@ -2,8 +2,9 @@
 /// \file exact_sum.hpp
 /// A correctly rounded sum of doubles (Shewchuk 1997, "Adaptive precision floating-point arithmetic"; the
 /// algorithm of Python's math.fsum): the result is the exact sum rounded once, so it does not depend on the
-/// order of the terms. Histories (reactions, region sums) use it so that a number is the same for any
-/// thread count, any particle order and, later, any number of ranks.
+/// order of the terms. Histories (reactions, region sums), the energy audit (energy.hpp) and the contact
+/// forces use it so that a number is the same for any thread count, any particle order and, later, any
+/// number of ranks: partial sums merged (merge()) give the bits of one sum over all the terms.
 
 #include <cmath>
 #include <cstddef>
@@ -33,6 +34,11 @@ class ExactSum {
   ExactSum& operator+=(double x) {
     add(x);
     return *this;
+  }
+  /// Adds every term of `o` (its partials are exact pieces of its sum): the result is the sum of both sets.
+  void merge(const ExactSum& o) {
+    for (double x : o.partials_) add(x);
+    special_ += o.special_;
   }
   /// The exact sum rounded to the nearest double (ties to even); 0 for no term.
   double value() const {

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mpm/exact_sum.hpp"
 #include "mpm/particle_set.hpp"
 
 namespace mpm {
@@ -50,10 +51,22 @@ class Material {
                                             Real dt) = 0;
   /// The CFL speed bound of the current state, without updating anything (used before the first step).
   virtual WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const = 0;
-  /// Stored (strain) energy of the particles, J (per unit out-of-plane size in 1D/2D).
-  virtual Real strain_energy(const ParticleSet<Dim>& p) const = 0;
-  /// Energy dissipated so far by the particles (plastic work), J; zero for elastic models.
-  virtual Real dissipated_energy(const ParticleSet<Dim>&) const { return 0; }
+  /// Adds the stored (strain) energy of each particle to `sum`, J (per unit out-of-plane size in 1D/2D):
+  /// one term per particle, summed exactly, so the total does not depend on the particles' order.
+  virtual void add_strain_energy(const ParticleSet<Dim>& p, ExactSum& sum) const = 0;
+  /// Adds the energy each particle has dissipated so far (plastic work), J; nothing for elastic models.
+  virtual void add_dissipated_energy(const ParticleSet<Dim>&, ExactSum&) const {}
+  /// The sums of the two above over `p`, J.
+  Real strain_energy(const ParticleSet<Dim>& p) const {
+    ExactSum s;
+    add_strain_energy(p, s);
+    return s.value();
+  }
+  Real dissipated_energy(const ParticleSet<Dim>& p) const {
+    ExactSum s;
+    add_dissipated_energy(p, s);
+    return s.value();
+  }
   /// Adds and initialises the on-demand particle fields the model keeps (history variables such as the
   /// plastic strain). Called once by the simulation builder after the body's particles are created.
   virtual void prepare_particles(ParticleSet<Dim>&) const {}

@@ -51,9 +51,9 @@ class Module {
   virtual Real stable_time_step(const std::vector<Body<Dim>>&) const { return std::numeric_limits<Real>::infinity(); }
   /// What stable_time_step() bounds, for the log ("diffusion bound h^2 rho c / (2 dim k)").
   virtual std::string_view time_step_bound() const { return name(); }
-  /// Adds the module's share of the conservation audit of one body (e.g. its thermal energy) to `e`
-  /// (called for every body in turn: energy.csv and the per-body energy histories).
-  virtual void add_energy(const Body<Dim>&, EnergyBalance&) const {}
+  /// Adds the module's share of the conservation audit of one body (e.g. its thermal energy) to `e`, one
+  /// term per particle (called for every body in turn: energy.csv and the per-body energy histories).
+  virtual void add_energy(const Body<Dim>&, EnergySums&) const {}
   /// What the module carries from one step to the next outside the particle fields (positions of moving
   /// planes, force sums, the length of its CSV file, ...), as entries `prefix`NAME (state_archive.hpp): for
   /// checkpoints and for the stability guard's snapshots. A module whose state is all in particle fields

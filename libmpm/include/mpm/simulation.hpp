@@ -115,7 +115,7 @@ class Simulation {
   StabilityReport diagnose(Real dt) const;
   void roll_back_to_previous_step();
   /// Adds body's share of the audit to e (energy() and body_energy()).
-  void add_body_energy(const Body<Dim>& body, EnergyBalance& e) const;
+  void add_body_energy(const Body<Dim>& body, EnergySums& e) const;
 
   Grid<Dim> grid_;
   std::vector<Body<Dim>> bodies_;

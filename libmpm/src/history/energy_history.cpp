@@ -2,7 +2,10 @@
 // of them): kinetic, strain, gravity potential, plastic work, thermal energy, momentum, mass, and the centre
 // of mass's position and velocity. The bodies' histories sum to energy.csv (Simulation::body_energy is the
 // same accumulation per body).
+#include <array>
+
 #include "history_support.hpp"
+#include "mpm/exact_sum.hpp"
 
 namespace mpm::history {
 namespace {
@@ -42,13 +45,14 @@ class EnergyHistory final : public History<Dim> {
     for (double v : {e.kinetic, e.strain, e.gravity, e.plastic_work, e.thermal, e.total()}) row.push_back(v);
     for (int d = 0; d < Dim; ++d) row.push_back(e.momentum[d]);
     row.push_back(e.mass);
-    Vec<Dim> first = Vec<Dim>::Zero();  // sum m x
+    std::array<ExactSum, Dim> first;  // sum m x, exactly: the same for any particle order
     for (int b = 0; b < static_cast<int>(sim.bodies().size()); ++b) {
       if (body_ >= 0 && b != body_) continue;
       const auto& p = sim.bodies()[static_cast<std::size_t>(b)].particles;
-      for (Index i = 0; i < p.size(); ++i) first += p.mass[i] * Vec<Dim>(p.x[i]);
+      for (Index i = 0; i < p.size(); ++i)
+        for (int d = 0; d < Dim; ++d) first[d] += p.mass[i] * p.x[i][d];
     }
-    for (int d = 0; d < Dim; ++d) row.push_back(e.mass > 0 ? first[d] / e.mass : 0);
+    for (int d = 0; d < Dim; ++d) row.push_back(e.mass > 0 ? first[d].value() / e.mass : 0);
     for (int d = 0; d < Dim; ++d) row.push_back(e.mass > 0 ? e.momentum[d] / e.mass : 0);
   }
 

@@ -20,7 +20,7 @@ class RigidMaterial final : public Material<Dim> {
   /// Nothing to update: a rigid particle carries no stress and imposes no time-step bound.
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>&, Index, Index, const MatU<Dim>*, Real) override { return {}; }
   WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>&) const override { return {}; }
-  Real strain_energy(const ParticleSet<Dim>&) const override { return 0; }
+  void add_strain_energy(const ParticleSet<Dim>&, ExactSum&) const override {}
 
  private:
   Real density_;

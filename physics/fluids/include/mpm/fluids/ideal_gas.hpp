@@ -79,11 +79,9 @@ class IdealGas final : public Material<Dim> {
     return bound;
   }
 
-  Real strain_energy(const ParticleSet<Dim>& p) const override {
+  void add_strain_energy(const ParticleSet<Dim>& p, ExactSum& sum) const override {
     const auto& energy = p.field(keys::internal_energy);
-    Real sum = 0;
     for (Index i = 0; i < p.size(); ++i) sum += p.mass[i] * energy[i];
-    return sum;
   }
 
  private:

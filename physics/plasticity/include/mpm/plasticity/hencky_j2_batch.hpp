@@ -36,8 +36,8 @@ class HenckyJ2Batch final : public Material<Dim> {
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>*, Real dt) override {
     State* state = p.field(state_field).data();
     const Real* hoop = axisym::hoop_stretch_of(p);  // axisymmetric: F_tt out of plane
-    Real max_c = 0, sum = 0;                        // finite stresses have a finite sum
-    Vec<Dim> max_v = Vec<Dim>::Zero();
+    Real sum = 0;                                   // finite stresses have a finite sum
+    Vec<Dim> max_speed = Vec<Dim>::Zero();  // max (|v_a| + c) per particle: the same for any cut into blocks
     for (Index i = begin; i != end; ++i) {
       const Mat3 F = axisym::deformation_gradient_3x3(p, i, hoop);
       const Real J = F.determinant();
@@ -47,11 +47,10 @@ class HenckyJ2Batch final : public Material<Dim> {
       tau.diagonal().array() += volumetric_.kirchhoff_pressure(J);
       p.stress[i] = SymTensor<Dim>::from(tau / J);
       for (Real s : p.stress[i].c) sum += s;
-      max_c = std::max(max_c, wave_speed(J));
-      max_v = max_v.cwiseMax(VecU<Dim>(p.v[i].cwiseAbs()));
+      max_speed = max_speed.cwiseMax((p.v[i].cwiseAbs().array() + wave_speed(J)).matrix());
     }
     WaveSpeedBound<Dim> bound;
-    bound.max_speed = (max_v.array() + max_c).matrix();  // max (|v| + c) <= max |v| + max c
+    bound.max_speed = max_speed;
     bound.finite = std::isfinite(sum);
     return bound;
   }
@@ -67,11 +66,10 @@ class HenckyJ2Batch final : public Material<Dim> {
   }
 
   /// sum V_0 (W~ + U(J)), with G ||dev eps^e||^2 = ||dev tau||^2 / (4 G) and dev tau = J dev sigma, J.
-  Real strain_energy(const ParticleSet<Dim>& p) const override {
+  void add_strain_energy(const ParticleSet<Dim>& p, ExactSum& e) const override {
     const auto& state = p.field(state_field);
     const Real G = params_.shear_modulus, H = params_.hardening_modulus;
     const Real* hoop = axisym::hoop_stretch_of(p);
-    Real e = 0;  // serial: fixed summation order
     for (Index i = 0; i < p.size(); ++i) {
       const Real J = axisym::volume_ratio(p, i, hoop);
       const Mat3 s = p.stress[i].full();
@@ -79,14 +77,11 @@ class HenckyJ2Batch final : public Material<Dim> {
       const Real w = dev_tau.squaredNorm() / (4 * G) + 0.5 * H * state[i].xi * state[i].xi + volumetric_.energy(J);
       e += p.volume0[i] * w;
     }
-    return e;
   }
 
-  Real dissipated_energy(const ParticleSet<Dim>& p) const override {
+  void add_dissipated_energy(const ParticleSet<Dim>& p, ExactSum& e) const override {
     const auto& state = p.field(state_field);
-    Real e = 0;
     for (Index i = 0; i < p.size(); ++i) e += p.volume0[i] * state[i].plastic_work;
-    return e;
   }
 
   bool append_output(std::string_view field, const ParticleSet<Dim>& p, std::vector<double>& out) const override {

@@ -37,12 +37,13 @@ class PlasticBatch final : public Material<Dim> {
     if (params_.thermal) p.add_field(mpm::keys::temperature, params_.room_temperature);  // kept if present
   }
 
-  /// Which law a particle runs depends on its index only, never on the block [begin, end): the vector law in
-  /// packs aligned to the index (particles g .. g + lane_count - 1, g a multiple of lane_count; a pack that
-  /// the block cuts is padded, and a lane's result does not depend on its pack-mates), the scalar law for the
-  /// last size() % lane_count particles of the set. The blocks are chosen by TBB at run time, and the two laws
-  /// agree only to round-off: so a particle's update is the same bits whatever the thread count (a restart
-  /// at another thread count) and however the range is split.
+  /// Every particle runs the vector law, in packs aligned to the index (particles g .. g + lane_count - 1, g a
+  /// multiple of lane_count); a pack that the block or the end of the set cuts is padded with copies of one of
+  /// its particles, whose results are dropped. A lane's result depends on its own particle only (the lanes
+  /// never mix: a branch taken for one lane is a select for the others), so a particle's update is the same
+  /// bits whatever its index, its pack-mates and the blocks TBB cuts the set into, which depend on the thread
+  /// count, on timing and (later) on the rank a particle lives on. The scalar law is not used here: it agrees
+  /// with the vector law only to round-off (its log, exp and pow are the C library's).
   WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
     if constexpr (Dim == 2)  // axisymmetric bodies: F_tt and L_tt join the law (one test per block)
       if (const axisym::HoopFields hoop = axisym::hoop_fields(p)) return update_block<true>(p, begin, end, L, dt, hoop);
@@ -59,19 +60,15 @@ class PlasticBatch final : public Material<Dim> {
     return bound;
   }
 
-  Real strain_energy(const ParticleSet<Dim>& p) const override {
+  void add_strain_energy(const ParticleSet<Dim>& p, ExactSum& e) const override {
     const Real* hoop = axisym::hoop_stretch_of(p);
-    Real e = 0;  // serial: fixed summation order
     for (Index i = 0; i < p.size(); ++i)
       e += p.volume0[i] * Model::energy_density(params_, axisym::volume_ratio(p, i, hoop), p.stress[i].full());
-    return e;
   }
 
-  Real dissipated_energy(const ParticleSet<Dim>& p) const override {
+  void add_dissipated_energy(const ParticleSet<Dim>& p, ExactSum& e) const override {
     const auto& state = p.field(state_field);
-    Real e = 0;
     for (Index i = 0; i < p.size(); ++i) e += p.volume0[i] * state[i].plastic_work;
-    return e;
   }
 
   bool append_output(std::string_view field, const ParticleSet<Dim>& p, std::vector<double>& out) const override {
@@ -103,40 +100,27 @@ class PlasticBatch final : public Material<Dim> {
                                    const axisym::HoopFields& hoop) {
     State* state = p.field(state_field).data();
     Real* temperature = params_.thermal ? p.field(mpm::keys::temperature).data() : nullptr;
-    Real max_c2 = 0;
-    const Index packed_end = std::min(end, p.size() - p.size() % lane_count);
-    for (Index g = begin - begin % lane_count; g < packed_end; g += lane_count) {
-      const Index first = std::max(g, begin), last = std::min<Index>(g + lane_count, packed_end);
-      max_c2 =
-          std::max(max_c2, update_pack<Hoop>(p, g, first, last, L + (first - begin), dt, state, temperature, hoop));
-    }
-    for (Index i = std::max(begin, packed_end); i < end; ++i) {
-      Real J = 0, size = 0;
-      size_of<Hoop>(p, i, hoop, J, size);
-      Model::template update_point<Dim>(params_, Mat<Dim>(p.F[i]), Mat<Dim>(L[i - begin]), J, dt, size, state[i],
-                                        temperature ? temperature + i : nullptr, p.stress[i],
-                                        Hoop ? hoop.rate[i] : Real(0));
-      max_c2 = std::max(max_c2, Model::wave_speed_squared(params_, J));
+    Vec<Dim> max_speed = Vec<Dim>::Zero();
+    for (Index g = begin - begin % lane_count; g < end; g += lane_count) {
+      const Index first = std::max(g, begin), last = std::min<Index>(g + lane_count, end);
+      update_pack<Hoop>(p, g, first, last, L + (first - begin), dt, state, temperature, hoop, max_speed);
     }
     Real sum = 0;  // finite stresses have a finite sum
-    Vec<Dim> max_v = Vec<Dim>::Zero();
-    for (Index k = begin; k != end; ++k) {
+    for (Index k = begin; k != end; ++k)
       for (Real c : p.stress[k].c) sum += c;
-      max_v = max_v.cwiseMax(VecU<Dim>(p.v[k].cwiseAbs()));
-    }
-    // max_a (|v_a| + c) <= max |v_a| + max c: one square root per block (slightly conservative)
     WaveSpeedBound<Dim> bound;
-    bound.max_speed = (max_v.array() + std::sqrt(max_c2)).matrix();
+    bound.max_speed = max_speed;
     bound.finite = std::isfinite(sum);
     return bound;
   }
 
   /// Particles first .. last - 1 of the pack that starts at particle g (L: their velocity gradients) through
-  /// the vector law; lanes outside [first, last) repeat particle `first` and are not stored. Returns the
-  /// largest squared wave speed among the particles.
+  /// the vector law; lanes outside [first, last) repeat particle `first` and are not stored. Raises
+  /// max_speed to max (|v_a| + c) over the particles (eq. 2.72 per particle, so that the bound, and the time
+  /// step, do not depend on how the particles are cut into blocks).
   template <bool Hoop>
-  Real update_pack(ParticleSet<Dim>& p, Index g, Index first, Index last, const MatU<Dim>* L, Real dt, State* state,
-                   Real* temperature, [[maybe_unused]] const axisym::HoopFields& hoop) const {
+  void update_pack(ParticleSet<Dim>& p, Index g, Index first, Index last, const MatU<Dim>* L, Real dt, State* state,
+                   Real* temperature, [[maybe_unused]] const axisym::HoopFields& hoop, Vec<Dim>& max_speed) const {
     PointLanes<Dim, Pack> lanes;
     if constexpr (!Hoop) lanes.L_hoop = Pack::Zero();
     for (int l = 0; l < lane_count; ++l) {
@@ -160,7 +144,9 @@ class PlasticBatch final : public Material<Dim> {
       if (temperature) temperature[k] = lanes.temperature[l];
       for (int c = 0; c < SymTensor<Dim>::size; ++c) p.stress[k].c[c] = lanes.stress[c][l];
     }
-    return Model::wave_speed_squared(params_, lanes.J).maxCoeff();  // padded lanes repeat a particle
+    const Pack c = Model::wave_speed_squared(params_, lanes.J).sqrt();
+    for (Index k = first; k < last; ++k)
+      max_speed = max_speed.cwiseMax((p.v[k].cwiseAbs().array() + c[static_cast<int>(k - g)]).matrix());
   }
 
   std::string key_;

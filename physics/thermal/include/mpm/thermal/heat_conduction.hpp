@@ -96,7 +96,7 @@ class HeatConduction final : public Module<Dim> {
   void set_cell_size(const GridGeometry<Dim>& g) { h_min_ = g.h.minCoeff(); }
 
   /// Thermal energy sum m c (T - T_ref), J.
-  void add_energy(const Body<Dim>& body, EnergyBalance& e) const override {
+  void add_energy(const Body<Dim>& body, EnergySums& e) const override {
     const auto& p = body.particles;
     const auto& T = p.field(mpm::keys::temperature);
     const auto& tb = setup_.bodies[static_cast<std::size_t>(body.index)];

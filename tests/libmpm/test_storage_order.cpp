@@ -1,0 +1,264 @@
+// Results do not depend on where the particles sit in memory (docs/distributed.md §1): the scatter visits the
+// particles of a slab by (cell, id) (slab_binning.hpp) and the energy audit sums exactly (exact_sum.hpp), so
+// a scene whose particles are stored in another order, or sorted at another interval, gives the same bits.
+// This is what lets MPI ranks migrate, sort and rebalance particles without changing a result.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <random>
+
+#include "mpm/exact_sum.hpp"
+#include "mpm/slab_binning.hpp"
+#include "scene_fixture.hpp"
+
+namespace mpm {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Particles at random positions in [0.1, 0.9)^Dim of a unit grid of 10 cells per axis, ids 0 .. n - 1.
+template <int Dim>
+ParticleSet<Dim> random_particles(int n, std::mt19937& rng) {
+  std::uniform_real_distribution<Real> u(0.1, 0.9);
+  ParticleSet<Dim> p;
+  for (int i = 0; i < n; ++i) {
+    Vec<Dim> x;
+    for (int d = 0; d < Dim; ++d) x[d] = u(rng);
+    p.add(x, 1, 1e-3);
+  }
+  return p;
+}
+
+/// The ids in the order the scatter visits them, slab by slab.
+std::vector<std::uint32_t> visit_order(const SlabBins& bins, const std::vector<std::uint32_t>& id) {
+  std::vector<std::uint32_t> out;
+  for (Index i : bins.order) out.push_back(id[static_cast<std::size_t>(i)]);
+  return out;
+}
+
+template <int Dim>
+void check_bins_follow_cell_and_id(int slab_cells) {
+  std::mt19937 rng(11);
+  const ParticleSet<Dim> p = random_particles<Dim>(3000, rng);
+  std::array<int, Dim> cells;
+  cells.fill(10);
+  const GridGeometry<Dim> g(Vec<Dim>::Zero(), Vec<Dim>::Constant(0.1), cells);
+  Index layer = 1;  // cells per layer of the last axis
+  for (int d = 0; d < Dim - 1; ++d) layer *= 10;
+  SlabBins bins;
+  bin_by_slab(p, g, slab_cells, bins);
+  // Inside a slab the key (cell, id) increases strictly; the slabs follow the last axis.
+  for (int s = 0; s < bins.slab_count; ++s)
+    for (Index k = bins.offsets[s]; k < bins.offsets[s + 1]; ++k) {
+      const Index i = bins.order[k];
+      const Index cell = cell_index<Dim>(p.x[i], g);
+      EXPECT_EQ(cell / layer / slab_cells, s);
+      if (k > bins.offsets[s])
+        EXPECT_LT(scatter_key(cell_index<Dim>(p.x[bins.order[k - 1]], g), p.id[bins.order[k - 1]]),
+                  scatter_key(cell, p.id[i]));
+    }
+  // Stored in a random order (ids kept), the particles are visited in the same order of ids.
+  std::vector<Index> perm(static_cast<std::size_t>(p.size()));
+  std::iota(perm.begin(), perm.end(), 0);
+  std::shuffle(perm.begin(), perm.end(), rng);
+  ParticleSet<Dim> shuffled = p;
+  shuffled.gather(perm);
+  SlabBins other;
+  bin_by_slab(shuffled, g, slab_cells, other);
+  EXPECT_EQ(other.offsets, bins.offsets);
+  EXPECT_EQ(visit_order(other, shuffled.id), visit_order(bins, p.id));
+  // And sorted by cell as the simulation does every sort_interval steps: again the same visit.
+  shuffled.gather(order_by_cell(shuffled, g));
+  bin_by_slab(shuffled, g, slab_cells, other);
+  EXPECT_EQ(visit_order(other, shuffled.id), visit_order(bins, p.id));
+  for (Index i = 0; i < shuffled.size(); ++i) EXPECT_EQ(other.order[i], i);  // storage is now the scatter order
+}
+
+TEST(ScatterOrder, BinsFollowCellThenIdIn2D) { check_bins_follow_cell_and_id<2>(2); }
+TEST(ScatterOrder, BinsFollowCellThenIdIn3D) { check_bins_follow_cell_and_id<3>(3); }
+
+// ---- whole runs ----
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(MPM_BINARY_DIR) / "test_scratch" / "storage_order" / name;
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// A block of particles (2 per cell and axis) with a velocity field that shears and compresses it, written
+/// to a CSV particle file in the given order of rows; the ids are the row numbers of the unshuffled file.
+template <int Dim>
+fs::path write_block(const fs::path& file, bool shuffle, Real h) {
+  struct Row {
+    Vec<Dim> x, v;
+    std::uint32_t id;
+  };
+  std::vector<Row> rows;
+  const int n = Dim == 2 ? 16 : 8;  // particles per axis
+  const int count = Dim == 2 ? n * n : n * n * n;
+  for (int k = 0; k < count; ++k) {
+    Row r;
+    int rest = k;
+    for (int d = 0; d < Dim; ++d) {
+      r.x[d] = 0.3 + (rest % n + 0.5) * h / 2;
+      rest /= n;
+    }
+    r.v[0] = 0.5 * std::sin(7 * r.x[Dim - 1]);
+    for (int d = 1; d < Dim; ++d) r.v[d] = -0.3 * r.x[0] + 0.1 * d;
+    r.id = static_cast<std::uint32_t>(k);
+    rows.push_back(r);
+  }
+  if (shuffle) {
+    std::mt19937 rng(5);
+    std::shuffle(rows.begin(), rows.end(), rng);
+  }
+  std::ofstream out(file);
+  out << (Dim == 2 ? "x,y,volume,velocity_x,velocity_y,id\n" : "x,y,z,volume,velocity_x,velocity_y,velocity_z,id\n");
+  out.precision(17);
+  const Real volume = std::pow(h / 2, Dim);
+  for (const Row& r : rows) {
+    for (int d = 0; d < Dim; ++d) out << r.x[d] << ",";
+    out << volume;
+    for (int d = 0; d < Dim; ++d) out << "," << r.v[d];
+    out << "," << r.id << "\n";
+  }
+  return file;
+}
+
+template <int Dim>
+std::string scene(const fs::path& particles, const std::string& solver, Real h) {
+  const std::string dims = Dim == 2 ? "[1, 1]" : "[1, 1, 1]";
+  return "dimension: " + std::to_string(Dim) + "\ngrid: {extent: " + dims + ", cell_size: " + std::to_string(h) +
+         ", boundary: {" + (Dim == 2 ? "y_min" : "z_min") +
+         ": fixed}}\n"
+         "materials: {m: {model: neo_hookean, density: 1000, youngs_modulus: 1.0e4, poisson_ratio: 0.3}}\n"
+         "bodies: [{material: m, shape: {particles: " +
+         particles.string() + "}}]\nsolver: {" + solver + "}\n";
+}
+
+struct Run {
+  std::vector<EnergyBalance> energy;  ///< after every step
+  std::vector<double> state;          ///< final x, v, stress, F of every particle, by id
+};
+
+template <int Dim>
+Run run(const std::string& yaml, int steps) {
+  auto sim = test::simulation_from_yaml<Dim>(yaml);
+  Run r;
+  r.energy.push_back(sim->energy());
+  for (int s = 0; s < steps; ++s) {
+    sim->advance(sim->next_time_step());
+    r.energy.push_back(sim->energy());
+  }
+  const auto& p = sim->bodies().front().particles;
+  std::vector<Index> by_id(static_cast<std::size_t>(p.size()));
+  std::iota(by_id.begin(), by_id.end(), 0);
+  std::sort(by_id.begin(), by_id.end(), [&](Index a, Index b) { return p.id[a] < p.id[b]; });
+  for (Index i : by_id) {
+    r.state.push_back(p.id[i]);
+    for (int d = 0; d < Dim; ++d) r.state.push_back(p.x[i][d]), r.state.push_back(p.v[i][d]);
+    for (double c : p.stress[i].c) r.state.push_back(c);
+    for (int k = 0; k < Dim * Dim; ++k) r.state.push_back(p.F[i].data()[k]);
+  }
+  return r;
+}
+
+/// Byte-equal: the bit patterns, so that -0 and 0 (and NaN payloads) count as different.
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void expect_same(const Run& a, const Run& b, const std::string& what) {
+  ASSERT_EQ(a.state.size(), b.state.size()) << what;
+  for (std::size_t i = 0; i < a.state.size(); ++i)
+    ASSERT_TRUE(same_bits(a.state[i], b.state[i])) << what << ": state entry " << i << ": " << a.state[i] << " vs "
+                                                   << b.state[i];
+  ASSERT_EQ(a.energy.size(), b.energy.size()) << what;
+  for (std::size_t s = 0; s < a.energy.size(); ++s) {
+    const EnergyBalance &x = a.energy[s], &y = b.energy[s];
+    for (const auto& [u, v] : {std::pair{x.kinetic, y.kinetic}, {x.strain, y.strain}, {x.gravity, y.gravity},
+                               {x.mass, y.mass}, {x.momentum[0], y.momentum[0]}, {x.momentum[1], y.momentum[1]},
+                               {x.momentum[2], y.momentum[2]}})
+      ASSERT_TRUE(same_bits(u, v)) << what << ": energy row " << s << ": " << u << " vs " << v;
+  }
+}
+
+template <int Dim>
+void check_storage_independence(const std::string& scheme, const std::string& shape) {
+  const Real h = Dim == 2 ? 0.05 : 1.0 / 12;
+  const std::string name = std::to_string(Dim) + "d_" + scheme + "_" + shape;
+  const fs::path dir = scratch(name);
+  const fs::path plain = write_block<Dim>(dir / "plain.csv", false, h);
+  const fs::path shuffled = write_block<Dim>(dir / "shuffled.csv", true, h);
+  const std::string solver = "scheme: " + scheme + ", shape_function: " + shape + ", cfl: 0.4, end_time: 10";
+  const int steps = 30;
+  const Run a = run<Dim>(scene<Dim>(plain, solver, h), steps);
+  // the particles stored in another order (ids kept)
+  expect_same(a, run<Dim>(scene<Dim>(shuffled, solver, h), steps), name + ", shuffled rows");
+  // sorted by cell at every step, or only before the first one (then they drift out of order)
+  expect_same(a, run<Dim>(scene<Dim>(shuffled, solver + ", sort_interval: 1", h), steps), name + ", sorted every step");
+  expect_same(a, run<Dim>(scene<Dim>(shuffled, solver + ", sort_interval: 1000", h), steps), name + ", sorted once");
+  // the run did something: the block moved and deformed
+  EXPECT_GT(std::abs(a.energy.back().strain), 0) << name;
+  EXPECT_NE(a.energy.back().kinetic, a.energy.front().kinetic) << name;
+}
+
+TEST(StorageOrder, SameBitsForAnyParticleOrder2D) {
+  for (const std::string scheme : {"usl", "musl", "usf", "tlmpm"})
+    for (const std::string shape : {"linear", "cubic_bspline"}) check_storage_independence<2>(scheme, shape);
+}
+
+TEST(StorageOrder, SameBitsForAnyParticleOrder3D) {
+  for (const std::string scheme : {"usl", "musl", "usf", "tlmpm"})
+    for (const std::string shape : {"linear", "cubic_bspline"}) check_storage_independence<3>(scheme, shape);
+}
+
+// ---- exact sums ----
+
+// The energy audit sums one term per particle exactly: the kinetic energy and the momentum of a scene equal,
+// bit for bit, the correctly rounded sums of the same terms taken in reverse and in shuffled order, and the
+// merge of sums over parts of the particles (what ranks will do).
+TEST(ExactEnergy, EqualsTheExactSumInAnyOrder) {
+  const Real h = 0.05;
+  const fs::path dir = scratch("exact_energy");
+  const std::string yaml =
+      scene<2>(write_block<2>(dir / "plain.csv", false, h), "scheme: usl, cfl: 0.4, end_time: 10", h);
+  auto sim = test::simulation_from_yaml<2>(yaml);
+  for (int s = 0; s < 5; ++s) sim->advance(sim->next_time_step());
+  const auto& p = sim->bodies().front().particles;
+  std::vector<double> kinetic, momentum;
+  for (Index i = 0; i < p.size(); ++i) {
+    kinetic.push_back(0.5 * p.mass[i] * p.v[i].squaredNorm());
+    momentum.push_back(p.mass[i] * p.v[i][0]);
+  }
+  auto exact = [](const std::vector<double>& terms) {
+    ExactSum s;
+    for (double t : terms) s += t;
+    return s.value();
+  };
+  const EnergyBalance e = sim->energy();
+  std::mt19937 rng(3);
+  for (int round = 0; round < 3; ++round) {
+    if (round == 1) {
+      std::reverse(kinetic.begin(), kinetic.end());
+      std::reverse(momentum.begin(), momentum.end());
+    } else if (round == 2) {
+      std::shuffle(kinetic.begin(), kinetic.end(), rng);
+      std::shuffle(momentum.begin(), momentum.end(), rng);
+    }
+    EXPECT_TRUE(same_bits(e.kinetic, exact(kinetic))) << round;
+    EXPECT_TRUE(same_bits(e.momentum[0], exact(momentum))) << round;
+    // in three parts, merged
+    ExactSum part[3];
+    for (std::size_t i = 0; i < kinetic.size(); ++i) part[i % 3] += kinetic[i];
+    part[0].merge(part[2]);
+    part[0].merge(part[1]);
+    EXPECT_TRUE(same_bits(e.kinetic, part[0].value())) << round;
+  }
+  EXPECT_GT(e.kinetic, 0);
+}
+
+}  // namespace
+}  // namespace mpm
