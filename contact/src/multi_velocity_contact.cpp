@@ -150,6 +150,7 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
   step_force_.assign(slots, Vec<Dim>::Zero());
   step_moment_.assign(slots, Vec3::Zero());
   step_normal_.assign(slots, 0);
+  step_sums_.assign(slots, {});
 }
 
 template <int Dim>
@@ -347,12 +348,7 @@ void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVel
   pass.geometry = &ctx.grid.geometry;
   for (std::size_t P = 0; P < pass.plane_velocity.size(); ++P)
     pass.plane_velocity[P] = plane_velocity(static_cast<int>(P), t);
-  if (record)
-    for (std::size_t s = 0; s < step_force_.size(); ++s) {
-      step_force_[s].setZero();
-      step_moment_[s].setZero();
-      step_normal_[s] = 0;
-    }
+  if (record) step_sums_.assign(step_force_.size(), {});
   Index corrected_nodes = 0;
   std::vector<int> present;
   for (const Index I : candidates_) {
@@ -374,7 +370,13 @@ void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVel
     if (flag & behind_plane) corrected = correct_planes(pass, I, ctx.grid.geometry, present) || corrected;
     corrected_nodes += corrected;
   }
-  if (record) log_forces(pass, corrected_nodes, t);
+  if (!record) return;
+  for (std::size_t s = 0; s < step_force_.size(); ++s) {
+    for (int d = 0; d < Dim; ++d) step_force_[s][d] = step_sums_[s].force[d].value();
+    for (int d = 0; d < 3; ++d) step_moment_[s][d] = step_sums_[s].moment[d].value();
+    step_normal_[s] = step_sums_[s].normal.value();
+  }
+  log_forces(pass, corrected_nodes, t);
 }
 
 template <int Dim>
@@ -386,12 +388,14 @@ bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Ind
   body_grids_[k].velocity[I].*pass.member = v;
   if (!pass.record) return true;
   const Vec<Dim> f = body_grids_[k].node[I].mass * (v - before) / pass.dt;
-  step_force_[k * pass.slots + other] += f;
+  StepSums& sums = step_sums_[k * pass.slots + other];
+  for (int d = 0; d < Dim; ++d) sums.force[d] += f[d];
   Vec3 x3 = Vec3::Zero(), f3 = Vec3::Zero();
   x3.template head<Dim>() = pass.geometry->node_position(pass.geometry->node_indices(I));
   f3.template head<Dim>() = f;
-  step_moment_[k * pass.slots + other] += x3.cross(f3);
-  step_normal_[k * pass.slots + other] -= f.dot(n);
+  const Vec3 moment = x3.cross(f3);
+  for (int d = 0; d < 3; ++d) sums.moment[d] += moment[d];
+  sums.normal += -f.dot(n);
   return true;
 }
 

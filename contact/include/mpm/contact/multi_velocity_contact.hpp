@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/exact_sum.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/module.hpp"
 #include "mpm/reaction_provider.hpp"
@@ -156,6 +157,14 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   std::vector<Vec<Dim>> step_force_;  ///< per (body, other slot): force of this step
   std::vector<Vec3> step_moment_;     ///< per (body, other slot): sum of x_I x f_I of this step, N m
   std::vector<Real> step_normal_;
+  /// The three above as they are summed over the corrected nodes: exactly (exact_sum.hpp), so that they do
+  /// not depend on the order of the nodes (nor, later, on the ranks that own them).
+  struct StepSums {
+    std::array<ExactSum, Dim> force;
+    std::array<ExactSum, 3> moment;
+    ExactSum normal;
+  };
+  std::vector<StepSums> step_sums_;
   Real onset_time_ = -1;
   Index contact_nodes_last_ = 0;
   Real last_row_time_ = 0;
