@@ -58,9 +58,7 @@ void density_normals(const Body<Dim>& body, const GridGeometry<Dim>& g, const st
   const auto& p = body.particles;
   const Real inv_volume = 1 / g.cell_volume();
   const bool axisymmetric = g.coordinates == Coordinates::axisymmetric;  // the meridian density m_p / r_p
-  // In the scatter order of the step's bins, (cell, id), not in storage order: the sums do not depend on
-  // where the particles sit in memory (slab_binning.hpp).
-  for (const Index i : body.bins.order) {
+  for (Index i = 0; i < p.size(); ++i) {
     int base[Dim];
     Real w[Dim][3];
     for (int d = 0; d < Dim; ++d) {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "history_fixture.hpp"
@@ -22,7 +23,9 @@ double exact_sum(const std::vector<double>& terms) {
   return s.value();
 }
 
-// Cases of Python's test_math.testFsum (CPython Lib/test/test_math.py), whose math.fsum is this algorithm.
+// Cases of Python's test_math.testFsum (CPython Lib/test/test_math.py), whose math.fsum is correctly rounded
+// too; then the ends of the range: subnormals add exactly, and at the top a tie rounds to even, which for the
+// largest double (odd mantissa) is up, out of range.
 TEST(ExactSum, CorrectlyRounded) {
   EXPECT_EQ(exact_sum({}), 0.0);
   EXPECT_EQ(exact_sum({1e100, 1.0, -1e100, 1e-100, 1e50, -1.0, -1e50}), 1e-100);
@@ -31,6 +34,12 @@ TEST(ExactSum, CorrectlyRounded) {
   EXPECT_EQ(exact_sum({1.0, std::ldexp(1.0, -53)}), 1.0);  // a tie: to even
   EXPECT_EQ(exact_sum({1.0, std::ldexp(1.0, -53), std::ldexp(1.0, -106)}), 1.0 + std::ldexp(1.0, -52));
   EXPECT_EQ(exact_sum(std::vector<double>(10, 0.1)), 1.0);  // the plain sum gives 0.9999999999999999
+  const double tiny = std::numeric_limits<double>::denorm_min(), top = std::numeric_limits<double>::max();
+  EXPECT_EQ(exact_sum({tiny, tiny, tiny, -std::ldexp(1.0, -1022), std::ldexp(1.0, -1022)}), 3 * tiny);
+  EXPECT_EQ(exact_sum({top, std::ldexp(1.0, 969)}), top);  // below half an ulp (2^970)
+  EXPECT_EQ(exact_sum({top, std::ldexp(1.0, 970)}), std::numeric_limits<double>::infinity());  // the tie
+  EXPECT_EQ(exact_sum({top, top, -top}), top);  // no overflow on the way
+  EXPECT_EQ(exact_sum({-top, -std::ldexp(1.0, 970)}), -std::numeric_limits<double>::infinity());
 }
 
 TEST(ExactSum, IndependentOfTheOrder) {
