@@ -172,9 +172,11 @@ void expect_same(const Run& a, const Run& b, const std::string& what) {
   ASSERT_EQ(a.energy.size(), b.energy.size()) << what;
   for (std::size_t s = 0; s < a.energy.size(); ++s) {
     const EnergyBalance &x = a.energy[s], &y = b.energy[s];
-    for (const auto& [u, v] : {std::pair{x.kinetic, y.kinetic}, {x.strain, y.strain}, {x.gravity, y.gravity},
-                               {x.mass, y.mass}, {x.momentum[0], y.momentum[0]}, {x.momentum[1], y.momentum[1]},
-                               {x.momentum[2], y.momentum[2]}})
+    const std::pair<double, double> pairs[] = {{x.kinetic, y.kinetic},         {x.strain, y.strain},
+                                               {x.gravity, y.gravity},         {x.mass, y.mass},
+                                               {x.momentum[0], y.momentum[0]}, {x.momentum[1], y.momentum[1]},
+                                               {x.momentum[2], y.momentum[2]}};
+    for (const auto& [u, v] : pairs)
       ASSERT_TRUE(same_bits(u, v)) << what << ": energy row " << s << ": " << u << " vs " << v;
   }
 }
