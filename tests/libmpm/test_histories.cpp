@@ -38,7 +38,7 @@ TEST(ExactSum, CorrectlyRounded) {
   EXPECT_EQ(exact_sum({tiny, tiny, tiny, -std::ldexp(1.0, -1022), std::ldexp(1.0, -1022)}), 3 * tiny);
   EXPECT_EQ(exact_sum({top, std::ldexp(1.0, 969)}), top);  // below half an ulp (2^970)
   EXPECT_EQ(exact_sum({top, std::ldexp(1.0, 970)}), std::numeric_limits<double>::infinity());  // the tie
-  EXPECT_EQ(exact_sum({top, top, -top}), top);  // no overflow on the way
+  EXPECT_EQ(exact_sum({top, top, -top}), top);                                                 // no overflow on the way
   EXPECT_EQ(exact_sum({-top, -std::ldexp(1.0, 970)}), -std::numeric_limits<double>::infinity());
 }
 

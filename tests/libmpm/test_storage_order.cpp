@@ -167,15 +167,14 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 void expect_same(const Run& a, const Run& b, const std::string& what) {
   ASSERT_EQ(a.state.size(), b.state.size()) << what;
   for (std::size_t i = 0; i < a.state.size(); ++i)
-    ASSERT_TRUE(same_bits(a.state[i], b.state[i])) << what << ": state entry " << i << ": " << a.state[i] << " vs "
-                                                   << b.state[i];
+    ASSERT_TRUE(same_bits(a.state[i], b.state[i]))
+        << what << ": state entry " << i << ": " << a.state[i] << " vs " << b.state[i];
   ASSERT_EQ(a.energy.size(), b.energy.size()) << what;
   for (std::size_t s = 0; s < a.energy.size(); ++s) {
     const EnergyBalance &x = a.energy[s], &y = b.energy[s];
-    const std::pair<double, double> pairs[] = {{x.kinetic, y.kinetic},         {x.strain, y.strain},
-                                               {x.gravity, y.gravity},         {x.mass, y.mass},
-                                               {x.momentum[0], y.momentum[0]}, {x.momentum[1], y.momentum[1]},
-                                               {x.momentum[2], y.momentum[2]}};
+    const std::pair<double, double> pairs[] = {
+        {x.kinetic, y.kinetic},         {x.strain, y.strain},           {x.gravity, y.gravity},        {x.mass, y.mass},
+        {x.momentum[0], y.momentum[0]}, {x.momentum[1], y.momentum[1]}, {x.momentum[2], y.momentum[2]}};
     for (const auto& [u, v] : pairs)
       ASSERT_TRUE(same_bits(u, v)) << what << ": energy row " << s << ": " << u << " vs " << v;
   }

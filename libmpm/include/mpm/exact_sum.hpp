@@ -72,11 +72,12 @@ class ExactSum {
     if (h < 0) return 0;
     auto digit = [&](int c) { return c >= 0 ? static_cast<std::uint64_t>(n.digit_[c]) : std::uint64_t{0}; };
     // The top 65-96 bits (digits h, h-1, h-2), and whether anything lies below them.
-    const unsigned __int128 window = (static_cast<unsigned __int128>(digit(h)) << 64) | (digit(h - 1) << 32) | digit(h - 2);
+    const unsigned __int128 window =
+        (static_cast<unsigned __int128>(digit(h)) << 64) | (digit(h - 1) << 32) | digit(h - 2);
     bool sticky = false;
     for (int c = 0; c < h - 2; ++c) sticky = sticky || n.digit_[c] != 0;
     const int length = 64 + (64 - std::countl_zero(digit(h)));  // bits in the window
-    const int drop = length - 53;                                 // 12 .. 43
+    const int drop = length - 53;                               // 12 .. 43
     auto mantissa = static_cast<std::uint64_t>(window >> drop);
     const auto rest = static_cast<std::uint64_t>(window & ((static_cast<unsigned __int128>(1) << drop) - 1));
     const std::uint64_t half = std::uint64_t{1} << (drop - 1);

@@ -47,9 +47,7 @@ Index cell_index(const VecU<Dim>& x, const GridGeometry<Dim>& g) {
 }
 
 /// The scatter key of a particle: cell, then id. Unique while ids are (they are per body).
-inline std::uint64_t scatter_key(Index cell, std::uint32_t id) {
-  return (static_cast<std::uint64_t>(cell) << 32) | id;
-}
+inline std::uint64_t scatter_key(Index cell, std::uint32_t id) { return (static_cast<std::uint64_t>(cell) << 32) | id; }
 
 /// Groups the particles of `p` by slab, in storage order inside a slab: an O(N) stable counting sort;
 /// flags particles outside the grid box. The storage order is (cell, id) at the last sort

@@ -37,7 +37,7 @@ class HenckyJ2Batch final : public Material<Dim> {
     State* state = p.field(state_field).data();
     const Real* hoop = axisym::hoop_stretch_of(p);  // axisymmetric: F_tt out of plane
     Real sum = 0;                                   // finite stresses have a finite sum
-    Vec<Dim> max_speed = Vec<Dim>::Zero();  // max (|v_a| + c) per particle: the same for any cut into blocks
+    Vec<Dim> max_speed = Vec<Dim>::Zero();          // max (|v_a| + c) per particle: the same for any cut into blocks
     for (Index i = begin; i != end; ++i) {
       const Mat3 F = axisym::deformation_gradient_3x3(p, i, hoop);
       const Real J = F.determinant();
