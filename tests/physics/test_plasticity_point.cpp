@@ -431,7 +431,9 @@ TEST(PlasticityPoint, BatchMatchesPointLawAndEnergyCloses) {
   EXPECT_LT((p.stress[0].full() - pt.stress.full()).norm(), 1e-12 * pt.stress.full().norm());
   std::vector<double> eps;
   ASSERT_TRUE(batch.append_output("plastic_strain", p, eps));
-  EXPECT_EQ(eps.at(0), pt.state.plastic_strain);
+  // The batch runs every particle through the vector law (a padded pack, plastic_batch.hpp), which agrees with the
+  // scalar point law to round-off (test_plasticity_lanes.cpp: 1e-9 of the scale), not bit for bit.
+  EXPECT_NEAR(eps.at(0), pt.state.plastic_strain, 1e-9 * pt.state.plastic_strain);
   EXPECT_GT(pt.state.plastic_strain, 0.3);
   std::vector<double> none;
   EXPECT_FALSE(batch.append_output("velocity", p, none));
