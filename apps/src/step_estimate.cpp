@@ -77,7 +77,7 @@ StepEstimate estimate_steps(const SceneDescription& scene, const Simulation<Dim>
       e.where = locate_body_key(scene, bd.where, "velocity");
       e.reason = fmt::format("the CFL bound h / (c + |v|) (eq. 2.73) is governed by the velocity of body '{}': "
                              "|v_{}| = {:.4g} m/s, c = {:.4g} m/s",
-                             bd.name, axis, g.velocity, axis, g.speed - g.velocity);
+                             bd.name, axis, g.velocity, g.speed - g.velocity);
     } else {
       const auto& material = scene.materials.at(bd.material);
       const auto density = material.parameters.find("density");
