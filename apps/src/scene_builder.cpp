@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include "mpm/axisymmetric.hpp"
@@ -13,6 +14,7 @@
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
+#include "mpm/app/key_location.hpp"
 #include "mpm/app/memory_estimate.hpp"
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/history/history_kind.hpp"
@@ -238,6 +240,30 @@ void check_fixed_time_step(const SceneDescription& scene, const Simulation<Dim>&
                                  *fixed_dt, bound, sim.time_step_limiter(), bound));
 }
 
+/// Refuses an initial state whose mass, momentum or energy is not a finite number (a density of 1e308 on the heat
+/// plate: its thermal energy m c T overflows), at the key that makes it so: the body's velocity for the kinetic
+/// energy and the momentum, solver.gravity for the potential, the material's density otherwise.
+template <int Dim>
+void check_initial_state(const SceneDescription& scene, const Simulation<Dim>& sim) {
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const EnergyBalance e = sim.body_energy(sim.bodies()[b]);
+    const BodyDescription& bd = scene.bodies[b];
+    const auto fail = [&](const SourceLocation& where, const std::string& key, const char* what) {
+      throw SceneError(where, key,
+                       fmt::format("body '{}' starts with a {} that is not a finite number in double precision "
+                                   "(mass {:.6g} kg, kinetic energy {:.6g} J, potential {:.6g} J, heat {:.6g} J)",
+                                   bd.name, what, e.mass, e.kinetic, e.gravity, e.thermal));
+    };
+    if (!std::isfinite(e.kinetic) || !e.momentum.allFinite())
+      fail(locate_body_key(scene, bd.where, "velocity"), body_key(static_cast<int>(b), "velocity"),
+           "kinetic energy or momentum");
+    if (!std::isfinite(e.gravity)) fail(locate_key(scene, {"solver", "gravity"}), "solver.gravity", "potential energy");
+    if (!std::isfinite(e.mass) || !std::isfinite(e.total()) || !std::isfinite(e.thermal))
+      fail(locate_key(scene, {"materials", bd.material, "density"}), "materials." + bd.material + ".density",
+           "mass or energy");
+  }
+}
+
 }  // namespace
 
 template <int Dim>
@@ -285,6 +311,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));
   check_fixed_time_step<Dim>(scene, *sim);
   check_time_step(estimate_steps<Dim>(scene, *sim), scene);  // 0, infinite, or too small to reach end_time
+  check_initial_state<Dim>(scene, *sim);
   return sim;
 }
 
