@@ -76,10 +76,9 @@ std::string count_text(double n) { return n < 1e6 ? fmt::format("{:.0f}", n) : f
 /// The refusal: what needs the memory, the estimate, what is available, what to change.
 [[noreturn]] void refuse(const SceneDescription& scene, const MemoryEstimate& e, const MemoryBudget& budget,
                          bool grid_alone) {
-  const std::string available =
-      fmt::format("{} available ({})", format_bytes(budget.bytes), budget.source);
-  const std::string grid = fmt::format("{} grid nodes x {} B = {}", count_text(e.nodes), e.bytes_per_node,
-                                       format_bytes(e.grid_bytes()));
+  const std::string available = fmt::format("{} available ({})", format_bytes(budget.bytes), budget.source);
+  const std::string grid =
+      fmt::format("{} grid nodes x {} B = {}", count_text(e.nodes), e.bytes_per_node, format_bytes(e.grid_bytes()));
   if (grid_alone)
     throw SceneError(locate_key(scene, {"grid", "cell_size"}), "grid.cell_size",
                      fmt::format("the grid alone needs about {} of memory ({}), {}: use a larger cell_size",
@@ -90,12 +89,13 @@ std::string count_text(double n) { return n < 1e6 ? fmt::format("{:.0f}", n) : f
   std::string parts;
   for (const auto& m : e.bodies)
     parts += fmt::format("body '{}': {} particles{} x ({:.0f} x {} B + {} B) = {}; ", m.name, count_text(m.particles),
-                         m.exact ? "" : " (estimated on a sample of its region)", particle_state_copies,
-                         m.state_bytes, m.bytes_per_particle - m.state_bytes, format_bytes(m.bytes()));
+                         m.exact ? "" : " (estimated on a sample of its region)", particle_state_copies, m.state_bytes,
+                         m.bytes_per_particle - m.state_bytes, format_bytes(m.bytes()));
   const BodyDescription& bd = scene.bodies[worst];
   std::string ppc = std::to_string(bd.particles_per_cell[0]);
   for (int d = 1; d < scene.dimension; ++d) ppc += " x " + std::to_string(bd.particles_per_cell[d]);
-  throw SceneError(locate_body_key(scene, bd.where, "particles_per_cell"), fmt::format("bodies[{}].particles_per_cell", worst),
+  throw SceneError(locate_body_key(scene, bd.where, "particles_per_cell"),
+                   fmt::format("bodies[{}].particles_per_cell", worst),
                    fmt::format("the scene needs about {} of memory ({}{}; {:.0f} copies of the particle state: the "
                                "state, the stability guard's snapshot and the sort's scratch), {}: use fewer "
                                "particles per cell (now {}) or a larger grid.cell_size",

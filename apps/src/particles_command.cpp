@@ -60,11 +60,12 @@ void check_fill_memory(const ParticlesOptions& o, const geometry::Region<Dim>& r
   const double bytes = count.count * elements * per_particle;
   const MemoryBudget budget = available_memory();
   if (bytes > budget.bytes)
-    throw UsageError(fmt::format("--ppc {} with cells of {:g} m makes about {:.3g} particles{}, about {} of memory; "
-                                 "{} available ({}): use a smaller --ppc or a larger --spacing",
-                                 o.particles_per_cell, grid.h[0], count.count * elements,
-                                 count.exact ? "" : " (estimated on a sample of the input)", format_bytes(bytes),
-                                 format_bytes(budget.bytes), budget.source));
+    throw UsageError(
+        fmt::format("--ppc {} with cells of {:g} m makes about {:.3g} particles{}, about {} of memory; "
+                    "{} available ({}): use a smaller --ppc or a larger --spacing",
+                    o.particles_per_cell, grid.h[0], count.count * elements,
+                    count.exact ? "" : " (estimated on a sample of the input)", format_bytes(bytes),
+                    format_bytes(budget.bytes), budget.source));
 }
 
 /// Particles of an input file on a grid: the scene's or one of `spacing` around the input.
@@ -91,8 +92,8 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
       origin[d] = (std::floor(box.lo[d] / h[d]) - 1) * h[d];
       const double n = std::ceil(box.hi[d] / h[d]) + 1 - std::floor(box.lo[d] / h[d]) + 1;
       if (!(n <= 1e9))
-        throw UsageError(fmt::format("--spacing {:g} m makes {:.3g} cells on an axis of the input (at most 1e9)",
-                                     *o.spacing, n));
+        throw UsageError(
+            fmt::format("--spacing {:g} m makes {:.3g} cells on an axis of the input (at most 1e9)", *o.spacing, n));
       cells[d] = static_cast<int>(n);
     }
   }

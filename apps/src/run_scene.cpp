@@ -9,8 +9,8 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/memory_estimate.hpp"
+#include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_description.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/app/step_estimate.hpp"
@@ -89,8 +89,7 @@ void check(const SceneDescription& scene, std::ostream& out) {
   const MemoryEstimate memory = estimate_memory<Dim>(scene, sim->grid().geometry, true);
   const MemoryBudget budget = available_memory();
   fmt::print(out, "memory: about {} estimated before building ({:.4g} particles, {} grid nodes), {} available ({})\n",
-             format_bytes(memory.bytes()), memory.particles(), memory.nodes, format_bytes(budget.bytes),
-             budget.source);
+             format_bytes(memory.bytes()), memory.particles(), memory.nodes, format_bytes(budget.bytes), budget.source);
 }
 
 /// The command line's changes to the scene, as "key: value" lines (recorded in the output files).

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <iostream>
 
+#include "mpm/app/key_location.hpp"
+#include "mpm/app/memory_estimate.hpp"
+#include "mpm/app/step_estimate.hpp"
 #include "mpm/axisymmetric.hpp"
 #include "mpm/cpdi_corner_tracking.hpp"
 #include "mpm/expression.hpp"
@@ -14,9 +17,6 @@
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/shape_filler.hpp"
-#include "mpm/app/key_location.hpp"
-#include "mpm/app/memory_estimate.hpp"
-#include "mpm/app/step_estimate.hpp"
 #include "mpm/history/history_kind.hpp"
 #include "mpm/material_registry.hpp"
 #include "mpm/memory_budget.hpp"

@@ -59,9 +59,10 @@ StepEstimate estimate_steps(const SceneDescription& scene, const Simulation<Dim>
   if (passes > max_crossings) {
     e.key = "solver.end_time";
     e.where = locate_key(scene, {"solver", "end_time"});
-    e.reason = fmt::format("end_time = {:.6g} s is {:.3g} times the {:.3g} s a wave at {:.4g} m/s takes to cross the "
-                           "grid",
-                           scene.solver.end_time, passes, extent / g.speed, g.speed);
+    e.reason = fmt::format(
+        "end_time = {:.6g} s is {:.3g} times the {:.3g} s a wave at {:.4g} m/s takes to cross the "
+        "grid",
+        scene.solver.end_time, passes, extent / g.speed, g.speed);
   } else if (scene.solver.dt) {
     e.key = "solver.dt";
     e.where = scene.solver.dt_where;
@@ -75,18 +76,19 @@ StepEstimate estimate_steps(const SceneDescription& scene, const Simulation<Dim>
     if (g.velocity > g.speed - g.velocity) {  // the body's speed, not its material's wave speed, governs
       e.key = fmt::format("bodies[{}].velocity", g.body);
       e.where = locate_body_key(scene, bd.where, "velocity");
-      e.reason = fmt::format("the CFL bound h / (c + |v|) (eq. 2.73) is governed by the velocity of body '{}': "
-                             "|v_{}| = {:.4g} m/s, c = {:.4g} m/s",
-                             bd.name, axis, g.velocity, g.speed - g.velocity);
+      e.reason = fmt::format(
+          "the CFL bound h / (c + |v|) (eq. 2.73) is governed by the velocity of body '{}': "
+          "|v_{}| = {:.4g} m/s, c = {:.4g} m/s",
+          bd.name, axis, g.velocity, g.speed - g.velocity);
     } else {
       const auto& material = scene.materials.at(bd.material);
       const auto density = material.parameters.find("density");
       e.key = fmt::format("materials.{}.density", bd.material);
       e.where = locate_key(scene, {"materials", bd.material, "density"});
-      e.reason = fmt::format("the CFL bound h / (c + |v|) (eq. 2.73) is governed by the wave speed of material '{}' "
-                             "of body '{}': c = {:.4g} m/s with density {:.6g} kg/m^3",
-                             bd.material, bd.name, g.speed - g.velocity,
-                             density != material.parameters.end() ? density->second : 0.0);
+      e.reason = fmt::format(
+          "the CFL bound h / (c + |v|) (eq. 2.73) is governed by the wave speed of material '{}' "
+          "of body '{}': c = {:.4g} m/s with density {:.6g} kg/m^3",
+          bd.material, bd.name, g.speed - g.velocity, density != material.parameters.end() ? density->second : 0.0);
     }
   }
   return e;
@@ -105,11 +107,12 @@ std::string step_warning(const StepEstimate& e) {
 void check_time_step(const StepEstimate& e, const SceneDescription& scene) {
   const double end = scene.solver.end_time;
   if (e.dt > 0 && std::isfinite(e.dt) && end + e.dt > end) return;
-  const std::string what = !(e.dt > 0)          ? "is 0"
+  const std::string what = !(e.dt > 0)            ? "is 0"
                            : !std::isfinite(e.dt) ? "is not finite"
-                                                  : fmt::format("is too small to advance the time at end_time = {:.6g} s "
-                                                                "(end_time + dt == end_time in double precision)",
-                                                                end);
+                                                  : fmt::format(
+                                                        "is too small to advance the time at end_time = {:.6g} s "
+                                                        "(end_time + dt == end_time in double precision)",
+                                                        end);
   throw SceneError(e.where, e.key, fmt::format("the time step dt = {:.6g} s {}: {}", e.dt, what, e.reason));
 }
 

@@ -29,8 +29,8 @@ class Draw {
 enum class Mutation { delete_line, duplicate_line, extreme_number, wrong_type, truncate, flip_byte, swap_lines };
 
 inline const char* mutation_name(Mutation m) {
-  constexpr const char* names[] = {"delete line",  "duplicate line", "extreme number", "wrong type",
-                                   "truncate",     "flip byte",      "swap lines"};
+  constexpr const char* names[] = {"delete line", "duplicate line", "extreme number", "wrong type",
+                                   "truncate",    "flip byte",      "swap lines"};
   return names[static_cast<int>(m)];
 }
 
@@ -64,9 +64,9 @@ inline std::vector<std::pair<std::size_t, std::size_t>> numbers_in(const std::st
       continue;
     }
     std::size_t j = i + 1;
-    while (j < line.size() && (std::isdigit(static_cast<unsigned char>(line[j])) || line[j] == '.' ||
-                               line[j] == 'e' || line[j] == 'E' ||
-                               ((line[j] == '-' || line[j] == '+') && (line[j - 1] == 'e' || line[j - 1] == 'E'))))
+    while (j < line.size() &&
+           (std::isdigit(static_cast<unsigned char>(line[j])) || line[j] == '.' || line[j] == 'e' || line[j] == 'E' ||
+            ((line[j] == '-' || line[j] == '+') && (line[j - 1] == 'e' || line[j - 1] == 'E'))))
       ++j;
     found.emplace_back(i, j);
     i = j;
@@ -76,18 +76,30 @@ inline std::vector<std::pair<std::size_t, std::size_t>> numbers_in(const std::st
 
 /// The values a number is replaced with: limits of double, zero and signs, huge counts, non-numbers.
 inline const std::vector<std::string>& extreme_numbers() {
-  static const std::vector<std::string> values{
-      "0",    "-0",   "-1",     "1e308",  "-1e308", "5e-324", "-5e-324",   "1e-300",     "1e300", "1e6",
-      "1e9",  "1e12", "1e-9",   "1e-15",  ".nan",   ".inf",   "-.inf",     "2147483648", "0x10",  "1e400",
-      "nan",  "inf",  "1.5",    "-1e-9",  "3",      "100",    "101",       "1e200",      "x/0",   "0/0",
-      "1e-6", "7",    "99999", "123456789012345678901234567890"};
+  static const std::vector<std::string> values{"0",       "-0",
+                                               "-1",      "1e308",
+                                               "-1e308",  "5e-324",
+                                               "-5e-324", "1e-300",
+                                               "1e300",   "1e6",
+                                               "1e9",     "1e12",
+                                               "1e-9",    "1e-15",
+                                               ".nan",    ".inf",
+                                               "-.inf",   "2147483648",
+                                               "0x10",    "1e400",
+                                               "nan",     "inf",
+                                               "1.5",     "-1e-9",
+                                               "3",       "100",
+                                               "101",     "1e200",
+                                               "x/0",     "0/0",
+                                               "1e-6",    "7",
+                                               "99999",   "123456789012345678901234567890"};
   return values;
 }
 
 /// A value of another YAML type than the one expected.
 inline const std::vector<std::string>& wrong_types() {
-  static const std::vector<std::string> values{"[1, 2]", "{a: 1}", "\"text\"", "~",     "",      "[]",
-                                               "{}",     "true",   "[[1]]",    "- 1",   "&a 1",  "*a",
+  static const std::vector<std::string> values{"[1, 2]", "{a: 1}", "\"text\"",     "~",   "",      "[]",
+                                               "{}",     "true",   "[[1]]",        "- 1", "&a 1",  "*a",
                                                "!!str",  "'",      "[1, 2, 3, 4]", "abc", "{x: [", ": :"};
   return values;
 }

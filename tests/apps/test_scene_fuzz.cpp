@@ -76,8 +76,7 @@ TEST(SceneFuzz, EveryMutatedSceneIsValidOrRefused) {
     std::ofstream(scene, std::ios::binary) << text;
     const fs::path out = dir / "out";
     std::vector<std::pair<std::string, std::string>> commands{{"check", "check " + scene.string()}};
-    if (c % 4 == 0)
-      commands.emplace_back("run", "run " + scene.string() + " --steps 2 --threads 1 -o " + out.string());
+    if (c % 4 == 0) commands.emplace_back("run", "run " + scene.string() + " --steps 2 --threads 1 -o " + out.string());
     for (const auto& [name, args] : commands) {
       const int status = run_with_timeout(args, dir, name == "check" ? 10 : 20);
       ++outcomes[name + " " + describe(status)];
@@ -89,7 +88,8 @@ TEST(SceneFuzz, EveryMutatedSceneIsValidOrRefused) {
         fs::create_directories(keep);
         std::ofstream(fs::path(keep) / ("case_" + std::to_string(c) + "_" + original.stem().string() + ".yaml"),
                       std::ios::binary)
-            << "# " << failures.back().substr(0, failures.back().find('\n')) << "\n" << text;
+            << "# " << failures.back().substr(0, failures.back().find('\n')) << "\n"
+            << text;
       }
     }
     fs::remove(scene);

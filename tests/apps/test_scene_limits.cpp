@@ -69,8 +69,7 @@ TEST(SceneLimits, TaylorAnvilAtAHundredParticlesPerCellIsRefusedWithItsEstimate)
 
 TEST(SceneLimits, ImageImpactWithANanometreCellIsRefusedAtTheCellSize) {
   const auto dir = scratch("limits_cell");
-  const fs::path scene =
-      changed_example(dir, "08_image_impact", "scene.yaml", "cell_size: 0.5e-3", "cell_size: 1e-9");
+  const fs::path scene = changed_example(dir, "08_image_impact", "scene.yaml", "cell_size: 0.5e-3", "cell_size: 1e-9");
   const auto r = mpm("check " + scene.string(), dir);
   EXPECT_EQ(r.status, 2) << r.err;  // it was std::bad_alloc, exit 1
   EXPECT_NE(r.err.find("scene.yaml:9:14: grid.cell_size: the grid alone needs about"), std::string::npos) << r.err;
@@ -122,8 +121,7 @@ TEST(SceneLimits, NeckingWithANanoDensityWarnsAtTheDensity) {
   ASSERT_EQ(before.status, 0) << before.err;
   EXPECT_EQ(before.out.find("warning"), std::string::npos) << before.out;  // no false alarm
   const double steps = number_after(before.out, "about ");
-  const fs::path scene =
-      changed_example(dir, "06_tensile_necking", "scene.yaml", "density: 7750 ", "density: 1e-9 ");
+  const fs::path scene = changed_example(dir, "06_tensile_necking", "scene.yaml", "density: 7750 ", "density: 1e-9 ");
   const auto r = mpm("check " + scene.string(), dir);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("warning: " + scene.string() + ":14:14: materials.weldox_460e.density: about "),
