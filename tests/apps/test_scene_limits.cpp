@@ -87,7 +87,7 @@ TEST(SceneLimits, AnAddressSpaceLimitIsObeyedAndNamed) {
                                      "poisson_ratio: 0.3}}\n"
                                      "bodies: [{material: m, shape: {type: box, min: [0, 0], max: [1, 1]}, "
                                      "particles_per_cell: 4}]\n"
-                                     "solver: {end_time: 0.01}\n";
+                                     "solver: {end_time: 0.01, cfl: 0.5}\n";
   const std::string cmd = "ulimit -v 3000000 && " + std::string(MPM_EXECUTABLE) + " check " +
                           (dir / "big.yaml").string() + " > " + (dir / "stdout").string() + " 2> " +
                           (dir / "stderr").string() + " < /dev/null";
@@ -154,11 +154,11 @@ TEST(SceneLimits, TheWarningNamesTheVelocityOrTheEndTimeWhenTheyGovern) {
   std::ofstream(dir / "long.yaml") << block("[0, 0]", "1.0e6");
   r = mpm("check " + (dir / "long.yaml").string(), dir);
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("long.yaml:5:20: solver.end_time: about"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("long.yaml:5:30: solver.end_time: about"), std::string::npos) << r.out;
   // `mpm run` says it at the start too.
   r = mpm("run " + (dir / "long.yaml").string() + " --steps 1 -o " + (dir / "out").string(), dir);
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.err.find("warning: " + (dir / "long.yaml").string() + ":5:20: solver.end_time: about"), 0u) << r.err;
+  EXPECT_EQ(r.err.find("warning: " + (dir / "long.yaml").string() + ":5:30: solver.end_time: about"), 0u) << r.err;
   fs::remove_all(dir);
 }
 
@@ -173,6 +173,11 @@ TEST(SceneLimits, ParticlesCommandIsBounded) {
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("--ppc must be between 1 and 100"), std::string::npos) << r.err;
   r = mpm("particles " + stl.string() + " --spacing 1e-9 -o " + (dir / "p.vtu").string(), dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--spacing 1e-09 m makes 7.6e+09 cells on an axis of the input (at most 1e9)"),
+            std::string::npos)
+      << r.err;
+  r = mpm("particles " + stl.string() + " --spacing 1e-5 -o " + (dir / "p.vtu").string(), dir);  // ~1e17 particles
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("use a smaller --ppc or a larger --spacing"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "p.vtu"));
