@@ -12,11 +12,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <optional>
 
 #include "mpm/app/checkpoint_command.hpp"
 #include "mpm/app/diff_command.hpp"
 #include "mpm/app/modules.hpp"
+#include "mpm/app/out_of_memory.hpp"
 #include "mpm/app/particles_command.hpp"
 #include "mpm/app/reference_command.hpp"
 #include "mpm/app/run_checkpoints.hpp"
@@ -51,6 +53,7 @@ std::string check_end_time(const std::string& text) {
 
 int main(int argc, char** argv) {
   using namespace mpm::app;
+  install_terminate_handler();  // an exception escaping a worker thread: a message, not "terminate called..."
   CLI::App cli{"mpm: explicit material point method (USL, MUSL, USF, TLMPM) with YAML scenes and ParaView output"};
   cli.set_version_flag("--version", std::string("mpm ") + MPM_VERSION);
   cli.require_subcommand(1);
@@ -197,6 +200,9 @@ int main(int argc, char** argv) {
   } catch (const mpm::StabilityError& e) {
     std::cerr << "error: " << e.what() << "\nThe last good state was written to the output.\n";
     return exit_unstable;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: " << out_of_memory_message() << '\n';
+    return exit_runtime_error;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_runtime_error;

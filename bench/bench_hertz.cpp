@@ -7,48 +7,25 @@
 #include <tbb/global_control.h>
 
 #include <cstdio>
-#include <iostream>
-#include <stdexcept>
 #include <string>
 
+#include "bench_options.hpp"
 #include "hertz_sphere.hpp"
 
 int main(int argc, char** argv) {
   mpm::verification::HertzSpec spec;
   spec.cells_per_radius = 160;
   int threads = 1;
-  try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string a = argv[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-        return argv[++i];
-      };
-      if (a == "--cells")
-        spec.cells_per_radius = std::stoi(value());
-      else if (a == "--scheme")
-        spec.scheme = value();
-      else if (a == "--shape")
-        spec.shape_function = value();
-      else if (a == "--onset")
-        spec.onset = value();
-      else if (a == "--ppc")
-        spec.particles_per_cell = std::stoi(value());
-      else if (a == "--threads")
-        threads = std::stoi(value());
-      else if (a == "-h" || a == "--help") {
-        std::cout << "usage: bench_hertz [--cells N] [--scheme S] [--shape F] [--onset grid|particle_gap] [--ppc N] "
-                     "[--threads N]\n";
-        return 0;
-      } else
-        throw std::invalid_argument("unknown option " + a);
-    }
-    if (threads < 1) throw std::invalid_argument("--threads must be >= 1");
-    if (spec.cells_per_radius < 4) throw std::invalid_argument("--cells must be >= 4");
-  } catch (const std::exception& e) {
-    std::cerr << "bench_hertz: " << e.what() << "\n";
-    return 2;
-  }
+  mpm::bench::BenchOptions cli(
+      "bench_hertz", "[--cells N] [--scheme S] [--shape F] [--onset grid|particle_gap] [--ppc N] [--threads N]");
+  cli.option("--cells", spec.cells_per_radius)
+      .option("--scheme", spec.scheme)
+      .option("--shape", spec.shape_function)
+      .option("--onset", spec.onset)
+      .option("--ppc", spec.particles_per_cell)
+      .threads(threads)
+      .require([&] { return spec.cells_per_radius >= 4; }, "--cells must be >= 4");
+  if (const auto status = cli.parse(argc, argv)) return *status;
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   const auto r = mpm::verification::run_hertz_sphere(spec);
   if (!r.failure.empty()) std::fprintf(stderr, "stopped: %s\n", r.failure.c_str());

@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <stdexcept>
 #include <string>
 
+#include "bench_options.hpp"
 #include "tensile_necking.hpp"
 
 int main(int argc, char** argv) {
@@ -21,39 +21,18 @@ int main(int argc, char** argv) {
   int threads = 1;
   std::string csv;
   bool print_scene = false;
-  try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string a = argv[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-        return argv[++i];
-      };
-      if (a == "--shape")
-        spec.shape_function = value();
-      else if (a == "--h")
-        spec.h = std::stod(value());
-      else if (a == "--v-max")
-        spec.v_max = std::stod(value());
-      else if (a == "--tau")
-        spec.tau = std::stod(value());
-      else if (a == "--threads")
-        threads = std::stoi(value());
-      else if (a == "--csv")
-        csv = value();
-      else if (a == "--print-scene")
-        print_scene = true;
-      else if (a == "-h" || a == "--help") {
-        std::cout << "usage: bench_necking [--shape linear|cubic_bspline|bernstein] [--h M] [--v-max M/S] [--tau S] "
-                     "[--threads N] [--csv FILE] [--print-scene]\n";
-        return 0;
-      } else
-        throw std::invalid_argument("unknown option " + a);
-    }
-    if (threads < 1) throw std::invalid_argument("--threads must be >= 1");
-  } catch (const std::exception& e) {
-    std::cerr << "bench_necking: " << e.what() << "\n";
-    return 2;
-  }
+  mpm::bench::BenchOptions cli(
+      "bench_necking",
+      "[--shape linear|cubic_bspline|bernstein] [--h M] [--v-max M/S] [--tau S] [--threads N] [--csv FILE] "
+      "[--print-scene]");
+  cli.option("--shape", spec.shape_function)
+      .option("--h", spec.h)
+      .option("--v-max", spec.v_max)
+      .option("--tau", spec.tau)
+      .threads(threads)
+      .option("--csv", csv)
+      .flag("--print-scene", print_scene);
+  if (const auto status = cli.parse(argc, argv)) return *status;
   if (print_scene) {
     std::cout << mpm::tensile_necking_scene(spec);
     return 0;

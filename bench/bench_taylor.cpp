@@ -15,9 +15,9 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <stdexcept>
 #include <string>
 
+#include "bench_options.hpp"
 #include "taylor_anvil.hpp"
 
 int main(int argc, char** argv) {
@@ -26,47 +26,16 @@ int main(int argc, char** argv) {
   int threads = 1;
   std::string csv;
   bool print_scene = false;
-  try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string a = argv[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-        return argv[++i];
-      };
-      if (a == "--scheme")
-        spec.scheme = value();
-      else if (a == "--shape")
-        spec.shape_function = value();
-      else if (a == "--h")
-        spec.h = std::stod(value());
-      else if (a == "--ppc")
-        spec.particles_per_cell = std::stoi(value());
-      else if (a == "--cfl")
-        spec.cfl = std::stod(value());
-      else if (a == "--C")
-        spec.strain_rate_coefficient = std::stod(value());
-      else if (a == "--threads")
-        threads = std::stoi(value());
-      else if (a == "--output")
-        spec.output_directory = value();
-      else if (a == "--csv")
-        csv = value();
-      else if (a == "--print-scene")
-        print_scene = true;
-      else if (a == "--axisymmetric")
-        spec.axisymmetric = true;
-      else if (a == "-h" || a == "--help") {
-        std::cout << "usage: bench_taylor [--scheme tlmpm|musl|usl] [--shape linear|cubic_bspline] [--h M] [--ppc N] "
-                     "[--cfl F] [--C C] [--axisymmetric] [--threads N] [--output DIR] [--csv FILE] [--print-scene]\n";
-        return 0;
-      } else
-        throw std::invalid_argument("unknown option " + a);
-    }
-    if (threads < 1) throw std::invalid_argument("--threads must be >= 1");
-  } catch (const std::exception& e) {
-    std::cerr << "bench_taylor: " << e.what() << "\n";
-    return 2;
-  }
+  mpm::bench::BenchOptions cli("bench_taylor",
+                               "[--scheme tlmpm|musl|usl] [--shape linear|cubic_bspline] [--h M] [--ppc N] [--cfl F] "
+                               "[--C C] [--axisymmetric] [--threads N] [--output DIR] [--csv FILE] [--print-scene]");
+  method_options(cli, spec)
+      .option("--C", spec.strain_rate_coefficient)
+      .threads(threads)
+      .option("--csv", csv)
+      .flag("--print-scene", print_scene)
+      .flag("--axisymmetric", spec.axisymmetric);
+  if (const auto status = cli.parse(argc, argv)) return *status;
   if (print_scene) {  // the scene file of this configuration, for `mpm run` (ParaView frames)
     std::cout << mpm::taylor_anvil_scene(spec);
     return 0;

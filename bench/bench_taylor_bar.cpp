@@ -11,52 +11,20 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
-#include <stdexcept>
 #include <string>
 
+#include "bench_options.hpp"
 #include "taylor_bar.hpp"
 
 int main(int argc, char** argv) {
   mpm::TaylorBarSpec spec;
   int threads = 1;
   bool print_scene = false;
-  try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string a = argv[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-        return argv[++i];
-      };
-      if (a == "--scheme")
-        spec.scheme = value();
-      else if (a == "--shape")
-        spec.shape_function = value();
-      else if (a == "--model")
-        spec.model = value();
-      else if (a == "--h")
-        spec.h = std::stod(value());
-      else if (a == "--ppc")
-        spec.particles_per_cell = std::stoi(value());
-      else if (a == "--cfl")
-        spec.cfl = std::stod(value());
-      else if (a == "--threads")
-        threads = std::stoi(value());
-      else if (a == "--output")
-        spec.output_directory = value();
-      else if (a == "--print-scene")
-        print_scene = true;
-      else if (a == "-h" || a == "--help") {
-        std::cout << "usage: bench_taylor_bar [--scheme S] [--shape F] [--model hencky_j2|j2_plasticity] [--h M] "
-                     "[--ppc N] [--cfl F] [--threads N] [--output DIR] [--print-scene]\n";
-        return 0;
-      } else
-        throw std::invalid_argument("unknown option " + a);
-    }
-    if (threads < 1) throw std::invalid_argument("--threads must be >= 1");
-  } catch (const std::exception& e) {
-    std::cerr << "bench_taylor_bar: " << e.what() << "\n";
-    return 2;
-  }
+  mpm::bench::BenchOptions cli("bench_taylor_bar",
+                               "[--scheme S] [--shape F] [--model hencky_j2|j2_plasticity] [--h M] [--ppc N] [--cfl F] "
+                               "[--threads N] [--output DIR] [--print-scene]");
+  method_options(cli, spec).option("--model", spec.model).threads(threads).flag("--print-scene", print_scene);
+  if (const auto status = cli.parse(argc, argv)) return *status;
   if (print_scene) {
     std::cout << mpm::taylor_bar_scene(spec);
     return 0;

@@ -16,10 +16,13 @@
 #include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
+#include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/io/vtk_writer.hpp"
+#include "mpm/memory_budget.hpp"
 #include "mpm/particle_domain_mesh.hpp"
 #include "mpm/scene_error.hpp"
+#include "mpm/scene_limits.hpp"
 #include "mpm/scene_loader.hpp"
 
 namespace mpm::app {
@@ -45,6 +48,26 @@ void push_point(std::vector<double>& out, const Vec<Dim>& x) {
   for (int d = 0; d < 3; ++d) out.push_back(d < Dim ? x[d] : 0.0);
 }
 
+/// Refuses a fill that cannot fit in memory before it is made: the particle count of the region's lattice (on a
+/// sample, geometry/particle_count.hpp) times what this command keeps per particle (position and volume, then the
+/// .vtu's points and three fields, 3 x 8 + 3 x 8 B, and CPDI corners), against the memory available.
+template <int Dim>
+void check_fill_memory(const ParticlesOptions& o, const geometry::Region<Dim>& region, const GridGeometry<Dim>& grid,
+                       const std::array<int, 3>& ppc) {
+  const auto count = geometry::count_particles<Dim>(region, grid, ppc);
+  const double elements = o.domains.empty() ? 1 : (Dim == 2 ? 2 : 6);
+  const double per_particle = (Dim + 1) * 8.0 + 48 + (o.domains.empty() ? 0 : (Dim + 1) * Dim * 8.0 * 2);
+  const double bytes = count.count * elements * per_particle;
+  const MemoryBudget budget = available_memory();
+  if (bytes > budget.bytes)
+    throw UsageError(
+        fmt::format("--ppc {} with cells of {:g} m makes about {:.3g} particles{}, about {} of memory; "
+                    "{} available ({}): use a smaller --ppc or a larger --spacing",
+                    o.particles_per_cell, grid.h[0], count.count * elements,
+                    count.exact ? "" : " (estimated on a sample of the input)", format_bytes(bytes),
+                    format_bytes(budget.bytes), budget.source));
+}
+
 /// Particles of an input file on a grid: the scene's or one of `spacing` around the input.
 template <int Dim>
 std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape,
@@ -67,11 +90,16 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
     for (int d = 0; d < Dim; ++d) {
       h[d] = *o.spacing;
       origin[d] = (std::floor(box.lo[d] / h[d]) - 1) * h[d];
-      cells[d] = static_cast<int>(std::ceil(box.hi[d] / h[d]) + 1 - std::floor(box.lo[d] / h[d]) + 1);
+      const double n = std::ceil(box.hi[d] / h[d]) + 1 - std::floor(box.lo[d] / h[d]) + 1;
+      if (!(n <= 1e9))
+        throw UsageError(
+            fmt::format("--spacing {:g} m makes {:.3g} cells on an axis of the input (at most 1e9)", *o.spacing, n));
+      cells[d] = static_cast<int>(n);
     }
   }
   const GridGeometry<Dim> grid(origin, h, cells);
   const std::array<int, 3> ppc{o.particles_per_cell, o.particles_per_cell, o.particles_per_cell};
+  check_fill_memory<Dim>(o, *region, grid, ppc);
   const auto seeds = geometry::fill_shape<Dim>(shape, grid, ppc, &warnings);
   if (seeds.positions.empty())
     throw geometry::GeometryError(o.input, "no particle: the body is smaller than a particle spacing");
@@ -154,7 +182,9 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
   if (!o.input.empty() && o.scene.empty() && !o.spacing)
     throw UsageError("give the grid: --spacing H (cell size, m) or --scene SCENE");
   if (o.spacing && !o.scene.empty()) throw UsageError("give either --spacing or --scene, not both");
-  if (o.particles_per_cell < 1) throw UsageError("--ppc must be >= 1");
+  if (o.particles_per_cell < 1 || o.particles_per_cell > max_particles_per_cell)
+    throw UsageError(fmt::format("--ppc must be between 1 and {} (particles per cell per axis), got {}",
+                                 max_particles_per_cell, o.particles_per_cell));
   std::optional<SceneDescription> scene;
   if (!o.scene.empty()) {
     register_modules();

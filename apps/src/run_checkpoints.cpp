@@ -8,6 +8,7 @@
 
 #include "mpm/checkpoint/checkpoint_file.hpp"
 #include "mpm/checkpoint/checksum.hpp"
+#include "mpm/due_time.hpp"
 #include "mpm/scene_error.hpp"
 
 namespace mpm::app {
@@ -63,8 +64,7 @@ bool RunCheckpoints::due(double time) const {
 }
 
 fs::path RunCheckpoints::write(StateArchive& archive, long long step, double time) {
-  if (settings_.interval)
-    while (next_time_ <= time * (1 + 1e-12)) next_time_ += *settings_.interval;
+  if (settings_.interval) next_time_ = next_due_time(next_time_, *settings_.interval, time * (1 + 1e-12));
   last_wall_ = Clock::now();
   archive.put_integer("run/format", checkpoint_format);
   archive.put_text("run/program_version", MPM_VERSION);

@@ -9,11 +9,14 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "mpm/app/memory_estimate.hpp"
 #include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_description.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/app/step_estimate.hpp"
 #include "mpm/app/stop_signals.hpp"
 #include "mpm/history/history_writer.hpp"
+#include "mpm/memory_budget.hpp"
 #include "mpm/output_writer.hpp"
 
 namespace mpm::app {
@@ -70,6 +73,8 @@ void check(const SceneDescription& scene, std::ostream& out) {
   std::vector<std::string> warnings;
   build_histories<Dim>(scene, *sim, warnings);  // what only the built bodies can refuse
   for (const auto& w : warnings) fmt::print(out, "warning: {}\n", w);
+  if (const std::string w = step_warning(estimate_steps<Dim>(scene, *sim)); !w.empty())
+    fmt::print(out, "warning: {}\n", w);
   const Real dt = sim->next_time_step();
   fmt::print(out,
              "{}: valid. {}D{}, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
@@ -81,6 +86,10 @@ void check(const SceneDescription& scene, std::ostream& out) {
              sim->particle_count(), sim->bodies().size(), sim->grid().size(), enum_name(scene.solver.scheme),
              scene.solver.shape_function, dt, sim->stable_time_step(), sim->time_step_limiter(),
              static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
+  const MemoryEstimate memory = estimate_memory<Dim>(scene, sim->grid().geometry, true);
+  const MemoryBudget budget = available_memory();
+  fmt::print(out, "memory: about {} estimated before building ({:.4g} particles, {} grid nodes), {} available ({})\n",
+             format_bytes(memory.bytes()), memory.particles(), memory.nodes, format_bytes(budget.bytes), budget.source);
 }
 
 /// The command line's changes to the scene, as "key: value" lines (recorded in the output files).
@@ -109,6 +118,8 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   auto sim = build_simulation<Dim>(scene);
   RunSummary summary;
   auto built_histories = build_histories<Dim>(scene, *sim, summary.warnings);  // output.histories
+  if (std::string w = step_warning(estimate_steps<Dim>(scene, *sim)); !w.empty())
+    summary.warnings.insert(summary.warnings.begin(), std::move(w));  // a time step collapsed by a typo
   for (const auto& w : summary.warnings) fmt::print(log, "warning: {}\n", w);
   const auto& o = scene.output;
   const std::filesystem::path directory = options.output_directory.value_or(o.directory);

@@ -3,8 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
+#include "mpm/app/key_location.hpp"
+#include "mpm/app/memory_estimate.hpp"
+#include "mpm/app/step_estimate.hpp"
 #include "mpm/axisymmetric.hpp"
 #include "mpm/cpdi_corner_tracking.hpp"
 #include "mpm/expression.hpp"
@@ -15,6 +19,7 @@
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/history/history_kind.hpp"
 #include "mpm/material_registry.hpp"
+#include "mpm/memory_budget.hpp"
 #include "mpm/output_fields.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
@@ -155,6 +160,19 @@ bool add_domain_fields(Body<Dim>& body, const SceneDescription& scene, const Bod
   return track_corners;
 }
 
+/// The on-demand fields a run of the scene adds to a body besides its particle domains: APIC's affine velocity,
+/// the axisymmetric hoop fields, what the output and the histories read, the material's history.
+template <int Dim>
+void add_run_fields(Body<Dim>& body, const SceneDescription& scene, const GridGeometry<Dim>& geometry) {
+  if (scene.solver.velocity_transfer == VelocityTransfer::apic)
+    body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
+  if constexpr (Dim == 2)
+    if (geometry.coordinates == Coordinates::axisymmetric) axisym::add_hoop_fields(body.particles);  // F_tt, L_tt
+  prepare_output_fields<Dim>(scene.output.fields, body);                  // what the output reads (displacement: X_p)
+  prepare_output_fields<Dim>(history_output_fields(scene.output), body);  // and what the histories read
+  body.material->prepare_particles(body.particles);  // the model's history fields (plasticity), if any
+}
+
 /// Body `index` of the scene: material, particles, and every on-demand field its run needs (domains, APIC,
 /// the output's, the material's history); `track_corners` is set when its CPDI corners are tracked.
 template <int Dim>
@@ -182,13 +200,7 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   add_particles<Dim>(body, bd, elements);
   if (seed) apply_seed_state(body, *seed);
   track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
-  if (scene.solver.velocity_transfer == VelocityTransfer::apic)
-    body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
-  if constexpr (Dim == 2)
-    if (geometry.coordinates == Coordinates::axisymmetric) axisym::add_hoop_fields(body.particles);  // F_tt, L_tt
-  prepare_output_fields<Dim>(scene.output.fields, body);                  // what the output reads (displacement: X_p)
-  prepare_output_fields<Dim>(history_output_fields(scene.output), body);  // and what the histories read
-  body.material->prepare_particles(body.particles);  // the model's history fields (plasticity), if any
+  add_run_fields<Dim>(body, scene, geometry);
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
   return body;
 }
@@ -228,11 +240,54 @@ void check_fixed_time_step(const SceneDescription& scene, const Simulation<Dim>&
                                  *fixed_dt, bound, sim.time_step_limiter(), bound));
 }
 
+/// Refuses an initial state whose mass, momentum or energy is not a finite number (a density of 1e308 on the heat
+/// plate: its thermal energy m c T overflows), at the key that makes it so: the body's velocity for the kinetic
+/// energy and the momentum, solver.gravity for the potential, the material's density otherwise.
+template <int Dim>
+void check_initial_state(const SceneDescription& scene, const Simulation<Dim>& sim) {
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const EnergyBalance e = sim.body_energy(sim.bodies()[b]);
+    const BodyDescription& bd = scene.bodies[b];
+    const auto fail = [&](const SourceLocation& where, const std::string& key, const char* what) {
+      throw SceneError(where, key,
+                       fmt::format("body '{}' starts with a {} that is not a finite number in double precision "
+                                   "(mass {:.6g} kg, kinetic energy {:.6g} J, potential {:.6g} J, heat {:.6g} J)",
+                                   bd.name, what, e.mass, e.kinetic, e.gravity, e.thermal));
+    };
+    if (!std::isfinite(e.kinetic) || !e.momentum.allFinite())
+      fail(locate_body_key(scene, bd.where, "velocity"), body_key(static_cast<int>(b), "velocity"),
+           "kinetic energy or momentum");
+    if (!std::isfinite(e.gravity)) fail(locate_key(scene, {"solver", "gravity"}), "solver.gravity", "potential energy");
+    if (!std::isfinite(e.mass) || !std::isfinite(e.total()) || !std::isfinite(e.thermal))
+      fail(locate_key(scene, {"materials", bd.material, "density"}), "materials." + bd.material + ".density",
+           "mass or energy");
+  }
+}
+
 }  // namespace
+
+template <int Dim>
+std::vector<Body<Dim>> prototype_bodies(const SceneDescription& scene, const GridGeometry<Dim>& geometry) {
+  const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
+  std::vector<Body<Dim>> bodies;
+  for (int k = 0; k < static_cast<int>(scene.bodies.size()); ++k) {
+    const BodyDescription& bd = scene.bodies[k];
+    Body<Dim> body;
+    body.name = bd.name;
+    body.index = k;
+    body.material = make_material<Dim>(scene.materials.at(bd.material));
+    add_domain_fields<Dim>(body, scene, bd, geometry, shape, geometry::CpdiParticles<Dim>{});
+    add_run_fields<Dim>(body, scene, geometry);
+    bodies.push_back(std::move(body));
+  }
+  prepare_scene_extensions<Dim>(scene, bodies, geometry);  // the modules' particle fields (thermal: temperature)
+  return bodies;
+}
 
 template <int Dim>
 std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
   const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
+  check_memory<Dim>(scene, geometry, available_memory());  // before anything the size of the scene is allocated
   auto scheme = make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function,
                                  scene.grid.coordinates);
   const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
@@ -255,9 +310,14 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));
   check_fixed_time_step<Dim>(scene, *sim);
+  check_time_step(estimate_steps<Dim>(scene, *sim), scene);  // 0, infinite, or too small to reach end_time
+  check_initial_state<Dim>(scene, *sim);
   return sim;
 }
 
+template std::vector<Body<1>> prototype_bodies<1>(const SceneDescription&, const GridGeometry<1>&);
+template std::vector<Body<2>> prototype_bodies<2>(const SceneDescription&, const GridGeometry<2>&);
+template std::vector<Body<3>> prototype_bodies<3>(const SceneDescription&, const GridGeometry<3>&);
 template std::unique_ptr<Simulation<1>> build_simulation<1>(const SceneDescription&);
 template std::unique_ptr<Simulation<2>> build_simulation<2>(const SceneDescription&);
 template std::unique_ptr<Simulation<3>> build_simulation<3>(const SceneDescription&);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "mpm/due_time.hpp"
 #include "mpm/particle_domain_mesh.hpp"
 
 namespace mpm {
@@ -117,7 +118,7 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
   last_written_ = sim.time();
   ++frame_;
   if (interval_ > 0)
-    while (next_time_ <= sim.time() + 1e-9 * std::max<Real>(1, sim.settings().end_time)) next_time_ += interval_;
+    next_time_ = next_due_time(next_time_, interval_, sim.time() + 1e-9 * std::max<Real>(1, sim.settings().end_time));
 }
 
 template class OutputWriter<1>;

@@ -1,6 +1,7 @@
 // Forks (`mpm run CHANGED_SCENE --restart CHECKPOINT`): a scene that changes only run-control keys continues the
 // checkpoint, here into another output directory, and reaches the bits of a run that had those keys from the
-// start; any other change is refused with its key and line.
+// start (a changed end time) or from the checkpoint time on (a changed face velocity, against a run with a
+// time-switched expression); any other change is refused with its key and line.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -53,6 +54,80 @@ TEST(Fork, ChangedEndTimeContinuesIntoAnotherDirectory) {
   for (const auto& [key, array] : a.entries()) {
     if (key.rfind("bodies/", 0) != 0) continue;
     EXPECT_TRUE(b.at(key).bytes == array.bytes) << key;
+  }
+  if (!HasFailure()) fs::remove_all(dir);
+}
+
+/// A block on a fixed floor pressed by the top face of the grid moving down at `top` (m/s; free along x), MUSL
+/// with `flip` (the flip_fraction), checkpoint at t = 0.2 s (step 100 of dt = 0.002 s).
+std::string pressed_block(const std::string& top, const std::string& flip) {
+  return "dimension: 2\n"
+         "grid:\n"
+         "  origin: [0, 0]\n"
+         "  extent: [0.4, 0.4]\n"
+         "  cell_size: 0.05\n"
+         "  boundary: {x_min: slip, y_min: fixed, y_max: {velocity: [free, \"" +
+         top +
+         "\"]}}\n"
+         "materials: {elastic: {model: linear_elastic, density: 1000, youngs_modulus: 1000, poisson_ratio: 0.3}}\n"
+         "bodies:\n"
+         "  - {name: block, material: elastic, shape: {type: box, min: [0, 0], max: [0.2, 0.4]}}\n"
+         "solver: {scheme: musl, shape_function: linear, flip_fraction: " +
+         flip +
+         ", dt: 0.002, end_time: 0.4}\n"
+         "output:\n"
+         "  interval: 0.05\n"
+         "  fields: [velocity, stress]\n"
+         "  histories: [{name: floor, type: reaction, face: y_min}]\n" +
+         checkpoint_at(0.2);
+}
+
+TEST(Fork, ChangedFaceVelocityIsTheSwitchedExpressionFromTheCheckpointOn) {
+  // The fork continues the checkpoint at T = 0.2 s with the top face at -0.125 m/s instead of -0.0625 m/s. The
+  // run with the velocity "t <= 0.201 ? -0.0625 : -0.125" (0.201: between T and T + dt, away from the round-off
+  // of the summed time) takes the checkpoint's value at T and the new one after: in the step from T - dt to T
+  // the face ends at -0.0625 in both runs; in the step from T to T + dt it starts at -0.0625 in the expression
+  // run and at -0.125 in the fork, which only the FLIP increment (v(T + dt) - v(T) on the face nodes) and a
+  // reaction history of that face see (docs/scene-reference.md, "Restart and fork"). With PIC (flip_fraction 0)
+  // the two runs are the same bits.
+  const fs::path dir = scratch("fork_face_velocity");
+  for (const std::string flip : {"0", "1"}) {
+    const fs::path run = dir / ("flip_" + flip);
+    fs::create_directories(run);
+    std::ofstream(run / "slow.yaml") << pressed_block("-0.0625", flip);
+    std::ofstream(run / "fast.yaml") << pressed_block("-0.125", flip);
+    std::ofstream(run / "switched.yaml") << pressed_block("t <= 0.201 ? -0.0625 : -0.125", flip);
+    ASSERT_EQ(cli::mpm("run " + (run / "slow.yaml").string() + " -o " + (run / "slow").string(), run).status, 0);
+    const Result switched =
+        cli::mpm("run " + (run / "switched.yaml").string() + " -o " + (run / "switched").string(), run);
+    ASSERT_EQ(switched.status, 0) << switched.err;
+    const auto steps = checkpoint_steps(run / "slow" / "checkpoints");
+    ASSERT_EQ(steps.front(), 100);
+    const fs::path checkpoint = run / "slow" / "checkpoints" / mpm::checkpoint::checkpoint_name(steps.front());
+    const Result fork = cli::mpm(
+        "run " + (run / "fast.yaml").string() + " -o " + (run / "fork").string() + " --restart " + checkpoint.string(),
+        run);
+    ASSERT_EQ(fork.status, 0) << fork.err;
+    EXPECT_NE(fork.err.find("grid.boundary.y_max.velocity[1]: -0.0625 in the checkpoint, -0.125 now"),
+              std::string::npos)
+        << fork.err;
+    const Result diff = cli::mpm(
+        "diff " + (run / "switched").string() + " " + (run / "fork").string() + " --tolerance 0 --absolute 0", run);
+    if (flip == "0") {
+      // The same bits: every frame (t = 0 to 0.4 s) by value, energy.csv and the floor's reaction byte for byte.
+      EXPECT_EQ(diff.status, 0) << diff.out << diff.err;
+      EXPECT_EQ(slurp(run / "fork" / "energy.csv"), slurp(run / "switched" / "energy.csv"));
+      EXPECT_EQ(slurp(run / "fork" / "floor.csv"), slurp(run / "switched" / "floor.csv"));
+    } else {
+      // FLIP: the particles under the face keep the jump in the expression run (their velocity grows by
+      // sum N_I (-0.125 + 0.0625) in the step after T), not in the fork; the frames up to T are equal.
+      EXPECT_EQ(diff.status, 1) << diff.out << diff.err;
+      EXPECT_NE(diff.out.find("velocity"), std::string::npos) << diff.out;
+    }
+    // The fork really changed the face: the run at -0.0625 throughout ends elsewhere.
+    EXPECT_EQ(
+        cli::mpm("diff " + (run / "slow").string() + " " + (run / "fork").string() + " --absolute 1e-9", run).status,
+        1);
   }
   if (!HasFailure()) fs::remove_all(dir);
 }

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../libmpm/two_disks_scene.hpp"
 #include "run_mpm.hpp"
 
 namespace fs = std::filesystem;
@@ -27,26 +28,11 @@ using cli::scratch;
 using cli::slurp;
 
 /// Two elastic disks colliding under gravity above a fixed floor, with histories.
-const std::string disks = R"(dimension: 2
-grid:
-  origin: [0, 0]
-  extent: [1, 1]
-  cell_size: 0.05
-  boundary: {y_min: fixed}
-materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e5, poisson_ratio: 0.3}}
-bodies:
-  - {name: a, material: m, shape: {type: disk, center: [0.3, 0.5], radius: 0.12}, velocity: [1, 0.2]}
-  - {name: b, material: m, shape: {type: disk, center: [0.7, 0.5], radius: 0.12}, velocity: [-1, 0]}
-solver: {scheme: musl, cfl: 0.4, end_time: 0.1, gravity: [0, -9.81]}
-output:
-  interval: 0.01
-  fields: [velocity, stress, von_mises_stress]
-  histories:
-    - {name: energy_a, type: energy, body: a}
+const std::string disks = mpm::test::two_disks_scene(R"(    - {name: energy_a, type: energy, body: a}
     - {name: energy_b, type: energy, body: b}
     - {name: front, type: extent, body: a, axis: x}
     - {name: corner, type: probe, box: {min: [0.9, 0.9], max: [1.0, 1.0]}, fields: [velocity]}
-)";
+)");
 
 struct Csv {
   std::vector<std::string> columns;

@@ -2,7 +2,8 @@
 // whose value is known exactly (a linear velocity field is reproduced by the moving-least-squares point probe,
 // by the grid projection in the interior and by the box mean of a symmetric box); extents of a body in free
 // flight; the reaction of a fixed floor under a block at rest, against its weight (and the moment against the
-// weight's); per-body energies against the whole audit; and the same numbers for any thread count.
+// weight's) and its checkpointed impulse; per-body energies against the whole audit; and the same numbers for
+// any thread count.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -10,9 +11,13 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "history_fixture.hpp"
 #include "mpm/exact_sum.hpp"
+#include "two_disks_scene.hpp"
 
 namespace mpm::test {
 namespace {
@@ -216,22 +221,41 @@ TEST(Reaction, SameBitsForAnyThreadCount) {
   EXPECT_NE(rows[0][1], 0.0);
 }
 
+TEST(Reaction, ImpulseIsCheckpointedAndAWrongDimensionIsRefused) {
+  // The impulse accumulated since the last row goes into a checkpoint (History::save_state): restored into a
+  // fresh history of the same scene, the next row is the original's, bit for bit.
+  auto m = measured<2>(block_on_floor);
+  for (int k = 0; k < 25; ++k) m->sim->advance(m->sim->next_time_step());
+  StateArchive archive;
+  m->histories[0].history->save_state(archive, "histories/floor/");
+  auto restored = measured<2>(block_on_floor);
+  restored->histories[0].history->restore_state(archive, "histories/floor/");
+  const auto row = m->sample(0);
+  EXPECT_NE(row[1], 0.0);
+  EXPECT_EQ(restored->sample(0), row);
+  // An impulse of another dimension (a 3D run's three force components, or a moment that is not 3 values)
+  // does not fit a 2D history: an ArchiveError (the restart reports it as a checkpoint that does not fit).
+  for (const auto& [forces, moments] : std::vector<std::pair<std::size_t, std::size_t>>{{3, 3}, {1, 3}, {2, 1}}) {
+    StateArchive wrong = archive;
+    wrong.put_values<Real>("histories/floor/impulse_force", std::vector<Real>(forces, 1.0));
+    wrong.put_values<Real>("histories/floor/impulse_moment", std::vector<Real>(moments, 1.0));
+    try {
+      restored->histories[0].history->restore_state(wrong, "histories/floor/");
+      ADD_FAILURE() << forces << " force and " << moments << " moment components were accepted";
+    } catch (const ArchiveError& e) {
+      EXPECT_NE(std::string(e.what()).find(
+                    "'histories/floor/impulse_force': not a reaction history's impulse of this dimension"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(EnergyHistory, BodiesSumToTheAudit) {
-  auto m = measured<2>(R"(
-dimension: 2
-grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}
-materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e5, poisson_ratio: 0.3}}
-bodies:
-  - {name: a, material: m, shape: {type: disk, center: [0.3, 0.5], radius: 0.12}, velocity: [1, 0.2]}
-  - {name: b, material: m, shape: {type: disk, center: [0.7, 0.5], radius: 0.12}, velocity: [-1, 0]}
-solver: {scheme: musl, cfl: 0.4, end_time: 0.1, gravity: [0, -9.81]}
-output:
-  interval: 0.01
-  histories:
-    - {name: a, type: energy, body: a}
+  auto m = measured<2>(two_disks_scene(R"(    - {name: a, type: energy, body: a}
     - {name: b, type: energy, body: b}
     - {name: all, type: energy}
-)");
+)"));
   m->sim->run();  // the disks meet at about t = 0.07 s: strain energy in both
   const auto a = m->sample(0), b = m->sample(1), all = m->sample(2);
   const auto columns = m->columns(2);

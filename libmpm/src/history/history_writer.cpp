@@ -4,6 +4,8 @@
 #include <optional>
 #include <span>
 
+#include "mpm/due_time.hpp"
+
 namespace mpm {
 
 template <int Dim>
@@ -62,8 +64,7 @@ void HistoryWriter<Dim>::write_rows(const Simulation<Dim>& sim, bool all) {
     e.last_row = std::move(row);
     e.started = true;
     e.last_written = sim.time();
-    if (e.interval > 0)
-      while (e.next_time <= sim.time() + tolerance) e.next_time += e.interval;
+    if (e.interval > 0) e.next_time = next_due_time(e.next_time, e.interval, sim.time() + tolerance);
   }
 }
 

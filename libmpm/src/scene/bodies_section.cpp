@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpm/scene_limits.hpp"
 #include "sections.hpp"
 #include "shapes.hpp"
 
@@ -53,7 +54,13 @@ BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std:
   body.particles_per_cell = {1, 1, 1};
   if (const auto ppc = map.find("particles_per_cell")) {
     const auto counts = reader.per_axis(*ppc, dimension, "integers");
-    for (int d = 0; d < dimension; ++d) body.particles_per_cell[d] = reader.integer(counts[d], 1);
+    for (int d = 0; d < dimension; ++d) {
+      body.particles_per_cell[d] = reader.integer(counts[d], 1);
+      if (body.particles_per_cell[d] > max_particles_per_cell)
+        reader.fail(counts[d], fmt::format("at most {} particles per cell on an axis, got {} (the memory a body "
+                                           "needs is checked against the machine's before it is filled)",
+                                           max_particles_per_cell, body.particles_per_cell[d]));
+    }
   } else {
     for (int d = 0; d < dimension; ++d) body.particles_per_cell[d] = 2;
   }

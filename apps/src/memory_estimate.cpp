@@ -1,0 +1,171 @@
+#include "mpm/app/memory_estimate.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "mpm/app/key_location.hpp"
+#include "mpm/app/scene_builder.hpp"
+#include "mpm/geometry/geometry_error.hpp"
+#include "mpm/geometry/particle_count.hpp"
+#include "mpm/scene_error.hpp"
+#include "mpm/shape/shape_functions.hpp"
+
+namespace mpm::app {
+namespace {
+
+/// Whether filling the shape reads a file (a mesh, an image): its region then costs a read, and an upper bound
+/// is taken from the grid instead until a closer count is needed.
+bool reads_file(const ShapeDescription& s) {
+  if (!s.file.empty()) return true;
+  return std::any_of(s.parts.begin(), s.parts.end(), [](const auto& p) { return reads_file(p); });
+}
+
+/// Particle elements per lattice sub-cell: CPDI splits each into segments, quads, 2 triangles or 6 tetrahedra
+/// (geometry/cpdi_domains.hpp; a conforming mesh at the same spacing has about as many).
+int elements_per_sub_cell(int dimension, int corners) {
+  if (corners == 0 || dimension == 1) return 1;
+  if (dimension == 2) return corners == 3 ? 2 : 1;
+  return 6;
+}
+
+/// TLMPM caches the reference stencil of every particle in factored form (factored_stencil.hpp): a weight and a
+/// derivative per node of the support on each axis, and the base node.
+template <int Dim>
+std::size_t scheme_bytes_per_particle(const SceneDescription& scene) {
+  if (!is_total_lagrangian(scene.solver.scheme)) return 0;
+  int support = 0;
+  dispatch_shape(scene.solver.shape_function, [&]<class Shape>() { support = Shape::support; });
+  return static_cast<std::size_t>(Dim) * support * 2 * sizeof(Real) + sizeof(Index);
+}
+
+/// The count of one body: an upper bound (bounding box, or the grid for shapes read from files) or the sample.
+template <int Dim>
+void count_body(BodyMemory& m, const BodyDescription& bd, const GridGeometry<Dim>& geometry, bool sample, int index) {
+  if (bd.shape.type == "particles") return;  // a particle file: as many as its rows, bounded by the file itself
+  geometry::Box<Dim> grid_box{geometry.origin, geometry.upper()};
+  try {
+    if (bd.shape.type == "image" && bd.shape.pixel_particles) {  // one particle per selected pixel
+      const auto region = geometry::make_region<Dim>(bd.shape);
+      Real pixel = 1;
+      for (int d = 0; d < Dim; ++d) pixel *= bd.shape.pixel_size[d];
+      m.particles = pixel > 0 ? region->exact_volume().value_or(0) / pixel : 0;
+      m.exact = m.sampled = true;
+      return;
+    }
+    if (!sample && reads_file(bd.shape)) {
+      m.particles = geometry::lattice_points_in<Dim>(grid_box, geometry, bd.particles_per_cell);
+      return;
+    }
+    const auto region = geometry::make_region<Dim>(bd.shape);
+    if (!sample) {
+      m.particles = geometry::lattice_points_in<Dim>(region->bounds(), geometry, bd.particles_per_cell);
+      return;
+    }
+    const auto count = geometry::count_particles<Dim>(*region, geometry, bd.particles_per_cell);
+    m.particles = count.count;
+    m.exact = count.exact;
+    m.sampled = true;
+  } catch (const geometry::GeometryError& e) {
+    throw SceneError(bd.shape.where, fmt::format("bodies[{}].shape", index), "body '" + bd.name + "': " + e.what());
+  }
+}
+
+std::string count_text(double n) { return n < 1e6 ? fmt::format("{:.0f}", n) : fmt::format("{:.3g}", n); }
+
+/// The refusal: what needs the memory, the estimate, what is available, what to change.
+[[noreturn]] void refuse(const SceneDescription& scene, const MemoryEstimate& e, const MemoryBudget& budget,
+                         bool grid_alone) {
+  const std::string available = fmt::format("{} available ({})", format_bytes(budget.bytes), budget.source);
+  const std::string grid =
+      fmt::format("{} grid nodes x {} B = {}", count_text(e.nodes), e.bytes_per_node, format_bytes(e.grid_bytes()));
+  if (grid_alone)
+    throw SceneError(locate_key(scene, {"grid", "cell_size"}), "grid.cell_size",
+                     fmt::format("the grid alone needs about {} of memory ({}), {}: use a larger cell_size",
+                                 format_bytes(e.grid_bytes()), grid, available));
+  std::size_t worst = 0;
+  for (std::size_t b = 1; b < e.bodies.size(); ++b)
+    if (e.bodies[b].bytes() > e.bodies[worst].bytes()) worst = b;
+  std::string parts;
+  for (const auto& m : e.bodies)
+    parts += fmt::format("body '{}': {} particles{} x ({:.0f} x {} B + {} B) = {}; ", m.name, count_text(m.particles),
+                         m.exact ? "" : " (estimated on a sample of its region)", particle_state_copies, m.state_bytes,
+                         m.bytes_per_particle - m.state_bytes, format_bytes(m.bytes()));
+  const BodyDescription& bd = scene.bodies[worst];
+  std::string ppc = std::to_string(bd.particles_per_cell[0]);
+  for (int d = 1; d < scene.dimension; ++d) ppc += " x " + std::to_string(bd.particles_per_cell[d]);
+  throw SceneError(locate_body_key(scene, bd.where, "particles_per_cell"),
+                   fmt::format("bodies[{}].particles_per_cell", worst),
+                   fmt::format("the scene needs about {} of memory ({}{}; {:.0f} copies of the particle state: the "
+                               "state, the stability guard's snapshot and the sort's scratch), {}: use fewer "
+                               "particles per cell (now {}) or a larger grid.cell_size",
+                               format_bytes(e.bytes()), parts, grid, particle_state_copies, available, ppc));
+}
+
+}  // namespace
+
+double BodyMemory::bytes() const {
+  return particles * (particle_state_copies * static_cast<double>(state_bytes) +
+                      static_cast<double>(bytes_per_particle - state_bytes));
+}
+
+double MemoryEstimate::particles() const {
+  double n = 0;
+  for (const auto& b : bodies) n += b.particles;
+  return n;
+}
+
+double MemoryEstimate::bytes() const {
+  double total = grid_bytes();
+  for (const auto& b : bodies) total += b.bytes();
+  return total;
+}
+
+template <int Dim>
+MemoryEstimate estimate_grid_memory(const GridGeometry<Dim>& geometry) {
+  MemoryEstimate e;
+  e.nodes = 1;
+  for (int d = 0; d < Dim; ++d) e.nodes *= static_cast<double>(geometry.cells(d)) + 1;
+  e.bytes_per_node = 2 * (sizeof(NodeRecord<Dim>) + sizeof(NodeVelocity<Dim>));
+  return e;
+}
+
+template <int Dim>
+MemoryEstimate estimate_memory(const SceneDescription& scene, const GridGeometry<Dim>& geometry, bool sample) {
+  MemoryEstimate e = estimate_grid_memory<Dim>(geometry);
+  const auto prototypes = prototype_bodies<Dim>(scene, geometry);
+  const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
+  const int elements = elements_per_sub_cell(Dim, shape.domain_corners);
+  const std::size_t scheme_bytes = scheme_bytes_per_particle<Dim>(scene);
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    BodyMemory m;
+    m.name = scene.bodies[b].name;
+    m.state_bytes = prototypes[b].particles.bytes_per_particle();
+    m.bytes_per_particle = m.state_bytes + scheme_bytes;
+    count_body<Dim>(m, scene.bodies[b], geometry, sample, static_cast<int>(b));
+    m.particles *= elements;
+    e.bodies.push_back(m);
+  }
+  return e;
+}
+
+template <int Dim>
+void check_memory(const SceneDescription& scene, const GridGeometry<Dim>& geometry, const MemoryBudget& budget) {
+  const MemoryEstimate grid = estimate_grid_memory<Dim>(geometry);
+  if (grid.grid_bytes() > budget.bytes) refuse(scene, grid, budget, true);
+  if (estimate_memory<Dim>(scene, geometry, false).bytes() <= budget.bytes) return;  // the upper bound fits
+  const MemoryEstimate e = estimate_memory<Dim>(scene, geometry, true);
+  if (e.bytes() > budget.bytes) refuse(scene, e, budget, false);
+}
+
+template MemoryEstimate estimate_grid_memory<1>(const GridGeometry<1>&);
+template MemoryEstimate estimate_grid_memory<2>(const GridGeometry<2>&);
+template MemoryEstimate estimate_grid_memory<3>(const GridGeometry<3>&);
+template MemoryEstimate estimate_memory<1>(const SceneDescription&, const GridGeometry<1>&, bool);
+template MemoryEstimate estimate_memory<2>(const SceneDescription&, const GridGeometry<2>&, bool);
+template MemoryEstimate estimate_memory<3>(const SceneDescription&, const GridGeometry<3>&, bool);
+template void check_memory<1>(const SceneDescription&, const GridGeometry<1>&, const MemoryBudget&);
+template void check_memory<2>(const SceneDescription&, const GridGeometry<2>&, const MemoryBudget&);
+template void check_memory<3>(const SceneDescription&, const GridGeometry<3>&, const MemoryBudget&);
+
+}  // namespace mpm::app
