@@ -83,7 +83,7 @@ void check(const SceneDescription& scene, std::ostream& out) {
              scene.grid.coordinates == Coordinates::axisymmetric
                  ? " axisymmetric (x = r, y = z; masses, energies and forces per full revolution)"
                  : "",
-             sim->particle_count(), sim->bodies().size(), sim->grid().size(), enum_name(scene.solver.scheme),
+             sim->particle_count(), sim->bodies().size(), sim->grid().size(), scene.solver.scheme_name(),
              scene.solver.shape_function, dt, sim->stable_time_step(), sim->time_step_limiter(),
              static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
   const MemoryEstimate memory = estimate_memory<Dim>(scene, sim->grid().geometry, true);
@@ -138,6 +138,10 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   OutputWriter<Dim> writer(directory, o.prefix, o.fields, o.grid, o.interval, restart ? &restart->archive : nullptr);
   HistoryWriter<Dim> histories(writer.directory(), std::move(built_histories), restart ? &restart->archive : nullptr);
   writer.set_field_data(run_field_data(scene, overrides(options)));  // self-describing files
+  // The scheme's own per-step table (the implicit scheme's solver.csv), one row per step. A restart starts it anew.
+  std::unique_ptr<io::CsvLog> step_log;
+  if (const std::string_view file = sim->scheme().step_log_file(); !file.empty())
+    step_log = std::make_unique<io::CsvLog>(writer.directory() / std::string(file), sim->scheme().step_log_columns());
   io::write_view_script(writer.directory() / "view.py", view_script_for(scene));
   summary.particles = static_cast<std::size_t>(sim->particle_count());
   for (const auto& b : sim->bodies())
@@ -204,6 +208,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   const Index first_step = sim->step();  // 0, or the step a restart continues
   auto last_print = start;
   auto after_step = [&](const Simulation<Dim>& s) {
+    if (step_log) step_log->append(s.scheme().step_log_row());
     write(s, false);
     if (s.step() % 50 == 0) check_state(s);
     if (checkpoints.due(s.time())) write_checkpoint(s);

@@ -23,6 +23,7 @@
 #include "mpm/output_fields.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
+#include "mpm/scheme_extension.hpp"
 #include "particle_file_body.hpp"
 
 namespace mpm::app {
@@ -232,6 +233,7 @@ template <int Dim>
 void check_fixed_time_step(const SceneDescription& scene, const Simulation<Dim>& sim) {
   const auto& fixed_dt = sim.settings().fixed_dt;
   if (!fixed_dt) return;
+  if (const auto* e = find_scheme_extension(scene.solver.extension_scheme); e && e->unconditionally_stable) return;
   const Real bound = sim.stable_time_step();
   if (*fixed_dt > bound)
     throw SceneError(scene.solver.dt_where, "solver.dt",
@@ -288,8 +290,10 @@ template <int Dim>
 std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
   const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
   check_memory<Dim>(scene, geometry, available_memory());  // before anything the size of the scene is allocated
-  auto scheme = make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function,
-                                 scene.grid.coordinates);
+  auto scheme = scene.solver.extension_scheme.empty()
+                    ? make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function,
+                                       scene.grid.coordinates)
+                    : make_extension_scheme<Dim>(scene);
   const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
   check_output_against_shape_function(scene, shape);
 

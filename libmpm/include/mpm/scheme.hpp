@@ -32,6 +32,11 @@ class Scheme {
   virtual bool reorders_particles() const { return true; }
   /// False when particle positions are not used by the transfers (TLMPM: they may leave the grid).
   virtual bool positions_must_stay_in_grid() const { return true; }
+  /// The scheme's own table of one row per step (the implicit scheme's solver.csv, written by `mpm run` beside
+  /// energy.csv): its file name, or empty when it keeps none; its columns; the row of the last step taken.
+  virtual std::string_view step_log_file() const { return {}; }
+  virtual std::vector<std::string> step_log_columns() const { return {}; }
+  virtual std::vector<double> step_log_row() const { return {}; }
 };
 
 /// What every scheme templated on a shape function reports about it.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "mpm/scheme.hpp"
+#include "mpm/scheme_extension.hpp"
 #include "sections.hpp"
 
 namespace mpm::sections {
@@ -27,7 +28,7 @@ void check_shape_function(const YamlReader& reader, const YamlValue& key, const 
   if (info.tlmpm_only && !is_total_lagrangian(solver.scheme))
     reader.fail(key, fmt::format("{} has negative weights and is only valid with scheme: tlmpm (particles at "
                                  "fixed reference positions); the scheme is {}",
-                                 info.name, enum_name(solver.scheme)));
+                                 info.name, solver.scheme_name()));
   for (int d = 0; d < dimension; ++d) {
     if (scene.grid.cells[d] < info.min_cells)
       reader.fail(key, fmt::format("{} needs at least {} cells per axis; the grid has {} on axis {}", info.name,
@@ -92,20 +93,47 @@ void read_time_step(const YamlReader& reader, const YamlMap& map, SolverDescript
   }
 }
 
+/// `scheme`: a built-in one (SchemeKind) or one a module registered (scheme_extension.hpp).
+void read_scheme(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {
+  const auto scheme = map.find("scheme");
+  if (!scheme) return;
+  std::vector<std::string> names = enum_names<SchemeKind>();
+  for (auto& name : scheme_extension_names()) names.push_back(name);
+  const std::string name = reader.choice(*scheme, names);
+  if (const auto kind = enum_from_name<SchemeKind>(name))
+    solver.scheme = *kind;
+  else
+    solver.extension_scheme = name;
+}
+
+/// The keys of `solver:` a registered scheme owns are refused with any other scheme.
+void check_extension_keys(const YamlReader& reader, const YamlMap& map, const SolverDescription& solver) {
+  for (const auto& [key, owner] : scheme_extension_solver_keys())
+    if (const auto value = map.find(key); value && solver.extension_scheme != owner)
+      reader.fail(*value, fmt::format("{} applies to scheme: {} only; the scheme is {}", key, owner,
+                                      solver.scheme_name()));
+}
+
 }  // namespace
 
 SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
   const YamlMap map = reader.map(value);
-  map.allow({"scheme", "shape_function", "velocity_transfer", "flip_fraction", "dt", "cfl", "end_time", "mass_cutoff",
-             "gravity", "snapshot_interval", "sort_interval", "cpdi_domain_update"});
+  std::vector<std::string> allowed{"scheme",        "shape_function",    "velocity_transfer", "flip_fraction",
+                                   "dt",            "cfl",               "end_time",          "mass_cutoff",
+                                   "gravity",       "snapshot_interval", "sort_interval",     "cpdi_domain_update"};
+  for (const auto& [key, owner] : scheme_extension_solver_keys()) allowed.push_back(key);
+  map.allow(allowed);
   SolverDescription solver;
-  if (const auto scheme = map.find("scheme")) solver.scheme = reader.choice<SchemeKind>(*scheme);
+  read_scheme(reader, map, solver);
+  check_extension_keys(reader, map, solver);
   if (const auto shape_function = map.find("shape_function")) {
     solver.shape_function = reader.choice(*shape_function, shape_function_names());
     check_shape_function(reader, *shape_function, solver, scene);
   }
   read_cpdi_domain_update(reader, map, solver);
   read_velocity_transfer(reader, map, solver);
+  if (!solver.extension_scheme.empty())  // before the time step: the scheme may refuse cfl with its own message
+    solver.extension_options = find_scheme_extension(solver.extension_scheme)->parse(reader, map, solver, scene);
   read_time_step(reader, map, solver);
   solver.end_time = reader.number(map.required("end_time"), Range::above(0), "s");
   if (const auto cutoff = map.find("mass_cutoff")) solver.mass_cutoff = reader.number(*cutoff, Range::at_least(0), "");

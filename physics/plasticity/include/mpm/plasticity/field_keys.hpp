@@ -14,5 +14,8 @@ inline constexpr FieldKey<PlasticState<Dim>> plastic_state{"plasticity"};
 /// The history of a hencky_j2 point (HenckyJ2State: G^p, xi, plastic work).
 template <int Dim>
 inline constexpr FieldKey<HenckyJ2State<Dim>> hencky_j2_state{"hencky_j2"};
+/// The mixed volume Theta of the three-field form (ref. 003 eqs. 11, 88e), per particle: only the implicit scheme
+/// adds it; hencky_j2's stored energy then uses U(Theta) instead of U(J).
+inline constexpr FieldKey<Real> mixed_volume{"mixed_volume"};
 
 }  // namespace mpm::plasticity::keys

@@ -65,16 +65,19 @@ class HenckyJ2Batch final : public Material<Dim> {
     return bound;
   }
 
-  /// sum V_0 (W~ + U(J)), with G ||dev eps^e||^2 = ||dev tau||^2 / (4 G) and dev tau = J dev sigma, J.
+  /// sum V_0 (W~ + U(J)), with G ||dev eps^e||^2 = ||dev tau||^2 / (4 G) and dev tau = J dev sigma, J; with the
+  /// mixed volume Theta of the implicit scheme (field mixed_volume) U(Theta) instead of U(J) (eq. 99).
   void add_strain_energy(const ParticleSet<Dim>& p, ExactSum& e) const override {
     const auto& state = p.field(state_field);
+    const Real* theta = p.has_field(keys::mixed_volume) ? p.field(keys::mixed_volume).data() : nullptr;
     const Real G = params_.shear_modulus, H = params_.hardening_modulus;
     const Real* hoop = axisym::hoop_stretch_of(p);
     for (Index i = 0; i < p.size(); ++i) {
       const Real J = axisym::volume_ratio(p, i, hoop);
       const Mat3 s = p.stress[i].full();
       const Mat3 dev_tau = J * (s - s.trace() / 3 * Mat3::Identity());
-      const Real w = dev_tau.squaredNorm() / (4 * G) + 0.5 * H * state[i].xi * state[i].xi + volumetric_.energy(J);
+      const Real w = dev_tau.squaredNorm() / (4 * G) + 0.5 * H * state[i].xi * state[i].xi +
+                     volumetric_.energy(theta ? theta[i] : J);
       e += p.volume0[i] * w;
     }
   }

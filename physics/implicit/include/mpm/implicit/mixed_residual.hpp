@@ -1,0 +1,239 @@
+#pragma once
+/// \file mixed_residual.hpp
+/// The residual of one implicit step (ref. 003 eqs. 88a-91; docs/theory.md §15), in the unknowns Delta phi at
+/// the free degrees of freedom (grid node and velocity component, walls removed):
+///   R = 2 M (Delta phi - dt v_n) / dt^2 + F^int_{n+1/2} - F^ext                      (88a with 88b)
+///   F^int,A = sum_pt (F_{n+1/2} S^h) F_n^T grad_n N^A Omega_0                      (89a)
+///   F^ext,A = sum_pt m b N^A                                                        (89b, gravity)
+/// per point, with the stencil at x_n: f = 1 + grad_n Delta phi, F_{n+1} = f F_n (91); the material's trial
+/// update at F_{n+1} (pure, hencky_j2.hpp); S_algo^dev (81)-(83) and D_C J (discrete_gradient.hpp); per cell
+/// (Q1/P0) theta_e = sum Delta J Omega_0 / sum Omega_0 (88d), Theta_{n+1} = Theta_n + theta_e (88e),
+/// p_e = sum D_Theta U(Theta_n, Theta_{n+1}) Omega_0 / sum Omega_0 (88c); S^h = S_algo^dev + 2 p D_C J (90).
+/// With volumetric: pointwise, Theta = J per point and p = D_Theta U(J_n, J_{n+1}).
+/// The per-point work runs in parallel into per-point slots; every sum (cells, nodes) runs serially in point
+/// order: the same bits for any thread count.
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <cmath>
+#include <vector>
+
+#include "mpm/implicit/consistent_mass.hpp"
+#include "mpm/implicit/implicit_options.hpp"
+#include "mpm/implicit/nonlinear_problem.hpp"
+#include "mpm/implicit/step_points.hpp"
+#include "mpm/plasticity/log_volumetric_energy.hpp"
+
+namespace mpm::implicit {
+
+/// det(1 + H) - 1 without the cancellation of det(1 + H) - 1 for small H: tr H + I_2(H) + det H.
+inline Real det_one_plus_minus_one(const Mat3& H) {
+  const Real tr = H.trace();
+  const Real i2 = 0.5 * (tr * tr - (H * H).trace());
+  return tr + i2 + H.determinant();
+}
+
+/// The free degrees of freedom of a step: nodes touched by a particle (N^A > 0) and components not held by a
+/// wall; dof(node, d) or -1.
+template <int Dim>
+struct FreeDofs {
+  std::vector<Index> active;                  ///< grid nodes with mass, ascending
+  std::vector<std::array<Index, Dim>> index;  ///< per grid node: its dof per component, or -1
+  std::vector<std::pair<Index, int>> dofs;    ///< per dof: (grid node, component)
+  std::array<std::vector<Index>, Dim> free_nodes;  ///< per component: the active nodes where it is free
+};
+
+template <int Dim>
+class MixedResidual final : public NonlinearProblem {
+ public:
+  static constexpr int count = StepPoints<Dim>::count;
+  using Update = plasticity::HenckyJ2Update<Dim>;
+
+  MixedResidual(const StepPoints<Dim>& points, const ConsistentMass<Dim>& mass, const FreeDofs<Dim>& dofs,
+                const GridGeometry<Dim>& g, const std::vector<VecU<Dim>>& v_n, const std::vector<VecU<Dim>>& f_ext,
+                Real dt, VolumetricMode volumetric)
+      : pts_(points), M_(mass), dofs_(dofs), g_(g), v_n_(v_n), f_ext_(f_ext), dt_(dt), volumetric_(volumetric) {
+    const Index n = points.size();
+    F1_.resize(n), S_algo_.resize(n), DCJ_.resize(n), dJ_.resize(n), theta1_.resize(n), pressure_.resize(n);
+    update_.resize(n), P_.resize(n);
+    dphi_.assign(g.node_count(), VecU<Dim>::Zero());
+    inertia_.assign(g.node_count(), VecU<Dim>::Zero());
+    force_.assign(g.node_count(), VecU<Dim>::Zero());
+    lag_.assign(g.node_count(), VecU<Dim>::Zero());
+    Index cells = 1;
+    for (int d = 0; d < Dim; ++d) cells *= g.nodes[d];  // indexed by the lower node: node-sized is enough
+    cell_volume_.assign(cells, 0), cell_dJ_.assign(cells, 0), cell_pD_.assign(cells, 0);
+    build_coupling();
+    Real h = g.h[0];
+    for (int d = 1; d < Dim; ++d) h = std::min<Real>(h, g.h[d]);
+    unknown_scale_ = 1e-2 * h;
+  }
+
+  Index size() const override { return static_cast<Index>(dofs_.dofs.size()); }
+  const std::vector<std::vector<Index>>& column_groups() const override { return groups_; }
+  const std::vector<std::vector<Index>>& column_rows() const override { return rows_; }
+  Real unknown_scale() const override { return unknown_scale_; }
+
+  bool residual(const Vector& x, Vector& r) override {
+    scatter(x);
+    if (!evaluate_points()) return false;
+    assemble_forces();
+    // inertia 2 M (Delta phi - dt v_n) / dt^2 (88a with 88b), per component on its free nodes
+    const Real c = 2 / (dt_ * dt_);
+    for (Index a : dofs_.active)
+      for (int d = 0; d < Dim; ++d) lag_[a][d] = dofs_.index[a][d] >= 0 ? dphi_[a][d] - dt_ * v_n_[a][d] : 0;
+    M_.multiply(dofs_.active, lag_, inertia_);
+    r.resize(size());
+    for (Index k = 0; k < size(); ++k) {
+      const auto [a, d] = dofs_.dofs[k];
+      r[k] = c * inertia_[a][d] + force_[a][d] - f_ext_[a][d];
+    }
+    return r.allFinite();
+  }
+
+  /// Delta phi on the grid (zero at held components) of the last residual.
+  const std::vector<VecU<Dim>>& increment() const { return dphi_; }
+  /// Per point, of the last residual: F_{n+1}, the material's update, Theta_{n+1}, the mixed pressure p.
+  const std::vector<Mat3>& deformation_gradient() const { return F1_; }
+  const std::vector<Update>& update() const { return update_; }
+  const std::vector<Real>& mixed_volume() const { return theta1_; }
+  const std::vector<Real>& pressure() const { return pressure_; }
+
+  /// The grid vector of an unknown vector (held components zero).
+  void scatter(const Vector& x) {
+    for (Index a : dofs_.active) dphi_[a].setZero();
+    for (Index k = 0; k < size(); ++k) dphi_[dofs_.dofs[k].first][dofs_.dofs[k].second] = x[k];
+  }
+
+ private:
+  /// Pass 1 (parallel, per point): F_{n+1}, Delta J, the material's trial update, S_algo^dev, D_C J; then the
+  /// cells (serial) and pass 2 (parallel): S^h and P = F_{n+1/2} S^h F_n^T Omega_0.
+  bool evaluate_points() {
+    std::atomic<bool> ok{true};
+    const Index n = pts_.size();
+    tbb::parallel_for(tbb::blocked_range<Index>(0, n, 256), [&](const tbb::blocked_range<Index>& range) {
+      for (Index i = range.begin(); i != range.end(); ++i)
+        if (!evaluate_point(i)) ok.store(false, std::memory_order_relaxed);
+    });
+    if (!ok.load()) return false;
+    if (!mixed_pressures()) return false;
+    tbb::parallel_for(tbb::blocked_range<Index>(0, n, 256), [&](const tbb::blocked_range<Index>& range) {
+      for (Index i = range.begin(); i != range.end(); ++i) {
+        const Mat3 S_h = plasticity::algorithmic_stress(S_algo_[i], pressure_[i], DCJ_[i]);  // (90)
+        P_[i] = pts_.volume0[i] * (0.5 * (pts_.F_n[i] + F1_[i]) * S_h * pts_.F_n[i].transpose());
+      }
+    });
+    return true;
+  }
+
+  bool evaluate_point(Index i) {
+    Mat3 H = Mat3::Zero();  // grad_n Delta phi at x_n (91)
+    for (int a = 0; a < count; ++a)
+      H.template topLeftCorner<Dim, Dim>() += Vec<Dim>(dphi_[pts_.node[i][a]]) * Vec<Dim>(pts_.grad[i][a]).transpose();
+    if (pts_.axisymmetric)  // the hoop stretch increment Delta phi_r / r (review eq. G.4)
+      for (int a = 0; a < count; ++a) H(2, 2) += pts_.hoop[i][a] * dphi_[pts_.node[i][a]][0];
+    const Real dj = det_one_plus_minus_one(H);
+    if (!(1 + dj > 0)) return false;
+    const Mat3& F_n = pts_.F_n[i];
+    F1_[i] = (Mat3::Identity() + H) * F_n;
+    const Real J_n = pts_.J_n[i], J1 = J_n * (1 + dj);
+    dJ_[i] = J_n * dj;
+    update_[i] = plasticity::HenckyJ2::evaluate<Dim>(*pts_.params[i], *pts_.state_n[i], F1_[i], dt_);
+    const Update& u = update_[i];
+    const Mat3 dC = plasticity::right_cauchy_green_increment(F_n, H);
+    S_algo_[i] = plasticity::algorithmic_deviatoric_stress(pts_.S_n[i], plasticity::pull_back(F1_[i], u.dev_kirchhoff),
+                                                           pts_.W_n[i], u.stored_energy, u.dissipation,
+                                                           pts_.C_n[i], dC);  // (81)-(83)
+    DCJ_[i] = plasticity::jacobian_discrete_derivative(pts_.C_n[i], dC, J_n, J1);
+    return S_algo_[i].allFinite() && DCJ_[i].allFinite();
+  }
+
+  /// (88c)-(88e) per cell, or Theta = J per point; false when a Theta_{n+1} <= 0.
+  bool mixed_pressures() {
+    const Index n = pts_.size();
+    if (volumetric_ == VolumetricMode::pointwise) {
+      for (Index i = 0; i < n; ++i) {
+        theta1_[i] = pts_.theta_n[i] + dJ_[i];
+        if (!(theta1_[i] > 0)) return false;
+        const plasticity::LogVolumetricEnergy U{pts_.params[i]->bulk_modulus};
+        pressure_[i] = U.discrete_derivative(pts_.theta_n[i], theta1_[i]);
+      }
+      return true;
+    }
+    for (Index i = 0; i < n; ++i) cell_volume_[pts_.cell[i]] = cell_dJ_[pts_.cell[i]] = cell_pD_[pts_.cell[i]] = 0;
+    for (Index i = 0; i < n; ++i) {
+      cell_volume_[pts_.cell[i]] += pts_.volume0[i];
+      cell_dJ_[pts_.cell[i]] += pts_.volume0[i] * dJ_[i];  // (88d)
+    }
+    for (Index i = 0; i < n; ++i) {
+      const Index e = pts_.cell[i];
+      theta1_[i] = pts_.theta_n[i] + cell_dJ_[e] / cell_volume_[e];  // (88e)
+      if (!(theta1_[i] > 0)) return false;
+      const plasticity::LogVolumetricEnergy U{pts_.params[i]->bulk_modulus};
+      cell_pD_[e] += pts_.volume0[i] * U.discrete_derivative(pts_.theta_n[i], theta1_[i]);  // (88c)
+    }
+    for (Index i = 0; i < n; ++i) pressure_[i] = cell_pD_[pts_.cell[i]] / cell_volume_[pts_.cell[i]];
+    return true;
+  }
+
+  /// F^int (89a), serially in point order.
+  void assemble_forces() {
+    for (Index a : dofs_.active) force_[a].setZero();
+    for (Index i = 0; i < pts_.size(); ++i) {
+      const Mat<Dim> P = P_[i].template topLeftCorner<Dim, Dim>();
+      for (int a = 0; a < count; ++a) force_[pts_.node[i][a]] += P * Vec<Dim>(pts_.grad[i][a]);
+      if (pts_.axisymmetric)  // the hoop term of (89a): P_tt T^A on the radial component (review eq. G.2)
+        for (int a = 0; a < count; ++a) force_[pts_.node[i][a]][0] += P_[i](2, 2) * pts_.hoop[i][a];
+    }
+  }
+
+  /// Column groups: a dof (node A, component d) couples with every dof of the nodes sharing a cell with A, so
+  /// nodes three apart on some axis never share a row: colour (d, i mod 3, j mod 3, k mod 3).
+  void build_coupling() {
+    const Index n = size();
+    constexpr int colours = ConsistentMass<Dim>::neighbours;
+    groups_.assign(static_cast<std::size_t>(colours) * Dim, {});
+    rows_.assign(n, {});
+    for (Index k = 0; k < n; ++k) {
+      const auto [a, d] = dofs_.dofs[k];
+      const auto ijk = g_.node_indices(a);
+      int colour = 0;
+      for (int e = Dim - 1; e >= 0; --e) colour = 3 * colour + ijk[e] % 3;
+      groups_[static_cast<std::size_t>(d) * colours + colour].push_back(k);
+      for (int o = 0; o < colours; ++o) {
+        std::array<int, Dim> nb{};
+        bool inside = true;
+        for (int e = 0, r = o; e < Dim; ++e, r /= 3) {
+          nb[e] = ijk[e] + r % 3 - 1;
+          inside = inside && nb[e] >= 0 && nb[e] < g_.nodes[e];
+        }
+        if (!inside) continue;
+        Index b = 0;
+        for (int e = 0; e < Dim; ++e) b += nb[e] * g_.stride[e];
+        for (int c = 0; c < Dim; ++c)
+          if (dofs_.index[b][c] >= 0) rows_[k].push_back(dofs_.index[b][c]);
+      }
+    }
+    std::erase_if(groups_, [](const auto& group) { return group.empty(); });
+  }
+
+  const StepPoints<Dim>& pts_;
+  const ConsistentMass<Dim>& M_;
+  const FreeDofs<Dim>& dofs_;
+  const GridGeometry<Dim>& g_;
+  const std::vector<VecU<Dim>>& v_n_;
+  const std::vector<VecU<Dim>>& f_ext_;
+  Real dt_;
+  VolumetricMode volumetric_;
+  Real unknown_scale_ = 0;
+  std::vector<Mat3> F1_, S_algo_, DCJ_, P_;
+  std::vector<Real> dJ_, theta1_, pressure_;
+  std::vector<Update> update_;
+  std::vector<VecU<Dim>> dphi_, inertia_, force_, lag_;
+  std::vector<Real> cell_volume_, cell_dJ_, cell_pD_;
+  std::vector<std::vector<Index>> groups_, rows_;
+};
+
+}  // namespace mpm::implicit

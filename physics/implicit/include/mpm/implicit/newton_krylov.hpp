@@ -1,0 +1,42 @@
+#pragma once
+/// \file newton_krylov.hpp
+/// Newton-Krylov for NonlinearProblem: each Newton direction from Eigen's restarted GMRES (unsupported module,
+/// shipped with Eigen) on the matrix-free operator J v = [R(x + e v) - R(x)]/e, preconditioned by the
+/// sparse LU of a finite-difference Jacobian built column group by column group (the problem's colouring),
+/// then a backtracking line search that halves the step while R is inadmissible (det F <= 0, Theta <= 0) or
+/// ||R|| does not decrease (Armijo, 1e-4). The lumped mass alone (2 M_L / dt^2) was too weak a preconditioner
+/// once the stiffness dominates (dt far above the explicit bound); the Jacobian is rebuilt when a direction
+/// fails. Everything is serial or in a fixed order: the same bits for any thread count.
+
+#include <string>
+
+#include "mpm/implicit/nonlinear_problem.hpp"
+
+namespace mpm::implicit {
+
+struct NewtonSettings {
+  Real rtol = 1e-10;  ///< relative to `reference` (solve())
+  Real atol = 0;
+  int max_iterations = 25;
+  Real linear_rtol = 1e-4;
+  int max_linear_iterations = 200;
+  int restart = 50;
+};
+
+struct NewtonStats {
+  int iterations = 0;            ///< Newton iterations
+  int linear_iterations = 0;     ///< GMRES iterations, all Newton iterations together
+  int residual_evaluations = 0;  ///< calls of R (Jacobian columns, Krylov products and line search included)
+  int jacobians = 0;             ///< finite-difference Jacobians built and factorised
+  Real first_residual = 0;       ///< ||R(x_0)||
+  Real last_residual = 0;        ///< ||R|| at the returned x
+  Real tolerance = 0;            ///< max(atol, rtol * reference)
+  bool converged = false;
+  std::string failure;  ///< why not, when not converged
+};
+
+/// Drives R(x) to ||R|| <= max(atol, rtol * reference) from the start x (overwritten with the last accepted
+/// iterate). The start must be admissible.
+NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real reference, const NewtonSettings& settings);
+
+}  // namespace mpm::implicit

@@ -1,0 +1,20 @@
+#pragma once
+/// \file solver_log.hpp
+/// One row of solver.csv: what a step's solves took.
+
+#include "mpm/types.hpp"
+
+namespace mpm::implicit {
+
+struct StepRecord {
+  Index step = 0;
+  Real time = 0;  ///< s, at the end of the step
+  int newton_iterations = 0;
+  int gmres_iterations = 0;
+  int residual_evaluations = 0;
+  Real first_residual = 0;  ///< ||R(predictor)||
+  Real last_residual = 0;   ///< ||R|| accepted
+  double wall_seconds = 0;
+};
+
+}  // namespace mpm::implicit

@@ -1,0 +1,98 @@
+// `solver.scheme: implicit` (docs/scene-reference.md, solver.implicit): the options of the Newton-Krylov solve
+// and the refusals of issue 17, each at its key (file:line:column, exit 2).
+#include "implicit_section.hpp"
+
+#include <fmt/format.h>
+
+#include "mpm/implicit/implicit_options.hpp"
+#include "mpm/scene_error.hpp"
+
+namespace mpm::implicit {
+namespace {
+
+using io::Range;
+
+void read_options(const io::YamlReader& reader, const io::YamlValue& value, ImplicitOptions& o) {
+  const io::YamlMap map = reader.map(value);
+  map.allow({"newton_rtol", "newton_atol", "max_newton_iterations", "linear_rtol", "max_linear_iterations",
+             "gmres_restart", "mass_rtol", "volumetric"});
+  if (const auto v = map.find("newton_rtol")) o.newton_rtol = reader.number(*v, Range::open(0, 1), "");
+  if (const auto v = map.find("newton_atol")) o.newton_atol = reader.number(*v, Range::at_least(0), "N");
+  if (const auto v = map.find("max_newton_iterations")) o.max_newton_iterations = reader.integer(*v, 1);
+  if (const auto v = map.find("linear_rtol")) o.linear_rtol = reader.number(*v, Range::open(0, 1), "");
+  if (const auto v = map.find("max_linear_iterations")) o.max_linear_iterations = reader.integer(*v, 1);
+  if (const auto v = map.find("gmres_restart")) o.gmres_restart = reader.integer(*v, 1);
+  if (const auto v = map.find("mass_rtol")) o.mass_rtol = reader.number(*v, Range::open(0, 1), "");
+  if (const auto v = map.find("volumetric")) o.volumetric = reader.choice<VolumetricMode>(*v);
+}
+
+/// The transfer choices: (92) is the FLIP update of the grid increment, nothing else.
+void refuse_transfers(const io::YamlReader& reader, const io::YamlMap& map, const SolverDescription& solver) {
+  if (const auto cfl = map.find("cfl"))
+    reader.fail(*cfl, "scheme: implicit takes a fixed time step dt (it is stable for any dt, Prop. 3.1); cfl "
+                      "is for the explicit schemes");
+  if (solver.shape_function != "linear")
+    reader.fail(*map.find("shape_function"),
+                fmt::format("scheme: implicit uses linear hats (the Q1/P0 cells of eqs. 88c-88e), not {}",
+                            solver.shape_function));
+  if (solver.velocity_transfer != VelocityTransfer::flip)
+    reader.fail(*map.find("velocity_transfer"),
+                "scheme: implicit updates particle velocities by the grid increment (eq. 92, FLIP); apic is not "
+                "available");
+  if (const auto flip = map.find("flip_fraction"); flip && solver.flip_fraction != 1)
+    reader.fail(*flip, "scheme: implicit needs flip_fraction 1 (eq. 92: the energy and momentum proof, Cor. 3.2, "
+                       "holds for the FLIP update only)");
+}
+
+/// Walls must be fixed (zero) velocity components; tractions are not implemented yet.
+void refuse_boundaries(const SceneDescription& scene) {
+  const auto& names = GridDescription::face_names;
+  for (int f = 0; f < 2 * scene.dimension; ++f) {
+    const FaceBoundary& face = scene.grid.boundary[f];
+    const std::string key = std::string("grid.boundary.") + names[f];
+    for (int d = 0; d < scene.dimension; ++d) {
+      if (face.component[d] && *face.component[d] != "0")
+        throw SceneError(face.where, key,
+                         fmt::format("scheme: implicit supports walls at rest only (fixed, slip or velocity 0); "
+                                     "component {} is '{}'",
+                                     "xyz"[d], *face.component[d]));
+      if (face.traction[d])
+        throw SceneError(face.where, key, "scheme: implicit does not support tractions yet");
+    }
+  }
+}
+
+void refuse_materials(const SceneDescription& scene) {
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const BodyDescription& body = scene.bodies[b];
+    const MaterialDescription& material = scene.materials.at(body.material);
+    if (material.model != "hencky_j2")
+      throw SceneError(body.where, fmt::format("bodies[{}].material", b),
+                       fmt::format("scheme: implicit needs the material model hencky_j2 (the algorithmic stress of "
+                                   "eqs. 81-83, 90); body '{}' has material '{}' of model {}",
+                                   body.name, material.name, material.model));
+  }
+}
+
+}  // namespace
+
+std::any parse_implicit_solver(const io::YamlReader& reader, const io::YamlMap& solver_map,
+                               const SolverDescription& solver, const SceneDescription& scene) {
+  refuse_transfers(reader, solver_map, solver);
+  if (scene.grid.coordinates == Coordinates::axisymmetric)
+    reader.fail(*solver_map.find("scheme"),
+                "scheme: implicit is not available in axisymmetric coordinates yet (plane strain, 1D and 3D are)");
+  refuse_boundaries(scene);
+  refuse_materials(scene);
+  ImplicitOptions options;
+  if (const auto section = solver_map.find("implicit")) read_options(reader, *section, options);
+  return options;
+}
+
+void check_implicit_scene(const io::YamlReader& reader, const io::YamlMap& top, const SceneDescription&) {
+  for (const char* section : {"contact", "thermal"})
+    if (const auto value = top.find(section))
+      reader.fail(*value, fmt::format("scheme: implicit does not support the {} section yet", section));
+}
+
+}  // namespace mpm::implicit

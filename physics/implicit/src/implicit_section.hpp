@@ -1,0 +1,16 @@
+#pragma once
+// The scene side of the scheme `implicit`: its `solver.implicit:` keys and what it refuses.
+#include <any>
+
+#include "mpm/io/yaml_reader.hpp"
+#include "mpm/scene.hpp"
+
+namespace mpm::implicit {
+
+/// Reads `solver.implicit:` (ImplicitOptions) and refuses, at the offending key, what the scheme does not do.
+std::any parse_implicit_solver(const io::YamlReader& reader, const io::YamlMap& solver_map,
+                               const SolverDescription& solver, const SceneDescription& scene);
+/// After every section is read: refuses the module sections the scheme does not support yet (contact, thermal).
+void check_implicit_scene(const io::YamlReader& reader, const io::YamlMap& top, const SceneDescription& scene);
+
+}  // namespace mpm::implicit
