@@ -7,6 +7,8 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <unsupported/Eigen/IterativeSolvers>
 
@@ -166,6 +168,8 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
   SparseMatrix J;
   Eigen::SparseLU<SparseMatrix> lu;
   bool have_lu = false;
+  bool fresh_jacobian = false;  // rebuild when the last iteration reduced ||R|| by less than 10x
+  double previous = std::numeric_limits<double>::infinity();
   for (;; ++stats.iterations) {
     const double norm = r.norm();
     stats.last_residual = norm;
@@ -181,9 +185,11 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
       stats.failure = fmt::format("no convergence in {} Newton iterations", s.max_iterations);
       return stats;
     }
+    fresh_jacobian = !have_lu || norm > 0.1 * previous;
+    previous = norm;
     bool accepted = false;
     for (int attempt = 0; attempt < 2 && !accepted; ++attempt) {
-      if (!have_lu || attempt > 0) {  // a fresh Jacobian at the current iterate when the old one failed
+      if (fresh_jacobian || attempt > 0) {  // a fresh Jacobian at the current iterate when the old one is stale
         if (!finite_difference_jacobian(problem, x, r, J, stats)) break;
         lu.compute(J);
         have_lu = lu.info() == Eigen::Success;
@@ -209,13 +215,42 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
           break;
         }
       }
+      if (std::getenv("MPM_NEWTON_TRACE")) {
+        Index worst = 0;
+        r_trial.cwiseAbs().maxCoeff(&worst);
+        std::fprintf(stderr, "newton %d: |R| %.6e -> %.6e alpha %g gmres %d fresh %d worst dof %ld |r| %.3e\n",
+                     stats.iterations, norm, r_trial.norm(), alpha, static_cast<int>(gmres.iterations()),
+                     int(fresh_jacobian || attempt > 0), static_cast<long>(worst), std::abs(r_trial[worst]));
+      }
       if (accepted) {
         x = x_trial;
         r = r_trial;
       }
     }
+    // Levenberg-Marquardt: (J + mu diag|J|) dx = -R directly from the LU, mu growing, while Newton's direction
+    // (along which the line search found no decrease) fails: the step turns toward a scaled gradient-like one.
+    if (!accepted && J.rows() == n) {
+      Vector diagonal = J.diagonal().cwiseAbs();
+      for (double mu : {1e-4, 1e-2, 1.0, 1e2}) {
+        SparseMatrix regularised = J;
+        for (Index k = 0; k < n; ++k) regularised.coeffRef(static_cast<int>(k), static_cast<int>(k)) += mu * diagonal[k];
+        Eigen::SparseLU<SparseMatrix> lm;
+        lm.compute(regularised);
+        if (lm.info() != Eigen::Success) continue;
+        const Vector dx = lm.solve(Vector(-r));
+        x_trial = x + dx;
+        ++stats.residual_evaluations;
+        if (dx.allFinite() && problem.residual(x_trial, r_trial) && r_trial.norm() < norm) {
+          x = x_trial;
+          r = r_trial;
+          accepted = true;
+          have_lu = false;  // the next iteration builds a fresh Jacobian
+          break;
+        }
+      }
+    }
     if (!accepted) {
-      stats.failure = "the line search found no decrease of ||R|| along the Newton direction";
+      stats.failure = "neither the line search along the Newton direction nor a Levenberg-Marquardt step reduced ||R||";
       return stats;
     }
   }
