@@ -52,8 +52,7 @@ std::unique_ptr<Scheme<Dim>> make_extension_scheme(const SceneDescription& scene
   if constexpr (Dim == 1) make = e->make_1d;
   if constexpr (Dim == 2) make = e->make_2d;
   if constexpr (Dim == 3) make = e->make_3d;
-  if (!make)
-    throw std::invalid_argument("scheme '" + e->name + "' is not available in " + std::to_string(Dim) + "D");
+  if (!make) throw std::invalid_argument("scheme '" + e->name + "' is not available in " + std::to_string(Dim) + "D");
   return make(scene);
 }
 

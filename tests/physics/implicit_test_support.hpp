@@ -35,8 +35,8 @@ inline Real angular_momentum_z(const Simulation<2>& sim) {
   Real L = 0;
   for (const auto& b : sim.bodies())
     for (Index i = 0; i < b.particles.size(); ++i)
-      L += b.particles.mass[i] *
-           (b.particles.x[i][0] * b.particles.v[i][1] - b.particles.x[i][1] * b.particles.v[i][0]);
+      L +=
+          b.particles.mass[i] * (b.particles.x[i][0] * b.particles.v[i][1] - b.particles.x[i][1] * b.particles.v[i][0]);
   return L;
 }
 

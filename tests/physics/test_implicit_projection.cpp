@@ -40,7 +40,8 @@ struct Stencil {
 Stencil stencil(const Vec<2>& x, const GridGeometry<2>& g) {
   int base[2];
   Real wa[2][2], dwa[2][2];
-  for (int d = 0; d < 2; ++d) LinearHat::evaluate((x[d] - g.origin[d]) * g.inv_h[d], g.nodes[d], base[d], wa[d], dwa[d]);
+  for (int d = 0; d < 2; ++d)
+    LinearHat::evaluate((x[d] - g.origin[d]) * g.inv_h[d], g.nodes[d], base[d], wa[d], dwa[d]);
   Stencil s;
   for (int a = 0; a < 4; ++a) {
     const int i = a & 1, j = a >> 1;

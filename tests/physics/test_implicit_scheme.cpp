@@ -66,8 +66,8 @@ solver: {scheme: implicit, dt: @DT@, end_time: @END@, implicit: {newton_rtol: 1.
   std::printf(
       "[ measured ] spinning disk, dt = %.4f (10x explicit), %lld steps: energy %.2e of H0 = %.4f, angular momentum "
       "%.2e of %.4f, linear %.2e of %.4f; %.2f Newton iterations per step\n",
-      dt, static_cast<long long>(sim->step()), energy_drift / H0, H0, L_drift / std::abs(L0), L0, p_drift,
-      p0.norm(), newton / static_cast<Real>(sim->step()));
+      dt, static_cast<long long>(sim->step()), energy_drift / H0, H0, L_drift / std::abs(L0), L0, p_drift, p0.norm(),
+      newton / static_cast<Real>(sim->step()));
   EXPECT_EQ(sim->step(), 500);
   EXPECT_LT(energy_drift, 1e-8 * H0);
   EXPECT_LT(L_drift, 1e-10 * std::abs(L0));

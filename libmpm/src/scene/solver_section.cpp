@@ -110,17 +110,17 @@ void read_scheme(const YamlReader& reader, const YamlMap& map, SolverDescription
 void check_extension_keys(const YamlReader& reader, const YamlMap& map, const SolverDescription& solver) {
   for (const auto& [key, owner] : scheme_extension_solver_keys())
     if (const auto value = map.find(key); value && solver.extension_scheme != owner)
-      reader.fail(*value, fmt::format("{} applies to scheme: {} only; the scheme is {}", key, owner,
-                                      solver.scheme_name()));
+      reader.fail(*value,
+                  fmt::format("{} applies to scheme: {} only; the scheme is {}", key, owner, solver.scheme_name()));
 }
 
 }  // namespace
 
 SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
   const YamlMap map = reader.map(value);
-  std::vector<std::string> allowed{"scheme",        "shape_function",    "velocity_transfer", "flip_fraction",
-                                   "dt",            "cfl",               "end_time",          "mass_cutoff",
-                                   "gravity",       "snapshot_interval", "sort_interval",     "cpdi_domain_update"};
+  std::vector<std::string> allowed{
+      "scheme",  "shape_function",    "velocity_transfer", "flip_fraction",     "dt", "cfl", "end_time", "mass_cutoff",
+      "gravity", "snapshot_interval", "sort_interval",     "cpdi_domain_update"};
   for (const auto& [key, owner] : scheme_extension_solver_keys()) allowed.push_back(key);
   map.allow(allowed);
   SolverDescription solver;

@@ -29,8 +29,9 @@ void read_options(const io::YamlReader& reader, const io::YamlValue& value, Impl
 /// The transfer choices: (92) is the FLIP update of the grid increment, nothing else.
 void refuse_transfers(const io::YamlReader& reader, const io::YamlMap& map, const SolverDescription& solver) {
   if (const auto cfl = map.find("cfl"))
-    reader.fail(*cfl, "scheme: implicit takes a fixed time step dt (it is stable for any dt, Prop. 3.1); cfl "
-                      "is for the explicit schemes");
+    reader.fail(*cfl,
+                "scheme: implicit takes a fixed time step dt (it is stable for any dt, Prop. 3.1); cfl "
+                "is for the explicit schemes");
   if (solver.shape_function != "linear")
     reader.fail(*map.find("shape_function"),
                 fmt::format("scheme: implicit uses linear hats (the Q1/P0 cells of eqs. 88c-88e), not {}",
@@ -40,8 +41,9 @@ void refuse_transfers(const io::YamlReader& reader, const io::YamlMap& map, cons
                 "scheme: implicit updates particle velocities by the grid increment (eq. 92, FLIP); apic is not "
                 "available");
   if (const auto flip = map.find("flip_fraction"); flip && solver.flip_fraction != 1)
-    reader.fail(*flip, "scheme: implicit needs flip_fraction 1 (eq. 92: the energy and momentum proof, Cor. 3.2, "
-                       "holds for the FLIP update only)");
+    reader.fail(*flip,
+                "scheme: implicit needs flip_fraction 1 (eq. 92: the energy and momentum proof, Cor. 3.2, "
+                "holds for the FLIP update only)");
 }
 
 /// Walls must be fixed (zero) velocity components; tractions are not implemented yet.
@@ -56,8 +58,7 @@ void refuse_boundaries(const SceneDescription& scene) {
                          fmt::format("scheme: implicit supports walls at rest only (fixed, slip or velocity 0); "
                                      "component {} is '{}'",
                                      "xyz"[d], *face.component[d]));
-      if (face.traction[d])
-        throw SceneError(face.where, key, "scheme: implicit does not support tractions yet");
+      if (face.traction[d]) throw SceneError(face.where, key, "scheme: implicit does not support tractions yet");
     }
   }
 }

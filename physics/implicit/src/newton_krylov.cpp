@@ -233,7 +233,8 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
       Vector diagonal = J.diagonal().cwiseAbs();
       for (double mu : {1e-4, 1e-2, 1.0, 1e2}) {
         SparseMatrix regularised = J;
-        for (Index k = 0; k < n; ++k) regularised.coeffRef(static_cast<int>(k), static_cast<int>(k)) += mu * diagonal[k];
+        for (Index k = 0; k < n; ++k)
+          regularised.coeffRef(static_cast<int>(k), static_cast<int>(k)) += mu * diagonal[k];
         Eigen::SparseLU<SparseMatrix> lm;
         lm.compute(regularised);
         if (lm.info() != Eigen::Success) continue;

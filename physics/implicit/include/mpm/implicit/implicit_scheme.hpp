@@ -43,13 +43,19 @@ class ImplicitScheme final : public Scheme<Dim> {
 
   std::string_view step_log_file() const override { return "solver.csv"; }
   std::vector<std::string> step_log_columns() const override {
-    return {"step", "time", "newton_iterations", "gmres_iterations", "residual_evaluations", "first_residual",
-            "last_residual", "wall_seconds"};
+    return {"step",           "time",          "newton_iterations", "gmres_iterations", "residual_evaluations",
+            "first_residual", "last_residual", "wall_seconds"};
   }
   std::vector<double> step_log_row() const override {
     const StepRecord& r = record_;
-    return {static_cast<double>(r.step), r.time, double(r.newton_iterations), double(r.gmres_iterations),
-            double(r.residual_evaluations), r.first_residual, r.last_residual, r.wall_seconds};
+    return {static_cast<double>(r.step),
+            r.time,
+            double(r.newton_iterations),
+            double(r.gmres_iterations),
+            double(r.residual_evaluations),
+            r.first_residual,
+            r.last_residual,
+            r.wall_seconds};
   }
 
   /// Adds the mixed volume Theta (= 1, or J of a body read from a file) to every body (before the first snapshot).
@@ -72,8 +78,8 @@ class ImplicitScheme final : public Scheme<Dim> {
     Vector x(problem.size()), r(problem.size());
     for (Index k = 0; k < problem.size(); ++k) x[k] = ctx.dt * v_n_[dofs_.dofs[k].first][dofs_.dofs[k].second];
     const Real reference = residual_reference(problem, x, ctx.dt);
-    NewtonSettings settings{options_.newton_rtol,           options_.newton_atol, options_.max_newton_iterations,
-                            options_.linear_rtol,           options_.max_linear_iterations, options_.gmres_restart};
+    NewtonSettings settings{options_.newton_rtol, options_.newton_atol,           options_.max_newton_iterations,
+                            options_.linear_rtol, options_.max_linear_iterations, options_.gmres_restart};
     const NewtonStats stats = solve_newton_krylov(problem, x, reference, settings);
     record_ = {ctx.step,
                ctx.time + ctx.dt,

@@ -39,9 +39,9 @@ inline Real det_one_plus_minus_one(const Mat3& H) {
 /// wall; dof(node, d) or -1.
 template <int Dim>
 struct FreeDofs {
-  std::vector<Index> active;                  ///< grid nodes with mass, ascending
-  std::vector<std::array<Index, Dim>> index;  ///< per grid node: its dof per component, or -1
-  std::vector<std::pair<Index, int>> dofs;    ///< per dof: (grid node, component)
+  std::vector<Index> active;                       ///< grid nodes with mass, ascending
+  std::vector<std::array<Index, Dim>> index;       ///< per grid node: its dof per component, or -1
+  std::vector<std::pair<Index, int>> dofs;         ///< per dof: (grid node, component)
   std::array<std::vector<Index>, Dim> free_nodes;  ///< per component: the active nodes where it is free
 };
 
@@ -144,8 +144,8 @@ class MixedResidual final : public NonlinearProblem {
     const Update& u = update_[i];
     const Mat3 dC = plasticity::right_cauchy_green_increment(F_n, H);
     S_algo_[i] = plasticity::algorithmic_deviatoric_stress(pts_.S_n[i], plasticity::pull_back(F1_[i], u.dev_kirchhoff),
-                                                           pts_.W_n[i], u.stored_energy, u.dissipation,
-                                                           pts_.C_n[i], dC);  // (81)-(83)
+                                                           pts_.W_n[i], u.stored_energy, u.dissipation, pts_.C_n[i],
+                                                           dC);  // (81)-(83)
     DCJ_[i] = plasticity::jacobian_discrete_derivative(pts_.C_n[i], dC, J_n, J1);
     return S_algo_[i].allFinite() && DCJ_[i].allFinite();
   }
