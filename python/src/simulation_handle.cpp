@@ -98,7 +98,12 @@ class SimulationFor final : public SimulationHandle {
     if (!output_directory.empty()) {
       output_ = make_writer(output_directory);
       histories_ = std::make_unique<HistoryWriter<Dim>>(output_->directory(), std::move(histories));
+      // the scheme's own per-step table (the implicit scheme's solver.csv), as `mpm run` writes it
+      if (const std::string_view file = sim_->scheme().step_log_file(); !file.empty())
+        step_log_ = std::make_unique<io::CsvLog>(output_->directory() / std::string(file),
+                                                 sim_->scheme().step_log_columns());
     }
+    logged_step_ = sim_->step();
   }
 
   int dimension() const override { return Dim; }
@@ -292,6 +297,8 @@ class SimulationFor final : public SimulationHandle {
     changed_ = false;
   }
   void after_step() {
+    if (step_log_ && sim_->step() > logged_step_) step_log_->append(sim_->scheme().step_log_row());
+    logged_step_ = sim_->step();
     if (output_) output_->write_if_due(*sim_);
     if (histories_) histories_->write_if_due(*sim_);
   }
@@ -322,6 +329,8 @@ class SimulationFor final : public SimulationHandle {
   std::map<std::string, std::unique_ptr<OutputWriter<Dim>>> frames_;  ///< write_frame(), by directory
   std::unique_ptr<HistoryWriter<Dim>> histories_;                     ///< output.histories, beside output_
   std::vector<std::string> history_warnings_;
+  std::unique_ptr<io::CsvLog> step_log_;  ///< the scheme's per-step table (solver.csv), one row per step
+  Index logged_step_ = 0;                 ///< the last step with a row (after_step also runs before a step)
   io::FieldData field_data_;
   io::ViewScript view_script_;
   bool changed_ = false;

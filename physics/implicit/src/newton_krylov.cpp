@@ -158,8 +158,16 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
   NewtonStats stats;
   const Index n = problem.size();
   Vector r(n), r_trial(n), x_trial(n);
-  ++stats.residual_evaluations;
-  if (!problem.residual(x, r)) {
+  // The predictor may be inadmissible at a large dt (det F <= 0 where the projected velocity turns sharply):
+  // shorten it toward x = 0, which is always admissible (F_{n+1} = F_n).
+  bool admissible = false;
+  for (int k = 0; k <= 12 && !admissible; ++k) {
+    if (k == 12) x.setZero();
+    ++stats.residual_evaluations;
+    admissible = problem.residual(x, r);
+    if (!admissible) x *= 0.5;
+  }
+  if (!admissible) {
     stats.failure = "the start of the Newton iteration is inadmissible";
     return stats;
   }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mpm/grid.hpp"
+#include "mpm/implicit/free_dofs.hpp"
 
 namespace mpm::implicit {
 
@@ -72,34 +73,50 @@ class ConsistentMass {
   std::array<Index, neighbours> offset_;
 };
 
-/// Solves M v = b for one velocity component on the nodes `free` (every other node of v is held at 0), by
-/// preconditioned conjugate gradients (lumped mass), to ||b - M v|| <= rtol ||b||. v holds the start on entry.
-/// Returns the iterations taken, or -1 when the tolerance was not reached in `max_iterations`.
+/// Solves (87) for one velocity component d in the Galerkin form P^T M P v = P^T b (free_dofs.hpp: v at the
+/// masters `free` of d, at its slaves extrapolated; every other node of v is held at 0), by preconditioned conjugate
+/// gradients (the lumped mass of P^T M P's rows, diag P^T M_L P), to ||P^T (b - M P v)|| <= rtol ||P^T b||. v holds
+/// the start at the masters on entry and the solution at masters and slaves on return. Returns the iterations
+/// taken, or -1 when the tolerance was not reached in `max_iterations`.
 template <int Dim>
-int project_component(const ConsistentMass<Dim>& M, const std::vector<Index>& free, const std::vector<Real>& b,
+int project_component(const ConsistentMass<Dim>& M, const FreeDofs<Dim>& dofs, int d, const std::vector<Real>& b,
                       std::vector<Real>& v, Real rtol, int max_iterations) {
+  const std::vector<Index>& free = dofs.free_nodes[d];
   const std::size_t n = b.size();
-  std::vector<Real> r(n, 0), z(n, 0), p(n, 0), q(n, 0), x(n, 0);
+  std::vector<Index> rows = free;  // the rows M is applied on: masters and slaves
+  for (const auto& s : dofs.slaves[d]) rows.push_back(s.node);
+  std::vector<Real> r(n, 0), z(n, 0), p(n, 0), q(n, 0), x(n, 0), diag(n, 0), rhs(b);
+  for (Index a : rows) diag[a] = M.lumped(a);
+  for (const auto& s : dofs.slaves[d])
+    for (const auto& [node, c] : s.terms) diag[node] += c * c * diag[s.node];
+  dofs.restrict_to_masters(d, rhs);
+  const auto apply = [&](std::vector<Real>& u, std::vector<Real>& out) {  // out = P^T M P u at the masters
+    dofs.prolong(d, u);
+    M.multiply(rows, u, out);
+    dofs.restrict_to_masters(d, out);
+  };
   for (Index a : free) x[a] = v[a];
-  M.multiply(free, x, q);
+  apply(x, q);
   Real b2 = 0, rz = 0;
   for (Index a : free) {
-    r[a] = b[a] - q[a];
-    z[a] = r[a] / M.lumped(a);
+    r[a] = rhs[a] - q[a];
+    z[a] = r[a] / diag[a];
     p[a] = z[a];
-    b2 += b[a] * b[a];
+    b2 += rhs[a] * rhs[a];
     rz += r[a] * z[a];
   }
   const Real target = rtol * rtol * b2;
+  const auto finish = [&](int result) {
+    dofs.prolong(d, x);
+    for (Index a : rows) v[a] = x[a];
+    return result;
+  };
   for (int it = 0; it <= max_iterations; ++it) {
     Real r2 = 0;
     for (Index a : free) r2 += r[a] * r[a];
-    if (r2 <= target) {
-      for (Index a : free) v[a] = x[a];
-      return it;
-    }
+    if (r2 <= target) return finish(it);
     if (it == max_iterations) break;
-    M.multiply(free, p, q);
+    apply(p, q);
     Real pq = 0;
     for (Index a : free) pq += p[a] * q[a];
     if (!(pq > 0)) break;
@@ -108,15 +125,14 @@ int project_component(const ConsistentMass<Dim>& M, const std::vector<Index>& fr
     for (Index a : free) {
       x[a] += alpha * p[a];
       r[a] -= alpha * q[a];
-      z[a] = r[a] / M.lumped(a);
+      z[a] = r[a] / diag[a];
       rz_new += r[a] * z[a];
     }
     const Real beta = rz_new / rz;
     rz = rz_new;
     for (Index a : free) p[a] = z[a] + beta * p[a];
   }
-  for (Index a : free) v[a] = x[a];
-  return -1;
+  return finish(-1);
 }
 
 }  // namespace mpm::implicit

@@ -24,6 +24,9 @@ struct ImplicitOptions {
   int gmres_restart = 50;
   Real mass_rtol = 1e-12;  ///< conjugate-gradient tolerance of the projection (87), relative to ||sum N pi||
   VolumetricMode volumetric = VolumetricMode::mixed_cell;
+  /// A node whose particles cover less than this fraction of a cell's volume (sum N^A V_p / h^dim) is weak: its
+  /// components are extrapolated from two nodes further in (free_dofs.hpp; docs/theory.md §15). 0: none.
+  Real weak_node_fraction = 0.1;
 };
 
 }  // namespace mpm::implicit

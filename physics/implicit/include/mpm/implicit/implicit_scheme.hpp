@@ -15,6 +15,9 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
 #include <vector>
 
 #include "mpm/implicit/consistent_mass.hpp"
@@ -103,15 +106,21 @@ class ImplicitScheme final : public Scheme<Dim> {
     if (!mass_) mass_ = std::make_unique<ConsistentMass<Dim>>(ctx.grid.geometry);
     mass_->clear();
     std::vector<char> touched(nodes, 0);
+    std::vector<Real> fraction(nodes, 0);  // sum N^A V_p / cell volume (meridian volumes when axisymmetric)
+    Real cell_volume = 1;
+    for (int d = 0; d < Dim; ++d) cell_volume *= g.h[d];
     momentum_.assign(nodes, VecU<Dim>::Zero());
     f_ext_.assign(nodes, VecU<Dim>::Zero());
     const Vec<Dim> gravity = ctx.settings.gravity;
     for (Index i = 0; i < points_.size(); ++i) {
       mass_->add_particle(points_.mass[i], points_.node[i], points_.w[i]);
+      Real volume = points_.volume0[i] * points_.J_n[i] / cell_volume;
+      if (points_.axisymmetric) volume /= 2 * std::numbers::pi * ctx.bodies[points_.body[i]].particles.x[points_.index[i]][0];
       for (int a = 0; a < StepPoints<Dim>::count; ++a) {
         const Index A = points_.node[i][a];
         const Real w = points_.w[i][a];
         if (w > 0) touched[A] = 1;
+        fraction[A] += w * volume;
         momentum_[A] += w * points_.mass[i] * Vec<Dim>(points_.velocity[i]);
         f_ext_[A] += w * points_.mass[i] * gravity;
       }
@@ -119,27 +128,23 @@ class ImplicitScheme final : public Scheme<Dim> {
     // held components: what the wall conditions set to zero (all are at rest: the loader refuses the rest)
     std::vector<NodeVelocity<Dim>> probe(nodes, NodeVelocity<Dim>{VecU<Dim>::Ones(), VecU<Dim>::Ones()});
     ctx.boundary.apply(probe, &NodeVelocity<Dim>::mapped, ctx.time);
-    dofs_ = FreeDofs<Dim>{};
-    dofs_.index.assign(nodes, {});
-    for (Index a = 0; a < nodes; ++a) {
-      dofs_.index[a].fill(-1);
-      if (!touched[a]) continue;
-      dofs_.active.push_back(a);
-      for (int d = 0; d < Dim; ++d)
-        if (probe[a].mapped[d] != 0) {
-          dofs_.index[a][d] = static_cast<Index>(dofs_.dofs.size());
-          dofs_.dofs.emplace_back(a, d);
-          dofs_.free_nodes[d].push_back(a);
-        }
+    dofs_.build(g, touched, fraction, options_.weak_node_fraction,
+                [&](Index a, int d) { return probe[a].mapped[d] == 0; });
+    if (std::getenv("MPM_NEWTON_TRACE")) {  // the weak-node split of this step
+      Real weakest = 1e300;
+      Index at = -1;
+      for (const auto& [a, d] : dofs_.dofs)
+        if (fraction[a] < weakest) weakest = fraction[a], at = a;
+      std::fprintf(stderr, "step %ld: %zu masters, %ld slaves, %ld weak kept; weakest master node %ld fraction %.3e\n",
+                   static_cast<long>(ctx.step), dofs_.dofs.size(), static_cast<long>(dofs_.slave_count()),
+                   static_cast<long>(dofs_.weak_kept), static_cast<long>(at), weakest);
     }
     v_n_.assign(nodes, VecU<Dim>::Zero());
     for (int d = 0; d < Dim; ++d) {
       std::vector<Real> b(nodes, 0), v(nodes, 0);
-      for (Index a : dofs_.free_nodes[d]) {
-        b[a] = momentum_[a][d];
-        v[a] = b[a] / mass_->lumped(a);  // the lumped-mass velocity as the start
-      }
-      const int its = project_component(*mass_, dofs_.free_nodes[d], b, v, options_.mass_rtol,
+      for (Index a : dofs_.active) b[a] = probe[a].mapped[d] != 0 ? momentum_[a][d] : 0;
+      for (Index a : dofs_.free_nodes[d]) v[a] = b[a] / mass_->lumped(a);  // the lumped-mass velocity as the start
+      const int its = project_component(*mass_, dofs_, d, b, v, options_.mass_rtol,
                                         10 * static_cast<int>(dofs_.free_nodes[d].size()) + 100);
       if (its < 0) {
         StabilityReport report;
@@ -148,6 +153,7 @@ class ImplicitScheme final : public Scheme<Dim> {
         throw StabilityError(report);
       }
       for (Index a : dofs_.free_nodes[d]) v_n_[a][d] = v[a];
+      for (const auto& slave : dofs_.slaves[d]) v_n_[slave.node][d] = v[slave.node];
     }
   }
 
@@ -173,7 +179,7 @@ class ImplicitScheme final : public Scheme<Dim> {
     const auto& dphi = problem.increment();
     const Index nodes = ctx.grid.geometry.node_count();
     std::vector<VecU<Dim>> dv(nodes, VecU<Dim>::Zero());
-    for (const auto& [a, d] : dofs_.dofs) dv[a][d] = 2 * dphi[a][d] / ctx.dt - 2 * v_n_[a][d];  // v_{n+1} - v_n
+    for (Index a : dofs_.active) dv[a] = 2 * dphi[a] / ctx.dt - 2 * v_n_[a];  // v_{n+1} - v_n (0 where held)
     const auto& F1 = problem.deformation_gradient();
     const auto& update = problem.update();
     const auto& theta = problem.mixed_volume();

@@ -1,7 +1,8 @@
 #pragma once
 /// \file mixed_residual.hpp
 /// The residual of one implicit step (ref. 003 eqs. 88a-91; docs/theory.md §15), in the unknowns Delta phi at
-/// the free degrees of freedom (grid node and velocity component, walls removed):
+/// the master degrees of freedom (grid node and velocity component, walls removed; the weak nodes' components
+/// are slaves, u = P y, and the residual is P^T R: free_dofs.hpp):
 ///   R = 2 M (Delta phi - dt v_n) / dt^2 + F^int_{n+1/2} - F^ext                      (88a with 88b)
 ///   F^int,A = sum_pt (F_{n+1/2} S^h) F_n^T grad_n N^A Omega_0                      (89a)
 ///   F^ext,A = sum_pt m b N^A                                                        (89b, gravity)
@@ -16,11 +17,13 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <vector>
 
 #include "mpm/implicit/consistent_mass.hpp"
+#include "mpm/implicit/free_dofs.hpp"
 #include "mpm/implicit/implicit_options.hpp"
 #include "mpm/implicit/nonlinear_problem.hpp"
 #include "mpm/implicit/step_points.hpp"
@@ -34,16 +37,6 @@ inline Real det_one_plus_minus_one(const Mat3& H) {
   const Real i2 = 0.5 * (tr * tr - (H * H).trace());
   return tr + i2 + H.determinant();
 }
-
-/// The free degrees of freedom of a step: nodes touched by a particle (N^A > 0) and components not held by a
-/// wall; dof(node, d) or -1.
-template <int Dim>
-struct FreeDofs {
-  std::vector<Index> active;                       ///< grid nodes with mass, ascending
-  std::vector<std::array<Index, Dim>> index;       ///< per grid node: its dof per component, or -1
-  std::vector<std::pair<Index, int>> dofs;         ///< per dof: (grid node, component)
-  std::array<std::vector<Index>, Dim> free_nodes;  ///< per component: the active nodes where it is free
-};
 
 template <int Dim>
 class MixedResidual final : public NonlinearProblem {
@@ -62,6 +55,7 @@ class MixedResidual final : public NonlinearProblem {
     inertia_.assign(g.node_count(), VecU<Dim>::Zero());
     force_.assign(g.node_count(), VecU<Dim>::Zero());
     lag_.assign(g.node_count(), VecU<Dim>::Zero());
+    full_.assign(g.node_count(), VecU<Dim>::Zero());
     Index cells = 1;
     for (int d = 0; d < Dim; ++d) cells *= g.nodes[d];  // indexed by the lower node: node-sized is enough
     cell_volume_.assign(cells, 0), cell_dJ_.assign(cells, 0), cell_pD_.assign(cells, 0);
@@ -80,16 +74,16 @@ class MixedResidual final : public NonlinearProblem {
     scatter(x);
     if (!evaluate_points()) return false;
     assemble_forces();
-    // inertia 2 M (Delta phi - dt v_n) / dt^2 (88a with 88b), per component on its free nodes
+    // inertia 2 M (Delta phi - dt v_n) / dt^2 (88a with 88b); Delta phi and v_n are zero at held components
     const Real c = 2 / (dt_ * dt_);
-    for (Index a : dofs_.active)
-      for (int d = 0; d < Dim; ++d) lag_[a][d] = dofs_.index[a][d] >= 0 ? dphi_[a][d] - dt_ * v_n_[a][d] : 0;
+    for (Index a : dofs_.active) lag_[a] = dphi_[a] - dt_ * v_n_[a];
     M_.multiply(dofs_.active, lag_, inertia_);
+    for (Index a : dofs_.active) full_[a] = c * inertia_[a] + force_[a] - f_ext_[a];
+    for (int d = 0; d < Dim; ++d)  // P^T R: a slave's equation goes to the masters it is extrapolated from
+      for (const auto& s : dofs_.slaves[d])
+        for (const auto& [node, w] : s.terms) full_[node][d] += w * full_[s.node][d];
     r.resize(size());
-    for (Index k = 0; k < size(); ++k) {
-      const auto [a, d] = dofs_.dofs[k];
-      r[k] = c * inertia_[a][d] + force_[a][d] - f_ext_[a][d];
-    }
+    for (Index k = 0; k < size(); ++k) r[k] = full_[dofs_.dofs[k].first][dofs_.dofs[k].second];
     return r.allFinite();
   }
 
@@ -105,6 +99,11 @@ class MixedResidual final : public NonlinearProblem {
   void scatter(const Vector& x) {
     for (Index a : dofs_.active) dphi_[a].setZero();
     for (Index k = 0; k < size(); ++k) dphi_[dofs_.dofs[k].first][dofs_.dofs[k].second] = x[k];
+    for (int d = 0; d < Dim; ++d)
+      for (const auto& s : dofs_.slaves[d]) {
+        dphi_[s.node][d] = 0;
+        for (const auto& [node, c] : s.terms) dphi_[s.node][d] += c * dphi_[node][d];
+      }
   }
 
  private:
@@ -189,34 +188,66 @@ class MixedResidual final : public NonlinearProblem {
     }
   }
 
-  /// Column groups: a dof (node A, component d) couples with every dof of the nodes sharing a cell with A, so
-  /// nodes three apart on some axis never share a row: colour (d, i mod 3, j mod 3, k mod 3).
+  /// The Jacobian's sparsity and column groups. A master dof j moves Delta phi at its node and at the slaves
+  /// extrapolated from it; the full residual changes at every free component of the nodes sharing a cell with
+  /// those; P^T sends a slave's row to its masters. Columns that share no row form a group (greedy colouring
+  /// in dof order: 3^Dim x Dim groups without slaves, as nodes three apart never share a row).
   void build_coupling() {
     const Index n = size();
-    constexpr int colours = ConsistentMass<Dim>::neighbours;
-    groups_.assign(static_cast<std::size_t>(colours) * Dim, {});
+    const Index nodes = g_.node_count();
+    std::vector<std::vector<Index>> moved(nodes);  // per node: the master dofs that move it
+    for (Index k = 0; k < n; ++k) moved[dofs_.dofs[k].first].push_back(k);
+    std::vector<std::array<std::vector<std::pair<Index, Real>>, Dim>> slave_terms(nodes);
+    for (int d = 0; d < Dim; ++d)
+      for (const auto& s : dofs_.slaves[d])
+        for (const auto& [node, w] : s.terms) {
+          moved[s.node].push_back(dofs_.index[node][d]);
+          slave_terms[s.node][d].emplace_back(node, w);
+        }
+    // per master dof: the nodes whose Delta phi it moves, then the rows of P^T R it reaches
+    std::vector<std::vector<Index>> touches(n);
+    for (Index a = 0; a < nodes; ++a)
+      for (Index k : moved[a]) touches[k].push_back(a);
     rows_.assign(n, {});
     for (Index k = 0; k < n; ++k) {
-      const auto [a, d] = dofs_.dofs[k];
-      const auto ijk = g_.node_indices(a);
-      int colour = 0;
-      for (int e = Dim - 1; e >= 0; --e) colour = 3 * colour + ijk[e] % 3;
-      groups_[static_cast<std::size_t>(d) * colours + colour].push_back(k);
-      for (int o = 0; o < colours; ++o) {
-        std::array<int, Dim> nb{};
-        bool inside = true;
-        for (int e = 0, r = o; e < Dim; ++e, r /= 3) {
-          nb[e] = ijk[e] + r % 3 - 1;
-          inside = inside && nb[e] >= 0 && nb[e] < g_.nodes[e];
-        }
-        if (!inside) continue;
-        Index b = 0;
-        for (int e = 0; e < Dim; ++e) b += nb[e] * g_.stride[e];
-        for (int c = 0; c < Dim; ++c)
-          if (dofs_.index[b][c] >= 0) rows_[k].push_back(dofs_.index[b][c]);
-      }
+      std::vector<Index>& rows = rows_[k];
+      for (Index a : touches[k])
+        for_each_neighbour(a, [&](Index b) {
+          for (int c = 0; c < Dim; ++c) {
+            if (dofs_.index[b][c] >= 0) rows.push_back(dofs_.index[b][c]);
+            for (const auto& [node, w] : slave_terms[b][c]) rows.push_back(dofs_.index[node][c]);
+          }
+        });
+      std::sort(rows.begin(), rows.end());
+      rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
     }
-    std::erase_if(groups_, [](const auto& group) { return group.empty(); });
+    // greedy colouring: a column joins the first group none of whose columns shares one of its rows
+    groups_.clear();
+    std::vector<std::vector<char>> used;  // per group: the rows its columns reach
+    for (Index k = 0; k < n; ++k) {
+      std::size_t colour = 0;
+      for (; colour < groups_.size(); ++colour)
+        if (std::none_of(rows_[k].begin(), rows_[k].end(), [&](Index r) { return used[colour][r] != 0; })) break;
+      if (colour == groups_.size()) groups_.emplace_back(), used.emplace_back(n, 0);
+      groups_[colour].push_back(k);
+      for (Index r : rows_[k]) used[colour][r] = 1;
+    }
+  }
+
+  /// Calls f for every grid node within one cell of node a on every axis (a included).
+  template <class F>
+  void for_each_neighbour(Index a, F&& f) const {
+    const auto ijk = g_.node_indices(a);
+    for (int o = 0; o < ConsistentMass<Dim>::neighbours; ++o) {
+      Index b = 0;
+      bool inside = true;
+      for (int e = 0, r = o; e < Dim; ++e, r /= 3) {
+        const int j = ijk[e] + r % 3 - 1;
+        inside = inside && j >= 0 && j < g_.nodes[e];
+        b += j * g_.stride[e];
+      }
+      if (inside) f(b);
+    }
   }
 
   const StepPoints<Dim>& pts_;
@@ -231,7 +262,7 @@ class MixedResidual final : public NonlinearProblem {
   std::vector<Mat3> F1_, S_algo_, DCJ_, P_;
   std::vector<Real> dJ_, theta1_, pressure_;
   std::vector<Update> update_;
-  std::vector<VecU<Dim>> dphi_, inertia_, force_, lag_;
+  std::vector<VecU<Dim>> dphi_, inertia_, force_, lag_, full_;
   std::vector<Real> cell_volume_, cell_dJ_, cell_pD_;
   std::vector<std::vector<Index>> groups_, rows_;
 };
