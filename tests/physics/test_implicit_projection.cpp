@@ -82,7 +82,9 @@ TEST_P(ImplicitProjection, ReproducesALinearVelocityFieldAndConservesMomentum) {
     }
     FreeDofs<2> dofs;
     dofs.build(g, touched, fraction, weak_fraction, [](Index, int) { return false; });
-    if (weak_fraction > 0) EXPECT_GT(dofs.slave_count(), 0);
+    if (weak_fraction > 0) {
+      EXPECT_GT(dofs.slave_count(), 0);
+    }
     Real max_error = 0, scale = 0;
     Vec<2> grid_momentum = Vec<2>::Zero();
     for (int d = 0; d < 2; ++d) {
@@ -96,9 +98,11 @@ TEST_P(ImplicitProjection, ReproducesALinearVelocityFieldAndConservesMomentum) {
         grid_momentum[d] += M.lumped(n) * v[n];  // sum_A sum_B M^AB v_B (eq. 93)
       }
     }
-    std::printf("[ measured ] weak fraction %.2f (%ld slaves): seed %u: linear field max error %.2e of %.2f; momentum %.2e of %.2f\n", weak_fraction,
-                static_cast<long>(dofs.slave_count()), seed, max_error,
-                scale, (grid_momentum - momentum).norm(), momentum.norm());
+    std::printf(
+        "[ measured ] weak fraction %.2f (%ld slaves): seed %u: linear field max error %.2e of %.2f; momentum %.2e of "
+        "%.2f\n",
+        weak_fraction, static_cast<long>(dofs.slave_count()), seed, max_error, scale, (grid_momentum - momentum).norm(),
+        momentum.norm());
     EXPECT_LT(max_error, 1e-12 * scale);
     EXPECT_LT((grid_momentum - momentum).norm(), 1e-13 * momentum.norm());
   }

@@ -81,9 +81,6 @@ void refuse_materials(const SceneDescription& scene) {
 std::any parse_implicit_solver(const io::YamlReader& reader, const io::YamlMap& solver_map,
                                const SolverDescription& solver, const SceneDescription& scene) {
   refuse_transfers(reader, solver_map, solver);
-  if (scene.grid.coordinates == Coordinates::axisymmetric)
-    reader.fail(*solver_map.find("scheme"),
-                "scheme: implicit is not available in axisymmetric coordinates yet (plane strain, 1D and 3D are)");
   refuse_boundaries(scene);
   refuse_materials(scene);
   ImplicitOptions options;

@@ -215,10 +215,13 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
       if (!dx.allFinite()) continue;
       // backtracking: halve while inadmissible or without sufficient decrease (Armijo, 1e-4)
       double alpha = 1;
+      int inadmissible = 0;
       for (int k = 0; k < 12; ++k, alpha *= 0.5) {
         x_trial = x + alpha * dx;
         ++stats.residual_evaluations;
-        if (problem.residual(x_trial, r_trial) && r_trial.norm() <= (1 - 1e-4 * alpha) * norm) {
+        const bool ok = problem.residual(x_trial, r_trial);
+        inadmissible += ok ? 0 : 1;
+        if (ok && r_trial.norm() <= (1 - 1e-4 * alpha) * norm) {
           accepted = true;
           break;
         }
@@ -226,9 +229,12 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
       if (std::getenv("MPM_NEWTON_TRACE")) {
         Index worst = 0;
         r_trial.cwiseAbs().maxCoeff(&worst);
-        std::fprintf(stderr, "newton %d: |R| %.6e -> %.6e alpha %g gmres %d fresh %d worst dof %ld |r| %.3e\n",
-                     stats.iterations, norm, r_trial.norm(), alpha, static_cast<int>(gmres.iterations()),
-                     int(fresh_jacobian || attempt > 0), static_cast<long>(worst), std::abs(r_trial[worst]));
+        std::fprintf(stderr,
+                     "newton %d: |R| %.6e -> %.6e alpha %g (%d inadmissible) |dx| %.3e gmres %d fresh %d worst dof %ld "
+                     "|r| %.3e\n",
+                     stats.iterations, norm, r_trial.norm(), alpha, inadmissible, dx.norm(),
+                     static_cast<int>(gmres.iterations()), int(fresh_jacobian || attempt > 0), static_cast<long>(worst),
+                     std::abs(r_trial[worst]));
       }
       if (accepted) {
         x = x_trial;
@@ -238,6 +244,7 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
     // Levenberg-Marquardt: (J + mu diag|J|) dx = -R directly from the LU, mu growing, while Newton's direction
     // (along which the line search found no decrease) fails: the step turns toward a scaled gradient-like one.
     if (!accepted && J.rows() == n) {
+      const double current = r.norm();
       Vector diagonal = J.diagonal().cwiseAbs();
       for (double mu : {1e-4, 1e-2, 1.0, 1e2}) {
         SparseMatrix regularised = J;
@@ -249,7 +256,7 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
         const Vector dx = lm.solve(Vector(-r));
         x_trial = x + dx;
         ++stats.residual_evaluations;
-        if (dx.allFinite() && problem.residual(x_trial, r_trial) && r_trial.norm() < norm) {
+        if (dx.allFinite() && problem.residual(x_trial, r_trial) && r_trial.norm() < current) {
           x = x_trial;
           r = r_trial;
           accepted = true;

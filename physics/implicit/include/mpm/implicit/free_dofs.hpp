@@ -115,7 +115,8 @@ struct FreeDofs {
   /// The grid line (B, C) = (A + s, A + 2 s), s in {-1, 0, 1}^Dim \ {0}, with both nodes resolved for component d
   /// (masters; also slaves unless strong_only) that is best covered (largest smaller fraction; the first on a
   /// tie), or (-1, -1).
-  static std::pair<Index, Index> best_line(const GridGeometry<Dim>& g, Index a, int d, const std::vector<Real>& fraction,
+  static std::pair<Index, Index> best_line(const GridGeometry<Dim>& g, Index a, int d,
+                                           const std::vector<Real>& fraction,
                                            const std::vector<std::array<char, Dim>>& state, bool strong_only) {
     const auto ijk = g.node_indices(a);
     std::pair<Index, Index> best{-1, -1};

@@ -115,7 +115,8 @@ class ImplicitScheme final : public Scheme<Dim> {
     for (Index i = 0; i < points_.size(); ++i) {
       mass_->add_particle(points_.mass[i], points_.node[i], points_.w[i]);
       Real volume = points_.volume0[i] * points_.J_n[i] / cell_volume;
-      if (points_.axisymmetric) volume /= 2 * std::numbers::pi * ctx.bodies[points_.body[i]].particles.x[points_.index[i]][0];
+      if (points_.axisymmetric)
+        volume /= 2 * std::numbers::pi * ctx.bodies[points_.body[i]].particles.x[points_.index[i]][0];
       for (int a = 0; a < StepPoints<Dim>::count; ++a) {
         const Index A = points_.node[i][a];
         const Real w = points_.w[i][a];
