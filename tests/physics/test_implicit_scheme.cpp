@@ -174,43 +174,5 @@ TEST(ImplicitScheme, CollidingCylindersWithMuslForComparison) {
   EXPECT_GT(r.L_drift, 1e-6 * std::abs(r.L0));  // MUSL's lumped transfers lose angular momentum
 }
 
-// The Love & Sulsky copper bar (§4.1: R0 = 3.2 mm, L0 = 32.4 mm, K = 130 GPa, G = 43.3 GPa, sigma_Y = 0.4 GPa,
-// H = 0.1 GPa, rho_0 = 8930 kg/m^3; 9 x 50 cells on [0, 7.2] x [0, 32.4] mm; dt = 1 us, 80 steps) axisymmetric,
-// onto the slip wall z = 0 at 20 m/s (the impact stress rho c v = 0.82 GPa yields the foot): the axisymmetric
-// residual (hoop terms of 89a and 91) keeps the identity H_0 - H_n = sum Delta D Omega_0 and H never rises. At the
-// paper's 227 m/s Newton does not converge yet (docs/theory.md §15, open problem).
-TEST(ImplicitScheme, AxisymmetricBarImpactDissipatesEnergyOnly) {
-  auto sim = simulation_from_yaml<2>(R"(
-dimension: 2
-grid: {coordinates: axisymmetric, extent: [0.0072, 0.0324], cell_size: [0.0008, 0.000648], boundary: {y_min: slip}}
-materials:
-  copper: {model: hencky_j2, density: 8930, bulk_modulus: 130e9, shear_modulus: 43.3e9, yield_stress: 0.4e9,
-           hardening_modulus: 0.1e9}
-bodies: [{material: copper, shape: {type: box, min: [0, 0], max: [3.2e-3, 32.4e-3]}, velocity: [0, -20]}]
-solver: {scheme: implicit, dt: 1.0e-6, end_time: 8.0e-5}
-)");
-  const auto e0 = sim->energy();
-  const Real H0 = e0.kinetic + e0.strain;
-  Real H_prev = H0, max_rise = 0, identity = 0, plastic = 0, newton = 0;
-  sim->run([&](const Simulation<2>& s) {
-    const auto e = s.energy();
-    const Real H = e.kinetic + e.strain;
-    max_rise = std::max(max_rise, H - H_prev);
-    H_prev = H;
-    identity = std::max(identity, std::abs(H0 - H - e.plastic_work));
-    plastic = e.plastic_work;
-    newton += solver_record(s).newton_iterations;
-  });
-  std::printf(
-      "[ measured ] axisymmetric bar at 20 m/s, %lld steps: H0 = %.4f J, largest rise %.2e H0, |H0 - H - sum "
-      "dD| %.2e H0, plastic work %.2f%% of H0, %.2f Newton iterations per step\n",
-      static_cast<long long>(sim->step()), H0, max_rise / H0, identity / H0, 100 * plastic / H0,
-      newton / static_cast<Real>(sim->step()));
-  EXPECT_EQ(sim->step(), 80);
-  EXPECT_LE(max_rise, 1e-9 * H0);
-  EXPECT_LT(identity, 1e-8 * H0);
-  EXPECT_GT(plastic, 0.01 * H0);  // the foot yields
-}
-
 }  // namespace
 }  // namespace mpm::test
