@@ -20,6 +20,9 @@
 #ifdef MPM_WITH_PLASTICITY
 #include "plasticity_cases.hpp"
 #endif
+#ifdef MPM_WITH_IMPLICIT
+#include "implicit_cases.hpp"
+#endif
 #ifdef MPM_WITH_THERMAL
 #include "thermal_cases.hpp"
 #endif
@@ -201,6 +204,9 @@ std::vector<VerificationCase> catalogue(bool quick, int refinements) {
 #endif
 #ifdef MPM_WITH_PLASTICITY
   add_plasticity_cases(list, quick, refinements);
+#endif
+#ifdef MPM_WITH_IMPLICIT
+  add_implicit_cases(list, quick, refinements);
 #endif
 #ifdef MPM_WITH_THERMAL
   add_thermal_cases(list, quick, refinements);
