@@ -13,6 +13,9 @@
 /// the rest, implicit_section.cpp).
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 #include <chrono>
 #include <cstdio>
@@ -92,7 +95,22 @@ class ImplicitScheme final : public Scheme<Dim> {
                stats.first_residual,
                stats.last_residual,
                0};
-    if (!stats.converged) fail(ctx, stats);
+    if (!stats.converged) {
+      if (std::getenv("MPM_NEWTON_TRACE") && problem.residual(x, r)) {  // where the residual stays
+        std::vector<Index> order(static_cast<std::size_t>(r.size()));
+        for (Index k = 0; k < r.size(); ++k) order[k] = k;
+        std::partial_sort(order.begin(), order.begin() + std::min<Index>(6, r.size()), order.end(),
+                          [&](Index a, Index b) { return std::abs(r[a]) > std::abs(r[b]); });
+        for (Index j = 0; j < std::min<Index>(6, r.size()); ++j) {
+          const auto [node, d] = dofs_.dofs[order[j]];
+          const Vec<Dim> at = g.node_position(g.node_indices(node));
+          std::fprintf(stderr, "  dof %ld (node %ld at %s, component %d): R = %.4e, lumped mass %.3e\n",
+                       static_cast<long>(order[j]), static_cast<long>(node),
+                       fmt::format("{}", fmt::join(at, ", ")).c_str(), d, r[order[j]], mass_->lumped(node));
+        }
+      }
+      fail(ctx, stats);
+    }
     if (!problem.residual(x, r)) fail(ctx, stats);  // the accepted iterate, evaluated once more for the commit
     update_particles(ctx, problem);
     record_.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
