@@ -100,8 +100,8 @@ class SimulationFor final : public SimulationHandle {
       histories_ = std::make_unique<HistoryWriter<Dim>>(output_->directory(), std::move(histories));
       // the scheme's own per-step table (the implicit scheme's solver.csv), as `mpm run` writes it
       if (const std::string_view file = sim_->scheme().step_log_file(); !file.empty())
-        step_log_ = std::make_unique<io::CsvLog>(output_->directory() / std::string(file),
-                                                 sim_->scheme().step_log_columns());
+        step_log_ =
+            std::make_unique<io::CsvLog>(output_->directory() / std::string(file), sim_->scheme().step_log_columns());
     }
     logged_step_ = sim_->step();
   }

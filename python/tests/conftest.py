@@ -23,13 +23,24 @@ def files(directory):
     return sorted(p.relative_to(directory).as_posix() for p in pathlib.Path(directory).rglob("*") if p.is_file())
 
 
+def without_wall_time(path):
+    """The lines of a CSV table without its `wall_seconds` column (the implicit scheme's solver.csv)."""
+    lines = pathlib.Path(path).read_text().splitlines()
+    column = lines[0].split(",").index("wall_seconds")
+    return [",".join(v for k, v in enumerate(line.split(",")) if k != column) for line in lines]
+
+
 def assert_same_output(a, b):
     """Two output directories hold the same files, each byte for byte but the frames (.vtu, .vti), whose field
     data name the run that wrote them (threads, command line): their coordinates and field values must be
-    exactly equal (`mpm diff` with zero tolerances). Returns the file names."""
+    exactly equal (`mpm diff` with zero tolerances); and tables with a `wall_seconds` column, equal but for it.
+    Returns the file names."""
     names = files(a)
     assert files(b) == names
-    same = [n for n in names if not n.endswith((".vtu", ".vti"))]
+    timed = [n for n in names if n.endswith(".csv") and "wall_seconds" in (pathlib.Path(a) / n).read_text().split("\n")[0]]
+    for n in timed:
+        assert without_wall_time(pathlib.Path(a) / n) == without_wall_time(pathlib.Path(b) / n), n
+    same = [n for n in names if not n.endswith((".vtu", ".vti")) and n not in timed]
     match, mismatch, errors = filecmp.cmpfiles(a, b, same, shallow=False)
     assert mismatch == [] and errors == [], mismatch + errors
     status, out, err = run_mpm("diff", a, b, "--tolerance", 0, "--absolute", 0)

@@ -178,6 +178,22 @@ TEST(Diff, EqualForAnyThreadCountDifferentWhenTheSceneChanges) {
   fs::remove_all(dir);
 }
 
+// A table's wall_seconds column (the implicit scheme's solver.csv) is a wall time, not a result: mpm diff skips it
+// and compares every other column.
+TEST(Diff, SkipsTheWallTimeColumn) {
+  const auto dir = scratch("diff_wall");
+  for (const char* run : {"a", "b", "c"}) fs::create_directories(dir / run);
+  std::ofstream(dir / "a" / "solver.csv") << "step,newton_iterations,wall_seconds\n1,4,0.0123\n2,5,0.0456\n";
+  std::ofstream(dir / "b" / "solver.csv") << "step,newton_iterations,wall_seconds\n1,4,0.0987\n2,5,0.0654\n";
+  std::ofstream(dir / "c" / "solver.csv") << "step,newton_iterations,wall_seconds\n1,4,0.0123\n2,6,0.0456\n";
+  const auto same = mpm("diff " + (dir / "a").string() + " " + (dir / "b").string(), dir);
+  EXPECT_EQ(same.status, 0) << same.out << same.err;
+  const auto other = mpm("diff " + (dir / "a").string() + " " + (dir / "c").string(), dir);
+  EXPECT_EQ(other.status, 1) << other.out << other.err;
+  EXPECT_NE(other.out.find("newton_iterations"), std::string::npos) << other.out;
+  fs::remove_all(dir);
+}
+
 TEST(VerifyCommand, BadQuantitiesAreRefusedBeforeAnyRun) {
   const auto dir = scratch("verify_bad");
   std::ofstream(dir / "disks.yaml") << disks;
