@@ -298,6 +298,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   check_output_against_shape_function(scene, shape);
 
   std::vector<Body<Dim>> bodies;
+  bodies.reserve(scene.bodies.size());
   bool track_corners = false;
   for (int k = 0; k < static_cast<int>(scene.bodies.size()); ++k)
     bodies.push_back(build_body<Dim>(scene, k, geometry, shape, track_corners));
