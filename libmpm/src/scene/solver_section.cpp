@@ -1,5 +1,5 @@
 // `solver:` (docs/scene-reference.md, solver): scheme, shape function (checked against the grid), velocity
-// transfer, CPDI domain update, time step and the intervals of the guard and the sorting.
+// transfer, CPDI domain update, time step, the intervals of the guard and the sorting, and the energy sentinel.
 #include <fmt/format.h>
 
 #include "mpm/scheme.hpp"
@@ -97,7 +97,8 @@ void read_time_step(const YamlReader& reader, const YamlMap& map, SolverDescript
 SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
   const YamlMap map = reader.map(value);
   map.allow({"scheme", "shape_function", "velocity_transfer", "flip_fraction", "dt", "cfl", "end_time", "mass_cutoff",
-             "gravity", "snapshot_interval", "sort_interval", "cpdi_domain_update"});
+             "gravity", "snapshot_interval", "sort_interval", "cpdi_domain_update", "energy_tolerance",
+             "on_energy_drift"});
   SolverDescription solver;
   if (const auto scheme = map.find("scheme")) solver.scheme = reader.choice<SchemeKind>(*scheme);
   if (const auto shape_function = map.find("shape_function")) {
@@ -113,6 +114,10 @@ SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, 
     solver.gravity = reader.vector(*gravity, scene.dimension, Range::any(), "m/s^2");
   if (const auto interval = map.find("snapshot_interval")) solver.snapshot_interval = reader.integer(*interval, 1);
   if (const auto interval = map.find("sort_interval")) solver.sort_interval = reader.integer(*interval, 1);
+  // The energy sentinel (energy_sentinel.hpp): a fraction of the largest energy of the run so far.
+  if (const auto tolerance = map.find("energy_tolerance"))
+    solver.energy_tolerance = reader.number(*tolerance, Range::above(0), "");
+  if (const auto action = map.find("on_energy_drift")) solver.on_energy_drift = reader.choice<EnergyDriftAction>(*action);
   return solver;
 }
 
