@@ -3,22 +3,12 @@
 // built simulation, and centre-of-mass quantities of a body.
 #include <gtest/gtest.h>
 
-#include <map>
 #include <string>
 
 #include "../libmpm/scene_fixture.hpp"
 #include "mpm/contact/multi_velocity_contact.hpp"
 
 namespace mpm::test {
-
-inline std::string fill(std::string text, const std::map<std::string, std::string>& values) {
-  for (const auto& [key, value] : values) {
-    const std::string marker = "@" + key + "@";
-    for (auto at = text.find(marker); at != std::string::npos; at = text.find(marker, at + value.size()))
-      text.replace(at, marker.size(), value);
-  }
-  return text;
-}
 
 template <int Dim>
 contact::MultiVelocityContact<Dim>* contact_module(Simulation<Dim>& sim) {

@@ -1,5 +1,6 @@
 #pragma once
 // Helpers for tests that build simulations from YAML text.
+#include <map>
 #include <memory>
 #include <string>
 
@@ -8,6 +9,16 @@
 #include "mpm/scene_loader.hpp"
 
 namespace mpm::test {
+
+/// `text` with every @KEY@ replaced by its value (scene templates of the tests).
+inline std::string fill(std::string text, const std::map<std::string, std::string>& values) {
+  for (const auto& [key, value] : values) {
+    const std::string marker = "@" + key + "@";
+    for (auto at = text.find(marker); at != std::string::npos; at = text.find(marker, at + value.size()))
+      text.replace(at, marker.size(), value);
+  }
+  return text;
+}
 
 template <int Dim>
 std::unique_ptr<Simulation<Dim>> simulation_from_yaml(const std::string& yaml, const std::string& name = "test.yaml") {

@@ -1,21 +1,12 @@
 #pragma once
-// Helpers of the implicit scheme's tests: scenes from YAML text, the scheme's solver record, momenta.
-#include <map>
+// Helpers of the implicit scheme's tests: the scheme's solver record, momenta (scenes from YAML text with
+// @KEY@ placeholders: scene_fixture.hpp).
 #include <string>
 
 #include "../libmpm/scene_fixture.hpp"
 #include "mpm/implicit/implicit_scheme.hpp"
 
 namespace mpm::test {
-
-inline std::string with(std::string text, const std::map<std::string, std::string>& values) {
-  for (const auto& [key, value] : values) {
-    const std::string marker = "@" + key + "@";
-    for (auto at = text.find(marker); at != std::string::npos; at = text.find(marker, at + value.size()))
-      text.replace(at, marker.size(), value);
-  }
-  return text;
-}
 
 template <int Dim>
 const implicit::StepRecord& solver_record(const Simulation<Dim>& sim) {

@@ -58,7 +58,7 @@ materials: {m: {model: hencky_j2, density: 1, bulk_modulus: 6.667, shear_modulus
 bodies: [{material: m, shape: {type: disk, center: [0, 0], radius: 0.8}, velocity: ["0.002 - 0.2 * y", "0.2 * x"]}]
 solver: {@SOLVER@, end_time: @END@}
 )";
-  auto sim = simulation_from_yaml<2>(with(scene, {{"SOLVER", solver}, {"END", fmt::format("{:.17g}", end)}}));
+  auto sim = simulation_from_yaml<2>(fill(scene, {{"SOLVER", solver}, {"END", fmt::format("{:.17g}", end)}}));
   SpinRun r;
   r.H0 = sim->energy().total(), r.L0 = angular_momentum_z(*sim);
   const Vec<2> p0 = linear_momentum(*sim);
@@ -119,7 +119,7 @@ struct CylinderRun {
 };
 
 CylinderRun run_cylinders(const std::string& scheme, const std::string& options, bool implicit) {
-  auto sim = simulation_from_yaml<2>(with(cylinders, {{"SCHEME", scheme}, {"OPTIONS", options}}));
+  auto sim = simulation_from_yaml<2>(fill(cylinders, {{"SCHEME", scheme}, {"OPTIONS", options}}));
   CylinderRun r;
   const auto e0 = sim->energy();
   r.H0 = e0.kinetic + e0.strain;

@@ -28,7 +28,7 @@ solver: {@SOLVER@, dt: 1.0e-6, end_time: 8.0e-5}
 TEST(ImplicitLargeStep, ExplicitSchemesRefuseTheStepWithTheirBound) {
   for (const char* scheme : {"usl", "musl", "usf"}) {
     try {
-      simulation_from_yaml<2>(with(bar, {{"SOLVER", std::string("scheme: ") + scheme}}));
+      simulation_from_yaml<2>(fill(bar, {{"SOLVER", std::string("scheme: ") + scheme}}));
       ADD_FAILURE() << scheme << " accepted dt = 1 us";
     } catch (const SceneError& e) {
       const std::string message = e.what();
@@ -40,7 +40,7 @@ TEST(ImplicitLargeStep, ExplicitSchemesRefuseTheStepWithTheirBound) {
 }
 
 TEST(ImplicitLargeStep, AxisymmetricBarRunsAtSevenTimesTheExplicitBoundAndOnlyDissipates) {
-  auto sim = simulation_from_yaml<2>(with(bar, {{"SOLVER", "scheme: implicit"}}));
+  auto sim = simulation_from_yaml<2>(fill(bar, {{"SOLVER", "scheme: implicit"}}));
   const auto e0 = sim->energy();
   const Real H0 = e0.kinetic + e0.strain;
   Real H_prev = H0, max_rise = 0, identity = 0, plastic = 0, newton = 0;

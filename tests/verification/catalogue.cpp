@@ -1,5 +1,7 @@
 #include "catalogue.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -8,6 +10,7 @@
 
 #include "axisymmetric_cases.hpp"
 #include "mms.hpp"
+#include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/scheme.hpp"
@@ -45,42 +48,6 @@ CaseRun from(const Result& r, double error) {
   return c;
 }
 
-/// Bar vibration, mode 1 (review §6.1.1): max |v_cm - v0/(beta L) cos(omega t)| over one period, relative
-/// to the amplitude 0.063662 (eq. 6.4). E = 100, rho = 1, L = 25, nu = 0, 2 particles per cell, dt = 0.1 h/c.
-CaseRun bar_mode1(const std::string& scheme, const std::string& shape, int cells) {
-  const double L = 25, h = L / cells, amplitude = 0.2 / std::numbers::pi, omega = 2 * std::numbers::pi / 10;
-  const int extra = shape == "linear" ? 2 : 4;  // free cells beyond the free end (even, for bernstein)
-  const std::string yaml =
-      "dimension: 1\n"
-      "grid: {origin: [0], extent: [" +
-      std::to_string(h * (cells + extra)) + "], cell_size: " + std::to_string(h) +
-      ", boundary: {x_min: fixed}}\n"
-      "materials: {bar: {model: linear_elastic, density: 1, youngs_modulus: 100, poisson_ratio: 0}}\n"
-      "bodies: [{material: bar, shape: {type: box, min: [0], max: [25]}, particles_per_cell: 2,\n"
-      "          velocity: [\"0.1*sin(_pi*x/50)\"]}]\n"
-      "solver: {scheme: " +
-      scheme + ", shape_function: " + shape + ", dt: " + std::to_string(0.01 * h) + ", end_time: 10}\n";
-  CaseRun run;
-  run.h = h;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    auto sim = app::build_simulation<1>(parse_scene(yaml, "bar_mode1"));
-    run.particles = sim->particle_count();
-    double worst = 0;
-    sim->run([&](const Simulation<1>& s) {
-      const auto e = s.energy();
-      worst = std::max(worst, std::abs(e.momentum[0] / e.mass - amplitude * std::cos(omega * s.time())));
-    });
-    run.steps = sim->step();
-    run.error = worst / amplitude;
-  } catch (const StabilityError& e) {
-    run.error = inf;
-    run.failure = e.what();
-  }
-  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return run;
-}
-
 /// The elastic cases of the core engine (review §6.1-6.2, the 000 paper).
 void add_elastic_cases(std::vector<VerificationCase>& list, bool quick, int refinements) {
   const auto ladder = [&](std::vector<int> full, std::size_t keep) {
@@ -95,7 +62,8 @@ void add_elastic_cases(std::vector<VerificationCase>& list, bool quick, int refi
   // Bar vibration (review §6.1.1): every method of 1D.
   for (const auto& [scheme, shape] : methods(1))
     add_case(list, "bar_mode1", 1, "exact modal solution, review eq. 6.4", "max |v_cm error| / amplitude (-)", scheme,
-             shape, ladder({8, 16, 32, 64}, 3), [scheme, shape](int n) { return bar_mode1(scheme, shape, n); });
+             shape, ladder({8, 16, 32, 64}, 3),
+             [scheme, shape](int n) { return run_bar_mode1({.scheme = scheme, .shape = shape, .cells = n}); });
 
   // Manufactured solutions (review §6.2.1-6.2.2, App. A): every method in 1D and 2D, linear and cubic
   // B-spline functions with every scheme in 3D.
@@ -174,6 +142,47 @@ void add_elastic_cases(std::vector<VerificationCase>& list, bool quick, int refi
 }
 
 }  // namespace
+
+CaseRun run_bar_mode1(const BarMode1Spec& spec) {
+  const double L = 25, h = L / spec.cells, c = 10;
+  const double amplitude = 2 * spec.v0 / std::numbers::pi, omega = 2 * std::numbers::pi / 10;
+  const int extra = spec.shape == "linear" ? 2 : 4;  // free cells beyond the free end (even, for bernstein)
+  const std::string yaml =
+      "dimension: 1\n"
+      "grid: {origin: [0], extent: [" +
+      std::to_string(h * (spec.cells + extra)) + "], cell_size: " + std::to_string(h) +
+      ", boundary: {x_min: fixed}}\n"
+      "materials: {bar: " +
+      spec.material +
+      "}\n"
+      "bodies: [{material: bar, shape: {type: box, min: [0], max: [25]}, particles_per_cell: 2,\n"
+      "          velocity: [\"" +
+      fmt::format("{}", spec.v0) +
+      "*sin(_pi*x/50)\"]}]\n"
+      "solver: {scheme: " +
+      spec.scheme + ", shape_function: " + spec.shape + ", dt: " + std::to_string(spec.courant * h / c) +
+      ", end_time: 10}\n";
+  CaseRun run;
+  run.h = h;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    app::register_modules();  // a module's material (hencky_j2) or scheme (implicit)
+    auto sim = app::build_simulation<1>(parse_scene(yaml, "bar_mode1"));
+    run.particles = sim->particle_count();
+    double worst = 0;
+    sim->run([&](const Simulation<1>& s) {
+      const auto e = s.energy();
+      worst = std::max(worst, std::abs(e.momentum[0] / e.mass - amplitude * std::cos(omega * s.time())));
+    });
+    run.steps = sim->step();
+    run.error = worst / amplitude;
+  } catch (const StabilityError& e) {
+    run.error = inf;
+    run.failure = e.what();
+  }
+  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
 
 void add_case(std::vector<VerificationCase>& list, const std::string& family, int dimension, std::string reference,
               std::string measure, const std::string& scheme, const std::string& shape, std::vector<int> resolutions,

@@ -47,6 +47,18 @@ void add_case(std::vector<VerificationCase>& list, const std::string& family, in
 /// `refinements` (ignored when quick): continue every ladder by that many geometric steps (the full report).
 std::vector<VerificationCase> catalogue(bool quick = false, int refinements = 0);
 
+/// The vibrating bar of review §6.1.1 (L = 25 m, fixed at x = 0, c = 10 m/s, 2 particles per cell), released in
+/// mode 1 at v0: max over one period of |v_cm - (2 v0 / pi) cos(2 pi t / 10)| relative to the amplitude
+/// (eq. 6.4), dt = courant h / c.
+struct BarMode1Spec {
+  std::string material = "{model: linear_elastic, density: 1, youngs_modulus: 100, poisson_ratio: 0}";
+  std::string scheme, shape;
+  int cells = 8;
+  double courant = 0.1;
+  double v0 = 0.1;  ///< m/s
+};
+CaseRun run_bar_mode1(const BarMode1Spec& spec);
+
 /// Every (scheme, shape function) pair the engine accepts in `dimension`: each scheme with each shape
 /// function of that dimension (CPDI elements exist in one dimension; Lagrange quadratic only with TLMPM).
 /// Taken from the engine's own tables, so a new scheme or shape function joins the cases that use this.
