@@ -29,25 +29,6 @@ Vec<Dim> body_velocity(const Body<Dim>& body) {
   return mv / m;
 }
 
-/// Total linear momentum of all bodies.
-template <int Dim>
-Vec<Dim> total_momentum(const Simulation<Dim>& sim) {
-  Vec<Dim> p = Vec<Dim>::Zero();
-  for (const auto& b : sim.bodies())
-    for (Index i = 0; i < b.particles.size(); ++i) p += b.particles.mass[i] * Vec<Dim>(b.particles.v[i]);
-  return p;
-}
-
-/// Angular momentum about the origin, sum m_p x_p x v_p (2D: the z component).
-inline Real angular_momentum(const Simulation<2>& sim) {
-  Real L = 0;
-  for (const auto& b : sim.bodies())
-    for (Index i = 0; i < b.particles.size(); ++i)
-      L +=
-          b.particles.mass[i] * (b.particles.x[i][0] * b.particles.v[i][1] - b.particles.x[i][1] * b.particles.v[i][0]);
-  return L;
-}
-
 /// Least-squares slope of y(t).
 inline double slope(const std::vector<double>& t, const std::vector<double>& y) {
   double st = 0, sy = 0, stt = 0, sty = 0;

@@ -26,4 +26,23 @@ std::unique_ptr<Simulation<Dim>> simulation_from_yaml(const std::string& yaml, c
   return app::build_simulation<Dim>(parse_scene(yaml, name));
 }
 
+/// Total linear momentum of all bodies.
+template <int Dim>
+Vec<Dim> total_momentum(const Simulation<Dim>& sim) {
+  Vec<Dim> p = Vec<Dim>::Zero();
+  for (const auto& b : sim.bodies())
+    for (Index i = 0; i < b.particles.size(); ++i) p += b.particles.mass[i] * Vec<Dim>(b.particles.v[i]);
+  return p;
+}
+
+/// Angular momentum about the origin, sum m_p x_p x v_p (2D: the z component).
+inline Real angular_momentum(const Simulation<2>& sim) {
+  Real L = 0;
+  for (const auto& b : sim.bodies())
+    for (Index i = 0; i < b.particles.size(); ++i)
+      L +=
+          b.particles.mass[i] * (b.particles.x[i][0] * b.particles.v[i][1] - b.particles.x[i][1] * b.particles.v[i][0]);
+  return L;
+}
+
 }  // namespace mpm::test

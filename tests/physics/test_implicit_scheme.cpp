@@ -60,13 +60,13 @@ solver: {@SOLVER@, end_time: @END@}
 )";
   auto sim = simulation_from_yaml<2>(fill(scene, {{"SOLVER", solver}, {"END", fmt::format("{:.17g}", end)}}));
   SpinRun r;
-  r.H0 = sim->energy().total(), r.L0 = angular_momentum_z(*sim);
-  const Vec<2> p0 = linear_momentum(*sim);
+  r.H0 = sim->energy().total(), r.L0 = angular_momentum(*sim);
+  const Vec<2> p0 = total_momentum(*sim);
   r.p0 = p0.norm();
   sim->run([&](const Simulation<2>& s) {
     r.energy_drift = std::max(r.energy_drift, std::abs(s.energy().total() - r.H0));
-    r.L_drift = std::max(r.L_drift, std::abs(angular_momentum_z(s) - r.L0));
-    r.p_drift = std::max(r.p_drift, (linear_momentum(s) - p0).norm());
+    r.L_drift = std::max(r.L_drift, std::abs(angular_momentum(s) - r.L0));
+    r.p_drift = std::max(r.p_drift, (total_momentum(s) - p0).norm());
     if (implicit) r.newton += solver_record(s).newton_iterations;
   });
   r.steps = sim->step();
@@ -123,9 +123,9 @@ CylinderRun run_cylinders(const std::string& scheme, const std::string& options,
   CylinderRun r;
   const auto e0 = sim->energy();
   r.H0 = e0.kinetic + e0.strain;
-  const Vec<2> p0 = linear_momentum(*sim);
+  const Vec<2> p0 = total_momentum(*sim);
   r.p0 = p0.norm();
-  r.L0 = angular_momentum_z(*sim);
+  r.L0 = angular_momentum(*sim);
   Real H_prev = r.H0;
   sim->run([&](const Simulation<2>& s) {
     const auto e = s.energy();
@@ -134,8 +134,8 @@ CylinderRun run_cylinders(const std::string& scheme, const std::string& options,
     H_prev = H;
     r.identity = std::max(r.identity, std::abs(r.H0 - H - e.plastic_work));  // eq. 107
     r.plastic = e.plastic_work;
-    r.p_drift = std::max(r.p_drift, (linear_momentum(s) - p0).norm());
-    r.L_drift = std::max(r.L_drift, std::abs(angular_momentum_z(s) - r.L0));
+    r.p_drift = std::max(r.p_drift, (total_momentum(s) - p0).norm());
+    r.L_drift = std::max(r.L_drift, std::abs(angular_momentum(s) - r.L0));
     if (implicit) {
       r.newton += solver_record(s).newton_iterations;
       r.gmres += solver_record(s).gmres_iterations;
