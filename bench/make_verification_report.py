@@ -31,6 +31,25 @@ SCHEME_NAMES = {"usl": "USL", "musl": "MUSL", "usf": "USF", "tlmpm": "TLMPM"}
 # ---- reading -------------------------------------------------------------------------------------------
 
 
+# The measurements the hint table's FLIP row rests on (tests/slow/test_energy_sentinel_disks.cpp asserts them;
+# `mpm run` of the scene printed by that test gives the numbers), and what the table is.
+ENERGY_SENTINEL_TEXT = (
+    "After every step the energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8) "
+    "compares the balance E(t) − E(0) − W with 0.05 of the largest energy of the run so far; the stability "
+    "guard's stops are recorded by the flight recorder (`failure/`, docs/scene-reference.md). Both quote the "
+    "one hint table below (`libmpm/src/energy_hints.cpp`, printed here by `verification_report`): the first row "
+    "whose condition holds for the run's method, with the measurement it rests on.\n\n"
+    "The case of issue 21, the two disks of `examples/02_two_disks` at 200 cells per side, dt = 0.002 s "
+    "(40,216 particles, MUSL, 1,750 steps to 3.5 s; `tests/slow/test_energy_sentinel_disks.cpp`), total energy "
+    "change at 3.5 s (largest over frames every 0.05 s):\n\n"
+    "| transfer, shape function | energy change at 3.5 s | largest | sentinel |\n|---|---|---|---|\n"
+    "| FLIP, linear | +37.3% | +37.3% (3.5 s) | warns |\n"
+    "| flip_fraction 0.99, linear | −19.6% | +4e-6 | silent |\n"
+    "| flip_fraction 0.9, linear | −27.7% | +2e-6 | silent |\n"
+    "| FLIP, quadratic_bspline | +1.14% | +1.41% (3.25 s) | silent |\n"
+    "| FLIP, cpgimp | +2.00% | +2.05% (3.35 s) | silent |\n")
+
+
 def read_csv(path):
     if not os.path.exists(path):
         return []
@@ -386,6 +405,12 @@ def main():
             w(f"| {r['case']} | {r['description']} | {r['outcome']} | {r['summary']} | {r['all_output_finite']} "
               f"| {fmt(number(r['wall_seconds']), '.2f')} |")
         w("")
+        hints = os.path.join(args.csv_dir, "energy_hints.md")
+        if os.path.exists(hints):
+            w("### Energy sentinel and the hint table\n")
+            w(ENERGY_SENTINEL_TEXT)
+            with open(hints) as f:
+                w(f.read())
 
     # Per case
     w("## Cases\n")

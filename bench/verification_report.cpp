@@ -23,6 +23,7 @@
 
 #include "catalogue.hpp"
 #include "cfl_limit.hpp"
+#include "mpm/energy_hints.hpp"
 #include "stability_cases.hpp"
 
 namespace {
@@ -193,6 +194,7 @@ const char* outcome(const v::StabilityOutcome& r) {
 }
 
 void run_stability(const Options& o) {
+  std::ofstream(o.out / "energy_hints.md") << mpm::energy_hint_table();  // docs/VERIFICATION.md's hint table
   std::ofstream csv(o.out / "stability.csv");
   csv << "case,description,outcome,measured,all_output_finite,wall_seconds,summary\n";
   for (const auto& s : v::stability_cases()) {

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "mpm/app/flight_recorder.hpp"
 #include "mpm/app/memory_estimate.hpp"
 #include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_description.hpp"
@@ -16,6 +17,7 @@
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/app/stop_signals.hpp"
 #include "mpm/history/history_writer.hpp"
+#include "mpm/energy_sentinel.hpp"
 #include "mpm/memory_budget.hpp"
 #include "mpm/output_writer.hpp"
 
@@ -90,6 +92,33 @@ void check(const SceneDescription& scene, std::ostream& out) {
   const MemoryBudget budget = available_memory();
   fmt::print(out, "memory: about {} estimated before building ({:.4g} particles, {} grid nodes), {} available ({})\n",
              format_bytes(memory.bytes()), memory.particles(), memory.nodes, format_bytes(budget.bytes), budget.source);
+}
+
+/// The command that runs `scene` as `options` did (for the flight recorder's diagnosis).
+std::string run_command(const SceneDescription& scene, const RunOptions& options) {
+  std::string command = "mpm run " + scene.file;
+  if (options.output_directory) command += " -o " + options.output_directory->string();
+  if (options.end_time) command += fmt::format(" --end-time {}", *options.end_time);
+  if (options.steps) command += fmt::format(" --steps {}", *options.steps);
+  if (options.restart) command += " --restart " + options.restart->string();
+  for (const auto& line : options.overrides) command += "  # with " + line;
+  return command;
+}
+
+/// After the guard stopped the run: the flight recorder's failure/ (flight_recorder.hpp). A failure to write it
+/// is logged; the run still ends with the guard's error.
+template <int Dim>
+void record_flight(Simulation<Dim>& sim, const StabilityReport& report, const EnergySentinel<Dim>* sentinel,
+                   const SceneDescription& scene, const RunOptions& options, const std::filesystem::path& directory,
+                   std::ostream& log) {
+  try {
+    const FlightRecord r = record_failure(sim, report, sentinel ? sentinel->context() : HintContext{}, directory,
+                                          scene.output.fields, run_command(scene, options));
+    fmt::print(log, "flight recorder: {} (steps {} to {}, {} frames; diagnosis.txt)\n", r.directory.string(),
+               r.first_step, report.step, r.frames);
+  } catch (const std::exception& e) {
+    fmt::print(log, "flight recorder: failure/ not written: {}\n", e.what());
+  }
 }
 
 /// The command line's changes to the scene, as "key: value" lines (recorded in the output files).
@@ -204,12 +233,33 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
                std::chrono::duration<double>(Clock::now() - t0).count());
   };
 
+  // The energy sentinel (energy_sentinel.hpp): its warning on the step it finds the drift, once.
+  const EnergySentinel<Dim>* sentinel = nullptr;
+  for (const auto& m : sim->modules())
+    if (const auto* s = dynamic_cast<const EnergySentinel<Dim>*>(m.get())) sentinel = s;
+  auto check_energy = [&](const Simulation<Dim>& s) {
+    if (!sentinel || !sentinel->drift() || sentinel->drift()->step != s.step()) return;
+    const std::string message = sentinel->drift()->message();
+    if (options.progress) log << '\n';
+    if (sentinel->action() == EnergyDriftAction::stop) {
+      StabilityReport report;
+      report.step = s.step();
+      report.time = s.time();
+      report.field = "energy_balance";
+      report.detail = message + " (solver.on_energy_drift: stop)";
+      throw StabilityError(report);
+    }
+    record.warnings.push_back(message);
+    fmt::print(log, "warning: {}\n", message);
+  };
+
   const auto start = Clock::now();
   const Index first_step = sim->step();  // 0, or the step a restart continues
   auto last_print = start;
   auto after_step = [&](const Simulation<Dim>& s) {
     if (step_log) step_log->append(s.scheme().step_log_row());
     write(s, false);
+    check_energy(s);
     if (s.step() % 50 == 0) check_state(s);
     if (checkpoints.due(s.time())) write_checkpoint(s);
     debug_raise_at_step(s.step());
@@ -229,10 +279,11 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   };
   try {
     sim->run(after_step, options.steps ? std::optional<Index>(*options.steps) : std::nullopt);
-  } catch (const StabilityError&) {
+  } catch (const StabilityError& e) {
     writer.write(*sim);  // the simulation was rolled back to the last good step
     histories.write(*sim);
     if (options.progress) log << '\n';
+    if (e.report().particle >= 0) record_flight(*sim, e.report(), sentinel, scene, options, writer.directory(), log);
     throw;
   } catch (const StopRequested&) {
     // The checkpoint first, then the last frame: a restart replaces that frame (it is after the checkpoint).
@@ -259,6 +310,12 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
       static_cast<double>(summary.particles) * (summary.steps - first_step) / std::max(summary.wall_seconds, 1e-300);
   const Real e1 = sim->energy().total();
   summary.relative_energy_change = e0 != 0 ? (e1 - e0) / std::abs(e0) : e1;
+  if (sentinel) {
+    summary.largest_energy_ratio = sentinel->largest_ratio();
+    summary.largest_energy_ratio_step = sentinel->largest_ratio_step();
+    fmt::print(log, "energy sentinel: largest balance / tolerance {:.4g} (step {}), external work {:.6g} J\n",
+               summary.largest_energy_ratio, summary.largest_energy_ratio_step, sentinel->work());
+  }
   fmt::print(log,
              "done: {} steps to t = {:.6g} s in {:.3f} s wall, {:.4g} particle-updates/s, {} particles ({} B state "
              "each), relative energy change {:+.3e}; output in {}\n",

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 
 #include "mpm/app/key_location.hpp"
@@ -11,6 +12,7 @@
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/axisymmetric.hpp"
 #include "mpm/cpdi_corner_tracking.hpp"
+#include "mpm/energy_sentinel.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/field_keys.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
@@ -21,6 +23,7 @@
 #include "mpm/material_registry.hpp"
 #include "mpm/memory_budget.hpp"
 #include "mpm/output_fields.hpp"
+#include "mpm/reaction_provider.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
 #include "mpm/scheme_extension.hpp"
@@ -286,6 +289,40 @@ std::vector<Body<Dim>> prototype_bodies(const SceneDescription& scene, const Gri
   return bodies;
 }
 
+// TEMPORARY (measurement of the audit's cost): MPM_SENTINEL_INTERVAL steps between audits.
+int sentinel_interval() {
+  const char* v = std::getenv("MPM_SENTINEL_INTERVAL");
+  return v ? std::atoi(v) : 1;
+}
+
+/// The energy sentinel of every run (energy_sentinel.hpp), with the rigid partners of the modules that hold the
+/// bodies (reaction_provider.hpp) and the method it quotes hints for.
+template <int Dim>
+void add_energy_sentinel(const SceneDescription& scene, Simulation<Dim>& sim) {
+  HintContext context;
+  context.scheme = scene.solver.scheme;
+  context.shape_function = scene.solver.shape_function;
+  context.transfer = scene.solver.velocity_transfer;
+  context.flip_fraction = scene.solver.flip_fraction;
+  context.fixed_dt = scene.solver.dt.has_value();
+  std::vector<typename EnergySentinel<Dim>::Partner> partners;
+  for (const auto& m : sim.modules()) {
+    context.contact = context.contact || m->name() == "contact";
+    const auto* provider = dynamic_cast<const ReactionProvider<Dim>*>(m.get());
+    if (!provider) continue;
+    const auto names = provider->reaction_partners();
+    for (int k = 0; k < static_cast<int>(names.size()); ++k) {
+      int body = -1;
+      for (const auto& b : sim.bodies())
+        if (b.name == names[static_cast<std::size_t>(k)]) body = b.index;
+      partners.push_back({provider, k, body});
+    }
+  }
+  sim.add_module(std::make_shared<EnergySentinel<Dim>>(scene.solver.energy_tolerance, scene.solver.on_energy_drift,
+                                                       context, sim.energy(), sim.boundary().does_work(),
+                                                       std::move(partners), sentinel_interval()));
+}
+
 template <int Dim>
 std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
   const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
@@ -314,6 +351,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   for (auto& m : modules) sim->add_module(std::move(m));
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));
+  add_energy_sentinel<Dim>(scene, *sim);  // last: its E(0) is the audit of the complete initial state
   check_fixed_time_step<Dim>(scene, *sim);
   check_time_step(estimate_steps<Dim>(scene, *sim), scene);  // 0, infinite, or too small to reach end_time
   check_initial_state<Dim>(scene, *sim);

@@ -1,6 +1,9 @@
 #include "mpm/boundary_conditions.hpp"
 
+#include <algorithm>
+
 #include "mpm/axisymmetric.hpp"
+#include "mpm/exact_sum.hpp"
 #include "mpm/expression.hpp"
 
 namespace mpm {
@@ -90,6 +93,35 @@ void GridBoundary<Dim>::apply_traction(std::vector<NodeRecord<Dim>>& node, Real 
       if (n.mass > 0) n.force[k.component] += value * k.area[j];
     }
   }
+}
+
+template <int Dim>
+bool GridBoundary<Dim>::does_work() const {
+  return !tractions_.empty() ||
+         std::any_of(constraints_.begin(), constraints_.end(), [](const Constraint& k) { return k.value != nullptr; });
+}
+
+template <int Dim>
+Real GridBoundary<Dim>::work(const std::vector<NodeRecord<Dim>>& node, const std::vector<NodeVelocity<Dim>>& velocity,
+                             const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt) const {
+  ExactSum w;
+  for (const auto& k : constraints_) {
+    if (!k.value) continue;  // v = 0: no work
+    const Real v = (*k.value)(0, 0, 0, t + 0.5 * dt);
+    if (v == 0) continue;
+    const Real a = ((*k.value)(0, 0, 0, t + dt) - (*k.value)(0, 0, 0, t)) / dt;
+    const int c = k.component;
+    for (Index n : k.nodes)
+      if (const NodeRecord<Dim>& r = node[n]; r.mass > mass_cutoff)
+        w += (r.mass * a - (r.force[c] + r.mass * gravity[c])) * v * dt;
+  }
+  for (const auto& k : tractions_) {
+    const Real value = (*k.value)(0, 0, 0, t);
+    for (std::size_t j = 0; j < k.nodes.size(); ++j)
+      if (const Index n = k.nodes[j]; node[n].mass > 0)
+        w += value * k.area[j] * 0.5 * (velocity[n].mapped[k.component] + velocity[n].updated[k.component]) * dt;
+  }
+  return w.value();
 }
 
 template class GridBoundary<1>;

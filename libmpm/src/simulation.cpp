@@ -8,12 +8,16 @@
 #include <limits>
 
 #include "mpm/axisymmetric.hpp"
+#include "mpm/energy_audit.hpp"
 
 namespace mpm {
 
 StabilityError::StabilityError(const StabilityReport& r)
-    : std::runtime_error(fmt::format("stability guard: step {} (t = {:.9g} s), body '{}', particle {}, field '{}': {}",
-                                     r.step, r.time, r.body, r.particle, r.field, r.detail)),
+    : std::runtime_error(
+          r.field == "energy_balance"
+              ? r.detail
+              : fmt::format("stability guard: step {} (t = {:.9g} s), body '{}', particle {}, field '{}': {}", r.step,
+                            r.time, r.body, r.particle, r.field, r.detail)),
       report_(r) {}
 
 template <int Dim>
@@ -101,7 +105,7 @@ Real Simulation<Dim>::time_step_toward(Real target_time) const {
 }
 
 template <int Dim>
-void Simulation<Dim>::take_step(Real dt) {
+void Simulation<Dim>::take_step(Real dt, bool guard) {
   if (scheme_->reorders_particles() && settings_.sort_interval > 0 && step_ % settings_.sort_interval == 0)
     for (auto& b : bodies_) b.particles.gather(order_by_cell(b.particles, grid_.geometry));
   StepContext<Dim> ctx{grid_, bodies_, settings_.transfer, boundary_, hooks_};
@@ -112,7 +116,9 @@ void Simulation<Dim>::take_step(Real dt) {
   hooks_.before_step(ctx);
   scheme_->advance(ctx);
   hooks_.end_of_step(ctx);
-  if (ctx.guard_tripped.load()) {
+  if (guard && ctx.guard_tripped.load()) {
+    failure_ = std::make_unique<Snapshot>(snapshot_);  // for the flight recorder (replay_failure)
+    failure_->dts_since.push_back(dt);
     StabilityReport report = diagnose(dt);
     report.step = step_ + 1;
     report.time = time_;
@@ -184,6 +190,23 @@ void Simulation<Dim>::roll_back_to_previous_step() {
 }
 
 template <int Dim>
+bool Simulation<Dim>::replay_failure(const std::function<void(const Simulation&)>& after_step) {
+  if (!failure_) return false;
+  const Snapshot start = *failure_;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b].particles = start.particles[b];
+  time_ = start.time;
+  step_ = start.step;
+  wave_speed_ = start.wave_speed;
+  for (const auto& m : hooks_.all()) m->restore_state(start.modules, module_prefix(*m));
+  if (after_step) after_step(*this);
+  for (std::size_t k = 0; k < start.dts_since.size(); ++k) {
+    take_step(start.dts_since[k], k + 1 < start.dts_since.size());
+    if (after_step) after_step(*this);
+  }
+  return true;
+}
+
+template <int Dim>
 StabilityReport Simulation<Dim>::diagnose(Real dt) const {
   StabilityReport r;
   const auto& g = grid_.geometry;
@@ -227,34 +250,16 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
 }
 
 template <int Dim>
-void Simulation<Dim>::add_body_energy(const Body<Dim>& b, EnergySums& e) const {
-  // One exactly summed term per particle and quantity: the audit is the same bits for any storage order
-  // (sorting, shuffled input) and any split of the particles (threads, ranks): docs/distributed.md §1.
-  const Vec<Dim>& g = settings_.transfer.gravity;
-  const auto& p = b.particles;
-  for (Index i = 0; i < p.size(); ++i) {
-    const Real m = p.mass[i];
-    e.kinetic += 0.5 * m * p.v[i].squaredNorm();
-    e.gravity += -(m * g.dot(Vec<Dim>(p.x[i])));
-    for (int d = 0; d < Dim; ++d) e.momentum[d] += m * p.v[i][d];
-    e.mass += m;
-  }
-  b.material->add_strain_energy(p, e.strain);
-  b.material->add_dissipated_energy(p, e.plastic_work);
-  for (const auto& m : hooks_.all()) m->add_energy(b, e);
-}
-
-template <int Dim>
 EnergyBalance Simulation<Dim>::energy() const {
   EnergySums e;
-  for (const auto& b : bodies_) add_body_energy(b, e);
+  for (const auto& b : bodies_) add_body_energy(b, settings_.transfer.gravity, hooks_.all(), e);
   return e.value();
 }
 
 template <int Dim>
 EnergyBalance Simulation<Dim>::body_energy(const Body<Dim>& body) const {
   EnergySums e;
-  add_body_energy(body, e);
+  add_body_energy(body, settings_.transfer.gravity, hooks_.all(), e);
   return e.value();
 }
 

@@ -49,6 +49,7 @@ TEST(ExtremeMotion, HypervelocityImpactWithUslIsStoppedByTheGuard) {
   EXPECT_NE(o.message.find("det F = -"), std::string::npos) << o.message;
   EXPECT_GT(o.steps, 50);  // it ran into the impact (the disk reaches the wall at about step 25)
   expect_clean_output(o);
+  expect_flight_record(dir, o);
   fs::remove_all(dir);
 }
 
@@ -62,6 +63,7 @@ TEST(ExtremeMotion, CompressionWithAFixedTimeStepIsStoppedByTheGuard) {
   expect_guard_message(o, "cube", "deformation_gradient");
   EXPECT_NE(o.message.find("dt = 3.125e-05 s"), std::string::npos) << o.message;
   expect_clean_output(o);
+  expect_flight_record(dir, o);
   fs::remove_all(dir);
 }
 
@@ -102,6 +104,7 @@ TEST(ExtremeMotion, ThinPlateCrossingCells) {
   expect_guard_message(usl, "plate", "deformation_gradient");
   EXPECT_LT(usl.steps, 100);
   expect_clean_output(usl);
+  expect_flight_record(dir / "usl", usl);
   fs::remove_all(dir);
 }
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "mpm/app/flight_recorder.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/output_writer.hpp"
 #include "mpm/scene_loader.hpp"
@@ -143,6 +144,16 @@ MmsResult run(const MmsSpec& spec) {
     if (!std::isfinite(r.e1) || !std::isfinite(r.e2)) r.failure = "non-finite error norm";
   } catch (const StabilityError& e) {
     r.failure = e.what();
+    if (writer) {
+      writer->write(*sim);  // the last good state, then the flight recorder's replay of the failure
+      HintContext context;
+      context.scheme = enum_from_name<SchemeKind>(spec.scheme).value_or(SchemeKind::musl);
+      context.shape_function = spec.shape_function;
+      context.flip_fraction = spec.flip_fraction;
+      context.fixed_dt = !(spec.cfl > 0);
+      app::record_failure(*sim, e.report(), context, spec.output_directory,
+                          {"velocity", "stress", "deformation_gradient"}, "the MMS runner (tests/verification/mms.cpp)");
+    }
   }
   if (writer) writer->write(*sim);  // the last (good) state
   if (!r.failure.empty()) r.e1 = r.e2 = std::numeric_limits<double>::infinity();

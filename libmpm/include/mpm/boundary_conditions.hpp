@@ -52,6 +52,15 @@ class GridBoundary {
   /// faces (a shared edge) is reported for both. Used by reaction histories only.
   void reactions(int face, const std::vector<NodeRecord<Dim>>& node, const Vec<Dim>& gravity, Real mass_cutoff, Real t,
                  Real dt, const std::function<void(Index, int, Real)>& f) const;
+  /// True when a face condition can do work on the bodies: a prescribed velocity other than 0, or a traction.
+  bool does_work() const;
+  /// The work (J) the face conditions do on the grid in the step from t to t + dt, for the energy sentinel
+  /// (energy_sentinel.hpp): a velocity condition R v dt, with R its force of reactions() and v the prescribed
+  /// velocity at t + dt/2; a traction f_I . v dt with f_I = t(t) A_I and v the mean of the node's velocity at t
+  /// and at t + dt (`velocity[n].mapped` and `.updated`: the nodal kinetic energy changes by exactly that work).
+  /// A fixed or slip face does none. `node` as for reactions(); every node term is summed exactly.
+  Real work(const std::vector<NodeRecord<Dim>>& node, const std::vector<NodeVelocity<Dim>>& velocity,
+            const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt) const;
 
  private:
   struct Constraint {

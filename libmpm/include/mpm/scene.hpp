@@ -121,6 +121,9 @@ struct SolverDescription {
   std::array<double, 3> gravity{0, 0, 0};  ///< m/s^2, body force per unit mass
   int snapshot_interval = 20;              ///< steps between in-memory snapshots used by the stability guard
   int sort_interval = 20;                  ///< steps between particle reorderings by cell
+  /// The energy sentinel's tolerance, a fraction of the largest energy of the run so far (energy_sentinel.hpp)
+  double energy_tolerance = 0.05;
+  EnergyDriftAction on_energy_drift = EnergyDriftAction::warn;
   SourceLocation dt_where;
 
   /// The scheme's scene name: extension_scheme, or the built-in scheme's.

@@ -53,6 +53,13 @@ class Simulation {
   /// Takes one step of size dt. If the stability guard trips, the state is rolled back to the end of
   /// the previous step (the last good state) and StabilityError is thrown.
   void advance(Real dt);
+  /// The flight recorder's replay (docs/theory.md §7), after advance() threw StabilityError: restores the
+  /// snapshot the guard rolled back to and retakes every step from it through the failing one, calling
+  /// `after_step` on the snapshot's state and after each step; the failing step is taken without the guard, so the last call sees the state
+  /// the guard rejected, and the simulation is left in it. Returns false (and does nothing) when no step failed.
+  bool replay_failure(const std::function<void(const Simulation&)>& after_step);
+  /// The step of the snapshot replay_failure() starts from (valid after a failure).
+  Index failure_replay_start() const { return failure_ ? failure_->step : 0; }
   /// Advances until end_time, or until step() reaches `last_step` when one is given (`mpm run --steps`);
   /// `after_step` is called after every step (for output and progress).
   void run(const std::function<void(const Simulation&)>& after_step = {}, std::optional<Index> last_step = {});
@@ -110,12 +117,11 @@ class Simulation {
     std::vector<Real> dts_since;  ///< time steps taken after the snapshot, to replay them exactly
     StateArchive modules;         ///< the modules' state (Module::save_state)
   };
-  void take_step(Real dt);
+  /// One step; with `guard` false a tripped guard is ignored (replay_failure()'s last step).
+  void take_step(Real dt, bool guard = true);
   void take_snapshot();
   StabilityReport diagnose(Real dt) const;
   void roll_back_to_previous_step();
-  /// Adds body's share of the audit to e (energy() and body_energy()).
-  void add_body_energy(const Body<Dim>& body, EnergySums& e) const;
 
   Grid<Dim> grid_;
   std::vector<Body<Dim>> bodies_;
@@ -128,6 +134,9 @@ class Simulation {
   Real time_ = 0;
   Index step_ = 0;
   Snapshot snapshot_;
+  /// The snapshot before the failing step and the steps from it through that step (dts_since), kept when the
+  /// guard trips (only then: a copy of the particles), for replay_failure().
+  std::unique_ptr<Snapshot> failure_;
   bool profiling_ = false;
   StepProfile profile_;
 };

@@ -42,4 +42,14 @@ struct EnumNames<CpdiDomainUpdate> {
       {{CpdiDomainUpdate::deformation_gradient, "deformation_gradient"}, {CpdiDomainUpdate::corners, "corners"}}};
 };
 
+/// What the energy sentinel (energy_sentinel.hpp) does when the energy balance exceeds solver.energy_tolerance:
+/// log one warning and go on, or also end the run through the stability path (exit 3).
+enum class EnergyDriftAction { warn, stop };
+
+template <>
+struct EnumNames<EnergyDriftAction> {
+  static constexpr std::array<std::pair<EnergyDriftAction, std::string_view>, 2> table{
+      {{EnergyDriftAction::warn, "warn"}, {EnergyDriftAction::stop, "stop"}}};
+};
+
 }  // namespace mpm

@@ -1,5 +1,5 @@
 // `solver:` (docs/scene-reference.md, solver): scheme, shape function (checked against the grid), velocity
-// transfer, CPDI domain update, time step and the intervals of the guard and the sorting.
+// transfer, CPDI domain update, time step, the intervals of the guard and the sorting, and the energy sentinel.
 #include <fmt/format.h>
 
 #include "mpm/scheme.hpp"
@@ -118,9 +118,10 @@ void check_extension_keys(const YamlReader& reader, const YamlMap& map, const So
 
 SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
   const YamlMap map = reader.map(value);
-  std::vector<std::string> allowed{
-      "scheme",  "shape_function",    "velocity_transfer", "flip_fraction",     "dt", "cfl", "end_time", "mass_cutoff",
-      "gravity", "snapshot_interval", "sort_interval",     "cpdi_domain_update"};
+  std::vector<std::string> allowed{"scheme",           "shape_function",    "velocity_transfer", "flip_fraction",
+                                   "dt",               "cfl",               "end_time",          "mass_cutoff",
+                                   "gravity",          "snapshot_interval", "sort_interval",     "cpdi_domain_update",
+                                   "energy_tolerance", "on_energy_drift"};
   for (const auto& [key, owner] : scheme_extension_solver_keys()) allowed.push_back(key);
   map.allow(allowed);
   SolverDescription solver;
@@ -141,6 +142,10 @@ SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, 
     solver.gravity = reader.vector(*gravity, scene.dimension, Range::any(), "m/s^2");
   if (const auto interval = map.find("snapshot_interval")) solver.snapshot_interval = reader.integer(*interval, 1);
   if (const auto interval = map.find("sort_interval")) solver.sort_interval = reader.integer(*interval, 1);
+  // The energy sentinel (energy_sentinel.hpp): a fraction of the largest energy of the run so far.
+  if (const auto tolerance = map.find("energy_tolerance"))
+    solver.energy_tolerance = reader.number(*tolerance, Range::above(0), "");
+  if (const auto action = map.find("on_energy_drift")) solver.on_energy_drift = reader.choice<EnergyDriftAction>(*action);
   return solver;
 }
 

@@ -39,6 +39,10 @@ struct RunSummary {
   double wall_seconds = 0;
   double particle_updates_per_second = 0;
   double relative_energy_change = 0;  ///< (E_end - E_0)/|E_0|
+  /// The energy sentinel's largest balance / tolerance over the run (energy_sentinel.hpp; > 1: it warned), and
+  /// the step of it.
+  double largest_energy_ratio = 0;
+  long long largest_energy_ratio_step = 0;
   std::size_t particles = 0;
   std::size_t bytes_per_particle = 0;
   StepProfile profile;  ///< per-phase wall time, with RunOptions::profile (all zero otherwise)

@@ -1,0 +1,80 @@
+// The one table of documented instabilities (energy_hints.hpp). A row is added here with the measurement it
+// rests on, and that measurement is documented where the row says (docs/VERIFICATION.md or a README).
+#include "mpm/energy_hints.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+
+namespace mpm {
+namespace {
+
+bool is_linear(const HintContext& c) { return c.shape_function == "linear"; }
+
+constexpr std::array<EnergyHint, 7> rows{{
+    {"contact module (multi-velocity contact)", trigger_energy, [](const HintContext& c) { return c.contact; },
+     "with `onset: node` the contact correction acts at nodes shared by bodies that are still apart and does "
+     "work that no kinetic energy balances; use `contact.onset: particle_gap`",
+     "Love & Sulsky's colliding cylinders (MUSL, 28 x 22 cells): +5.6% (plastic) and +20% (elastic) total energy "
+     "with the node criterion, -1.0% and -2% with the particle gap (contact/README.md)"},
+    {"APIC with linear hats", trigger_energy | trigger_guard,
+     [](const HintContext& c) { return c.transfer == VelocityTransfer::apic && is_linear(c); },
+     "APIC with linear hats is unstable on free surfaces (C_p weighs a nearly empty node as much as a full "
+     "one); use `shape_function: quadratic_bspline` or `cubic_bspline`, or `velocity_transfer: flip`",
+     "the dam break (examples/12) with APIC and hats inverts a particle at 0.093 s (MUSL), 0.067 s (USL), 0.068 s "
+     "(USF); with quadratic / cubic B-splines it runs to 0.3 s with an energy change of -0.10% / -0.14% "
+     "(physics/fluids/README.md, Limits)"},
+    {"USL (any shape function)", trigger_energy | trigger_guard,
+     [](const HintContext& c) { return c.scheme == SchemeKind::usl; },
+     "USL is the least stable explicit scheme here: use `scheme: musl` (or usf), or a smaller `cfl`",
+     "largest stable CFL factor on the two disks: USL 0.200 (linear) to 1.300 (cubic B-spline), MUSL 1.200 to >= 2; "
+     "USL linear at 0.225 inverts a particle (docs/VERIFICATION.md, Largest stable CFL factor)"},
+    {"FLIP (flip_fraction 1) with linear hats", trigger_energy | trigger_guard,
+     [](const HintContext& c) {
+       return c.transfer == VelocityTransfer::flip && c.flip_fraction > 0.999 && is_linear(c) &&
+              !is_total_lagrangian(c.scheme);
+     },
+     "pure FLIP with linear hats gains energy from the cell-crossing error at fine resolution; add a PIC "
+     "fraction (`flip_fraction: 0.99`), or use `shape_function: quadratic_bspline` or `cpgimp`",
+     "the two disks of examples/02 at 200 cells per side, dt = 0.002 s, MUSL: total energy +37.3% at 3.5 s with "
+     "FLIP and hats; flip_fraction 0.99: -19.6% (never above E0 by 1e-5), quadratic_bspline: +1.1% (largest "
+     "+1.4%), cpgimp: +2.0% (largest +2.1%) (docs/VERIFICATION.md, Energy sentinel)"},
+    {"Bernstein functions with an explicit scheme", trigger_energy | trigger_guard,
+     [](const HintContext& c) { return c.shape_function == "bernstein" && !is_total_lagrangian(c.scheme); },
+     "quadratic Bernstein functions tolerate a smaller time step than the others with MUSL; use `cfl: 0.5` or less",
+     "largest stable CFL factor on the bar: MUSL with bernstein 0.600 against 1.500 to >= 2 for the other "
+     "functions (docs/VERIFICATION.md, Largest stable CFL factor)"},
+    {"fixed time step (solver.dt)", trigger_energy | trigger_guard, [](const HintContext& c) { return c.fixed_dt; },
+     "a fixed dt is checked against the CFL bound of the initial state only; faster or compressed material "
+     "lowers the bound during the run: use `cfl: 0.5` (adaptive) instead of `dt`",
+     "beyond the largest stable CFL factor the energy grows before the guard trips: two disks, MUSL linear at "
+     "1.225 x the bound: +12.2% at 3.469 s (docs/VERIFICATION.md, Largest stable CFL factor)"},
+    {"any other method", trigger_energy | trigger_guard, [](const HintContext&) { return true; },
+     "no documented cause for this method: halve the time step (`cfl`), refine the grid, and compare with the "
+     "measured stability limits",
+     "the largest stable CFL factor of every scheme and shape function on the bar and the two disks "
+     "(docs/VERIFICATION.md, Largest stable CFL factor)"},
+}};
+
+}  // namespace
+
+std::span<const EnergyHint> energy_hints() { return rows; }
+
+const EnergyHint& find_energy_hint(const HintContext& context, HintTrigger trigger) {
+  for (const auto& row : rows)
+    if ((row.triggers & trigger) != 0 && row.applies(context)) return row;
+  return rows.back();
+}
+
+std::string energy_hint_table() {
+  std::string table = "| condition | energy / guard | hint | measurement |\n|---|---|---|---|\n";
+  for (const auto& row : rows)
+    table += fmt::format("| {} | {} | {} | {} |\n", row.condition,
+                         (row.triggers & trigger_energy) != 0 && (row.triggers & trigger_guard) != 0 ? "both"
+                         : (row.triggers & trigger_energy) != 0                                       ? "energy"
+                                                                                                       : "guard",
+                         row.hint, row.measurement);
+  return table;
+}
+
+}  // namespace mpm

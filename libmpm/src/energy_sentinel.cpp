@@ -1,0 +1,144 @@
+// The energy sentinel (energy_sentinel.hpp; docs/theory.md §8): the balance E(t) - E(0) - W(t) after every step.
+#include "mpm/energy_sentinel.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "mpm/energy_audit.hpp"
+#include "mpm/field_keys.hpp"
+#include "mpm/state_archive.hpp"
+
+namespace mpm {
+
+std::string EnergyDrift::message() const {
+  return fmt::format(
+      "energy sentinel: at step {} (t = {:.9g} s) the energy balance E(t) - E(0) - W = {:+.6g} J exceeds the "
+      "tolerance {:.6g} J; {} grew most. Hint: {} (measured: {})",
+      step, time, balance, tolerance, grown, hint ? hint->hint : "", hint ? hint->measurement : "");
+}
+
+template <int Dim>
+EnergySentinel<Dim>::EnergySentinel(Real fraction, EnergyDriftAction action, HintContext context,
+                                    const EnergyBalance& initial, bool boundary_work, std::vector<Partner> partners,
+                                    int interval)
+    : fraction_(fraction),
+      action_(action),
+      context_(std::move(context)),
+      initial_(initial),
+      boundary_work_(boundary_work),
+      partners_(std::move(partners)),
+      interval_(std::max(1, interval)),
+      scale_(initial.kinetic + initial.strain + initial.plastic_work) {}
+
+namespace {
+
+/// sum over the bodies of m_p b_p . v_p, or 0 when no body carries the field "body_force".
+template <int Dim>
+Real body_force_power(const std::vector<Body<Dim>>& bodies) {
+  ExactSum power;
+  for (const auto& b : bodies) {
+    const auto& p = b.particles;
+    if (!p.has_field(keys::body_force<Dim>)) continue;
+    const auto& force = p.field(keys::body_force<Dim>);
+    for (Index i = 0; i < p.size(); ++i) power += p.mass[i] * Vec<Dim>(force[i]).dot(Vec<Dim>(p.v[i]));
+  }
+  return power.value();
+}
+
+}  // namespace
+
+template <int Dim>
+void EnergySentinel<Dim>::before_step(StepContext<Dim>& ctx) {
+  body_force_start_ = 0.5 * ctx.dt * body_force_power(ctx.bodies);
+}
+
+template <int Dim>
+void EnergySentinel<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) {
+  if (stage != GridStage::updated) return;  // the nodal forces of the step are final here in every scheme
+  work_ += ctx.boundary.work(ctx.grid.node, ctx.grid.velocity, ctx.settings.gravity, ctx.settings.mass_cutoff,
+                             ctx.time, ctx.dt);
+}
+
+template <int Dim>
+void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
+  // The rigid partners' work of the step: F . V dt (a rigid body's particles all move with its velocity).
+  for (const auto& partner : partners_) {
+    const Vec<Dim> force = partner.provider->last_reaction(partner.index).force;
+    const auto& rigid = partner.body >= 0 ? ctx.bodies[static_cast<std::size_t>(partner.body)].particles
+                                          : ctx.bodies.front().particles;
+    const Vec<Dim> velocity = partner.body >= 0 && rigid.size() > 0 ? Vec<Dim>(rigid.v[0])
+                                                                     : partner.provider->partner_velocity(partner.index);
+    work_ += force.dot(velocity) * ctx.dt;
+  }
+  work_ += body_force_start_ + 0.5 * ctx.dt * body_force_power(ctx.bodies);
+  if (ctx.step % interval_ != 0) return;
+  EnergySums sums;
+  for (const auto& b : ctx.bodies) add_body_energy(b, ctx.settings.gravity, ctx.hooks.all(), sums);
+  const EnergyBalance e = sums.value();
+  const Real balance = (e.total() - initial_.total()) - work_;
+  const Real scale = e.kinetic + e.strain + e.plastic_work + std::abs(e.gravity - initial_.gravity) + std::abs(work_);
+  if (scale > scale_ || std::isnan(scale)) scale_ = scale;
+  const Real tolerance = fraction_ * scale_;
+  last_ratio_ = tolerance > 0 ? balance / tolerance : 0;
+  if (last_ratio_ > largest_ratio_) {
+    largest_ratio_ = last_ratio_;
+    largest_ratio_step_ = ctx.step;
+  }
+  if (drift_ || !(last_ratio_ > 1)) return;
+  EnergyDrift d;
+  d.step = ctx.step;
+  d.time = ctx.time + ctx.dt;
+  d.balance = balance;
+  d.tolerance = tolerance;
+  const std::array<std::pair<const char*, Real>, 4> changes{{{"kinetic energy", e.kinetic - initial_.kinetic},
+                                                             {"strain energy", e.strain - initial_.strain},
+                                                             {"gravity potential", e.gravity - initial_.gravity},
+                                                             {"plastic work", e.plastic_work - initial_.plastic_work}}};
+  std::size_t most = 0;
+  for (std::size_t k = 1; k < changes.size(); ++k)
+    if (changes[k].second > changes[most].second) most = k;
+  d.grown = fmt::format("{} ({:+.4g} J; kinetic {:+.4g} J, strain {:+.4g} J, gravity potential {:+.4g} J, plastic "
+                        "work {:+.4g} J, external work {:+.4g} J since t = 0)",
+                        changes[most].first, changes[most].second, changes[0].second, changes[1].second,
+                        changes[2].second, changes[3].second, work_);
+  d.hint = &find_energy_hint(context_, trigger_energy);
+  drift_ = std::move(d);
+}
+
+template <int Dim>
+void EnergySentinel<Dim>::save_state(StateArchive& archive, const std::string& prefix) const {
+  archive.put_number(prefix + "work", work_);
+  archive.put_number(prefix + "scale", scale_);
+  archive.put_number(prefix + "largest_ratio", largest_ratio_);
+  archive.put_integer(prefix + "largest_ratio_step", largest_ratio_step_);
+  archive.put_integer(prefix + "drift_step", drift_ ? drift_->step : 0);
+}
+
+template <int Dim>
+void EnergySentinel<Dim>::restore_state(const StateArchive& archive, const std::string& prefix) {
+  // A checkpoint written before the sentinel existed continues with W = 0 from the restart (E(0) is the
+  // scene's initial state either way).
+  if (!archive.contains(prefix + "work")) return;
+  work_ = archive.number(prefix + "work");
+  scale_ = archive.number(prefix + "scale");
+  largest_ratio_ = archive.number(prefix + "largest_ratio");
+  largest_ratio_step_ = archive.integer(prefix + "largest_ratio_step");
+  // A drift found before the saved state stays found (the run loop warned then: it warns on the step of the
+  // drift only); one after it is forgotten and found again if the balance exceeds the tolerance again.
+  if (const Index step = archive.integer(prefix + "drift_step"); step == 0) {
+    drift_.reset();
+  } else if (!drift_ || drift_->step != step) {
+    drift_ = EnergyDrift{};
+    drift_->step = step;
+  }
+}
+
+template class EnergySentinel<1>;
+template class EnergySentinel<2>;
+template class EnergySentinel<3>;
+
+}  // namespace mpm

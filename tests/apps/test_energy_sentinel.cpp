@@ -1,0 +1,170 @@
+// The energy sentinel (libmpm energy_sentinel.hpp) and its hint table (energy_hints.hpp): the balance
+// E(t) - E(0) - W stays at round-off level when the work W of the face conditions is counted (a bar stretched by a
+// prescribed velocity, a bar pulled by a traction: W is the whole energy input), the example of two disks at its
+// own resolution raises no alarm, `on_energy_drift: stop` ends the program with status 3 and the message, and
+// the hint table's rows each cite a measurement and are the table in docs/VERIFICATION.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "mpm/app/flight_recorder.hpp"
+#include "mpm/app/scene_builder.hpp"
+#include "mpm/energy_hints.hpp"
+#include "mpm/energy_sentinel.hpp"
+#include "mpm/scene_loader.hpp"
+#include "run_mpm.hpp"
+
+namespace mpm {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A 1D bar filling the grid [0, 1] m (E = 1e4 Pa, rho = 1: c = 100 m/s), fixed at x = 0, with `x_max`'s condition.
+std::string bar(const std::string& x_max, const std::string& solver = "") {
+  return "dimension: 1\n"
+         "grid: {extent: [1], cell_size: 0.05, boundary: {x_min: fixed, x_max: " +
+         x_max +
+         "}}\n"
+         "materials: {m: {model: neo_hookean, density: 1, youngs_modulus: 1.0e4, poisson_ratio: 0.3}}\n"
+         "bodies: [{name: bar, material: m, shape: {type: box, min: [0], max: [1]}, particles_per_cell: 2}]\n"
+         "solver: {scheme: musl, cfl: 0.5, end_time: 0.1" +
+         solver + "}\n";
+}
+
+struct Balance {
+  Real work = 0;     ///< J
+  Real balance = 0;  ///< J, E(t) - E(0) - W at the end
+  Real energy = 0;   ///< J, E(t) - E(0)
+  Real largest_ratio = 0;
+};
+
+Balance run_bar(const std::string& yaml) {
+  auto sim = app::build_simulation<1>(parse_scene(yaml, "bar.yaml"));
+  const Real e0 = sim->energy().total();
+  sim->run();
+  const EnergySentinel<1>* sentinel = nullptr;
+  for (const auto& m : sim->modules())
+    if (const auto* s = dynamic_cast<const EnergySentinel<1>*>(m.get())) sentinel = s;
+  EXPECT_NE(sentinel, nullptr);
+  Balance b;
+  if (!sentinel) return b;
+  b.work = sentinel->work();
+  b.energy = sim->energy().total() - e0;
+  b.balance = b.energy - b.work;
+  b.largest_ratio = sentinel->largest_ratio();
+  return b;
+}
+
+// Stretched at 0.5 m/s (ramped over 0.02 s) for 0.1 s: the work of the face is the energy the bar gains; the
+// balance is that of the explicit update (round-off and the time discretisation), a small fraction of it.
+TEST(EnergySentinel, PrescribedVelocityWorkBalancesTheEnergy) {
+  const Balance b = run_bar(bar("{velocity: [\"0.5*min(t/0.02, 1)\"]}"));
+  std::printf("[ measured ] velocity face: W = %.6g J, E - E0 = %.6g J, balance %.3e J, largest ratio %.3g\n", b.work,
+              b.energy, b.balance, b.largest_ratio);
+  EXPECT_GT(b.work, 0.1);
+  EXPECT_LT(std::abs(b.balance), 0.02 * b.work);
+  EXPECT_LT(b.largest_ratio, 1);
+}
+
+// Pulled by a traction of 100 Pa (ramped over 0.02 s): the same with the traction's work f . v dt.
+TEST(EnergySentinel, TractionWorkBalancesTheEnergy) {
+  const Balance b = run_bar("{traction: [\"100*min(t/0.02, 1)\"]}");
+  std::printf("[ measured ] traction: W = %.6g J, E - E0 = %.6g J, balance %.3e J, largest ratio %.3g\n", b.work,
+              b.energy, b.balance, b.largest_ratio);
+  EXPECT_GT(b.work, 0.01);
+  EXPECT_LT(std::abs(b.balance), 0.02 * b.work);
+  EXPECT_LT(b.largest_ratio, 1);
+}
+
+// The example at its own resolution (20 cells, 416 particles, 3,500 steps): no warning, and the largest balance
+// stays far below the tolerance (the energy of FLIP with hats at this resolution changes by less than 1%).
+TEST(EnergySentinel, TheExampleOfTwoDisksRaisesNoAlarm) {
+  const auto dir = cli::scratch("sentinel_disks");
+  const auto r = cli::mpm("run " + (fs::path(MPM_SOURCE_DIR) / "examples/02_two_disks/scene.yaml").string() + " -o " +
+                              (dir / "out").string(),
+                          dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning: energy sentinel"), std::string::npos) << r.err;
+  const auto at = r.err.find("energy sentinel: largest balance / tolerance ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const double ratio = std::stod(r.err.substr(at + 45));
+  std::printf("[ measured ] examples/02: largest balance / tolerance %.4g\n", ratio);
+  EXPECT_LT(ratio, 0.5);
+  fs::remove_all(dir);
+}
+
+// `on_energy_drift: stop` with a tolerance below the round-off of the balance: the program stops through the
+// stability path (status 3) at the first step the balance exceeds it, names the sentinel and the key, writes the
+// state of that step, and leaves no failure/ (that is the guard's, for a failing particle).
+TEST(EnergySentinel, StopEndsTheRunWithStatusThree) {
+  const auto dir = cli::scratch("sentinel_stop");
+  std::ifstream in(fs::path(MPM_SOURCE_DIR) / "examples/02_two_disks/scene.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  yaml.replace(yaml.find("  end_time: 3.5"), 14, "  end_time: 3.5\n  energy_tolerance: 1.0e-3\n  on_energy_drift: stop");
+  std::ofstream(dir / "scene.yaml") << yaml;
+  const auto r = cli::mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.status, 3) << r.err;
+  for (const char* part : {"energy sentinel: at step ", "exceeds the tolerance", "(solver.on_energy_drift: stop)",
+                           "Hint: ", "The last good state was written"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << "missing '" << part << "' in:\n" << r.err;
+  EXPECT_TRUE(fs::exists(dir / "out" / "particles_000001.vtu"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "failure"));
+  fs::remove_all(dir);
+}
+
+// The hint for the case of issue 21 (FLIP, hats, MUSL) is the FLIP row; contact and APIC with hats have their own;
+// every row says what it rests on and where that is documented; the last row answers everything.
+TEST(EnergyHints, RowsAndTheirMeasurements) {
+  HintContext disks;
+  disks.fixed_dt = true;
+  EXPECT_NE(find_energy_hint(disks, trigger_energy).hint.find("flip_fraction: 0.99"), std::string_view::npos);
+  HintContext contact = disks;
+  contact.contact = true;
+  EXPECT_NE(find_energy_hint(contact, trigger_energy).hint.find("particle_gap"), std::string_view::npos);
+  // the contact row is about energy only: a guard stop with contact gets the method's row
+  EXPECT_NE(find_energy_hint(contact, trigger_guard).hint.find("flip_fraction"), std::string_view::npos);
+  HintContext apic;
+  apic.transfer = VelocityTransfer::apic;
+  EXPECT_NE(find_energy_hint(apic, trigger_guard).hint.find("free surface"), std::string_view::npos);
+  HintContext bspline;
+  bspline.shape_function = "cubic_bspline";
+  EXPECT_EQ(&find_energy_hint(bspline, trigger_energy), &energy_hints().back());
+  for (const auto& row : energy_hints()) {
+    EXPECT_FALSE(row.hint.empty());
+    EXPECT_TRUE(row.measurement.find("docs/") != std::string_view::npos ||
+                row.measurement.find("README") != std::string_view::npos)
+        << row.condition;
+  }
+  EXPECT_TRUE(energy_hints().back().applies(HintContext{}));
+}
+
+TEST(EnergyHints, TheTableInVerificationMdIsCurrent) {
+  std::ifstream in(fs::path(MPM_SOURCE_DIR) / "docs" / "VERIFICATION.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find(energy_hint_table()), std::string::npos)
+      << "docs/VERIFICATION.md does not hold the hint table; it is:\n"
+      << energy_hint_table();
+}
+
+// A flight record that cannot be made (here: no step failed, so there is nothing to replay) leaves nothing:
+// no failure/ and no partial directory.
+TEST(FlightRecorder, NothingIsLeftWhenTheRecordFails) {
+  const auto dir = cli::scratch("recorder_fails");
+  auto sim = app::build_simulation<1>(parse_scene(bar("fixed"), "bar.yaml"));
+  sim->advance(sim->next_time_step());
+  StabilityReport report;
+  report.step = 1;
+  EXPECT_THROW(app::record_failure(*sim, report, HintContext{}, dir, {"velocity"}, "mpm run bar.yaml"),
+               std::runtime_error);
+  EXPECT_FALSE(fs::exists(dir / "failure"));
+  EXPECT_FALSE(fs::exists(dir / ".failure.partial"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mpm
