@@ -71,7 +71,7 @@ void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
     const auto& rigid = partner.body >= 0 ? ctx.bodies[static_cast<std::size_t>(partner.body)].particles
                                           : ctx.bodies.front().particles;
     const Vec<Dim> velocity = partner.body >= 0 && rigid.size() > 0 ? Vec<Dim>(rigid.v[0])
-                                                                     : partner.provider->partner_velocity(partner.index);
+                                                                     : partner.provider->partner_velocity(partner.index, ctx.time + 0.5 * ctx.dt);
     work_ += force.dot(velocity) * ctx.dt;
   }
   work_ += body_force_start_ + 0.5 * ctx.dt * body_force_power(ctx.bodies);

@@ -28,10 +28,10 @@ class ReactionProvider {
   virtual std::vector<std::string> reaction_partners() const = 0;
   /// The force partner `k` (an index into reaction_partners()) exerted in the last step.
   virtual Reaction<Dim> last_reaction(int k) const = 0;
-  /// The velocity of partner `k` in the last step (m/s), for the work it did on the bodies (the energy sentinel,
-  /// energy_sentinel.hpp). A rigid body's is read from its particles; this is asked for the other partners
-  /// (planes), and the default, at rest, is right for a partner that does not move.
-  virtual Vec<Dim> partner_velocity(int /*k*/) const { return Vec<Dim>::Zero(); }
+  /// The velocity of partner `k` at time `t` (m/s), for the work it does on the bodies (the energy sentinel,
+  /// energy_sentinel.hpp, asks at the middle of each step). A rigid body's is read from its particles; this is
+  /// asked for the other partners (planes). The default, at rest, is right for a partner that does not move.
+  virtual Vec<Dim> partner_velocity(int /*k*/, Real /*t*/) const { return Vec<Dim>::Zero(); }
 };
 
 }  // namespace mpm

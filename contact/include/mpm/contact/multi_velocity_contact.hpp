@@ -90,6 +90,11 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   std::vector<std::string> reaction_partners() const override;
   /// The force partner k exerted on the deformable bodies in the last step (sum of the step's corrections).
   Reaction<Dim> last_reaction(int k) const override;
+  /// Plane k's velocity at t (the energy sentinel's work of the moving planes; rigid bodies are read from their
+  /// particles).
+  Vec<Dim> partner_velocity(int k, Real t) const override {
+    return k < static_cast<int>(settings_.planes.size()) ? plane_velocity(k, t) : Vec<Dim>::Zero();
+  }
 
  private:
   void find_candidates(StepContext<Dim>& ctx);
