@@ -5,7 +5,9 @@
 #include <fmt/ostream.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -90,7 +92,7 @@ class Recorder {
       for (int c = r; c < Dim; ++c) particle_ << ',' << stress(r, c);
     for (const auto& f : state_) {
       std::vector<std::byte> bytes;
-      const Index which[1] = {i};
+      const std::array<Index, 1> which{i};
       p.pack_field(f.name, which, bytes);
       for (std::size_t k = 0; k < f.components; ++k) {
         double v = 0;
@@ -205,8 +207,8 @@ FlightRecord record_failure(Simulation<Dim>& sim, const StabilityReport& report,
       throw std::runtime_error("no failed step to replay");
     recorder.close();
     if (recorder.last_step() != report.step)
-      throw std::runtime_error(fmt::format("the replay ended at step {}, not at the failing step {}",
-                                           recorder.last_step(), report.step));
+      throw std::runtime_error(
+          fmt::format("the replay ended at step {}, not at the failing step {}", recorder.last_step(), report.step));
     record.first_step = sim.failure_replay_start();
     record.frames = recorder.frames();
     const EnergyHint& hint = find_energy_hint(context, trigger_guard);
@@ -221,8 +223,8 @@ FlightRecord record_failure(Simulation<Dim>& sim, const StabilityReport& report,
                "nearest documented cause ({}): {}\n"
                "measured: {}\n"
                "reproduce: {}\n",
-               report.field, report.particle, report.body, report.step, report.time, report.detail,
-               record.first_step, report.step, hint.condition, hint.hint, hint.measurement, command);
+               report.field, report.particle, report.body, report.step, report.time, report.detail, record.first_step,
+               report.step, hint.condition, hint.hint, hint.measurement, command);
     d.close();
     fs::remove_all(record.directory);
     fs::rename(partial, record.directory);

@@ -16,8 +16,8 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/app/stop_signals.hpp"
-#include "mpm/history/history_writer.hpp"
 #include "mpm/energy_sentinel.hpp"
+#include "mpm/history/history_writer.hpp"
 #include "mpm/memory_budget.hpp"
 #include "mpm/output_writer.hpp"
 

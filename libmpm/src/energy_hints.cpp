@@ -71,8 +71,8 @@ std::string energy_hint_table() {
   for (const auto& row : rows)
     table += fmt::format("| {} | {} | {} | {} |\n", row.condition,
                          (row.triggers & trigger_energy) != 0 && (row.triggers & trigger_guard) != 0 ? "both"
-                         : (row.triggers & trigger_energy) != 0                                       ? "energy"
-                                                                                                       : "guard",
+                         : (row.triggers & trigger_energy) != 0                                      ? "energy"
+                                                                                                     : "guard",
                          row.hint, row.measurement);
   return table;
 }

@@ -59,8 +59,8 @@ void EnergySentinel<Dim>::before_step(StepContext<Dim>& ctx) {
 template <int Dim>
 void EnergySentinel<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) {
   if (stage != GridStage::updated) return;  // the nodal forces of the step are final here in every scheme
-  work_ += ctx.boundary.work(ctx.grid.node, ctx.grid.velocity, ctx.settings.gravity, ctx.settings.mass_cutoff,
-                             ctx.time, ctx.dt);
+  work_ += ctx.boundary.work(ctx.grid.node, ctx.grid.velocity, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time,
+                             ctx.dt);
 }
 
 template <int Dim>
@@ -68,10 +68,11 @@ void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
   // The rigid partners' work of the step: F . V dt (a rigid body's particles all move with its velocity).
   for (const auto& partner : partners_) {
     const Vec<Dim> force = partner.provider->last_reaction(partner.index).force;
-    const auto& rigid = partner.body >= 0 ? ctx.bodies[static_cast<std::size_t>(partner.body)].particles
-                                          : ctx.bodies.front().particles;
-    const Vec<Dim> velocity = partner.body >= 0 && rigid.size() > 0 ? Vec<Dim>(rigid.v[0])
-                                                                     : partner.provider->partner_velocity(partner.index, ctx.time + 0.5 * ctx.dt);
+    const auto& rigid =
+        partner.body >= 0 ? ctx.bodies[static_cast<std::size_t>(partner.body)].particles : ctx.bodies.front().particles;
+    const Vec<Dim> velocity = partner.body >= 0 && rigid.size() > 0
+                                  ? Vec<Dim>(rigid.v[0])
+                                  : partner.provider->partner_velocity(partner.index, ctx.time + 0.5 * ctx.dt);
     work_ += force.dot(velocity) * ctx.dt;
   }
   work_ += body_force_start_ + 0.5 * ctx.dt * body_force_power(ctx.bodies);
@@ -101,10 +102,11 @@ void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
   std::size_t most = 0;
   for (std::size_t k = 1; k < changes.size(); ++k)
     if (changes[k].second > changes[most].second) most = k;
-  d.grown = fmt::format("{} ({:+.4g} J; kinetic {:+.4g} J, strain {:+.4g} J, gravity potential {:+.4g} J, plastic "
-                        "work {:+.4g} J, external work {:+.4g} J since t = 0)",
-                        changes[most].first, changes[most].second, changes[0].second, changes[1].second,
-                        changes[2].second, changes[3].second, work_);
+  d.grown = fmt::format(
+      "{} ({:+.4g} J; kinetic {:+.4g} J, strain {:+.4g} J, gravity potential {:+.4g} J, plastic "
+      "work {:+.4g} J, external work {:+.4g} J since t = 0)",
+      changes[most].first, changes[most].second, changes[0].second, changes[1].second, changes[2].second,
+      changes[3].second, work_);
   d.hint = &find_energy_hint(context_, trigger_energy);
   drift_ = std::move(d);
 }

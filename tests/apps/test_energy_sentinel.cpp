@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -104,7 +105,8 @@ TEST(EnergySentinel, StopEndsTheRunWithStatusThree) {
   std::stringstream text;
   text << in.rdbuf();
   std::string yaml = text.str();
-  yaml.replace(yaml.find("  end_time: 3.5"), 14, "  end_time: 3.5\n  energy_tolerance: 1.0e-3\n  on_energy_drift: stop");
+  yaml.replace(yaml.find("  end_time: 3.5"), 14,
+               "  end_time: 3.5\n  energy_tolerance: 1.0e-3\n  on_energy_drift: stop");
   std::ofstream(dir / "scene.yaml") << yaml;
   const auto r = cli::mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string(), dir);
   EXPECT_EQ(r.status, 3) << r.err;

@@ -4,10 +4,13 @@
 // fraction, quadratic B-splines, cpGIMP) the balance stays below the tolerance (0.05 of the largest energy).
 // Measured numbers: docs/VERIFICATION.md, "Energy sentinel". Label slow: 15-60 s of CPU per run.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "mpm/app/run_scene.hpp"
@@ -79,7 +82,9 @@ void expect_no_warning(const std::string& from, const std::string& to, const std
   EXPECT_EQ(r.log.find("energy sentinel: at step"), std::string::npos) << r.log;
 }
 
-TEST(EnergySentinelDisks, PicFractionDoesNotWarn) { expect_no_warning("flip_fraction: 1.0", "flip_fraction: 0.99", "pic"); }
+TEST(EnergySentinelDisks, PicFractionDoesNotWarn) {
+  expect_no_warning("flip_fraction: 1.0", "flip_fraction: 0.99", "pic");
+}
 TEST(EnergySentinelDisks, QuadraticBsplinesDoNotWarn) {
   expect_no_warning("shape_function: linear", "shape_function: quadratic_bspline", "quadratic_bspline");
 }

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -64,8 +65,9 @@ inline void expect_flight_record(const std::filesystem::path& output, const Stab
   EXPECT_EQ(std::stoll(node_rows.back()), failing);
   std::ifstream in(dir / "diagnosis.txt");
   const std::string diagnosis((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const std::string part : {"check that failed: ", "of particle " + std::to_string(particle) + " ",
-                                 "nearest documented cause (", "measured: ", "reproduce: "})
+  const std::vector<std::string> parts{"check that failed: ", "of particle " + std::to_string(particle) + " ",
+                                       "nearest documented cause (", "measured: ", "reproduce: "};
+  for (const std::string& part : parts)
     EXPECT_NE(diagnosis.find(part), std::string::npos) << "missing '" << part << "' in:\n" << diagnosis;
 }
 

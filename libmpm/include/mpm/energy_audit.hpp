@@ -15,8 +15,8 @@ namespace mpm {
 
 /// Adds the audit of `b` under `gravity` (m/s^2) to `e`, with the shares of `modules`.
 template <int Dim>
-void add_body_energy(const Body<Dim>& b, const Vec<Dim>& gravity, const std::vector<std::shared_ptr<Module<Dim>>>& modules,
-                     EnergySums& e) {
+void add_body_energy(const Body<Dim>& b, const Vec<Dim>& gravity,
+                     const std::vector<std::shared_ptr<Module<Dim>>>& modules, EnergySums& e) {
   // One exactly summed term per particle and quantity: the audit is the same bits for any storage order
   // (sorting, shuffled input) and any split of the particles (threads, ranks): docs/distributed.md §1.
   const auto& p = b.particles;

@@ -29,11 +29,11 @@ struct HintContext {
 enum HintTrigger : unsigned { trigger_energy = 1u << 0, trigger_guard = 1u << 1 };
 
 struct EnergyHint {
-  std::string_view condition;              ///< the condition in words, for the docs
-  unsigned triggers;                       ///< HintTrigger bits the row answers
-  bool (*applies)(const HintContext&);     ///< the condition in code
-  std::string_view hint;                   ///< what to try
-  std::string_view measurement;            ///< the measurement the hint rests on, with where it is documented
+  std::string_view condition;           ///< the condition in words, for the docs
+  unsigned triggers;                    ///< HintTrigger bits the row answers
+  bool (*applies)(const HintContext&);  ///< the condition in code
+  std::string_view hint;                ///< what to try
+  std::string_view measurement;         ///< the measurement the hint rests on, with where it is documented
 };
 
 /// Every row, most specific first; the last one applies to everything.

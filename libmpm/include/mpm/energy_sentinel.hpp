@@ -83,11 +83,11 @@ class EnergySentinel final : public Module<Dim> {
   bool boundary_work_;
   std::vector<Partner> partners_;
   int interval_;
-  Real work_ = 0;         ///< J, W(t)
+  Real work_ = 0;  ///< J, W(t)
   /// J, the body force's power at the start of the step times dt / 2 (its share of the trapezoidal work)
   Real body_force_start_ = 0;
-  Real scale_ = 0;        ///< J, the largest energy scale so far
-  Real last_ratio_ = 0;   ///< B / tolerance of the last step
+  Real scale_ = 0;       ///< J, the largest energy scale so far
+  Real last_ratio_ = 0;  ///< B / tolerance of the last step
   Real largest_ratio_ = 0;
   Index largest_ratio_step_ = 0;
   std::optional<EnergyDrift> drift_;

@@ -55,8 +55,9 @@ class Simulation {
   void advance(Real dt);
   /// The flight recorder's replay (docs/theory.md §7), after advance() threw StabilityError: restores the
   /// snapshot the guard rolled back to and retakes every step from it through the failing one, calling
-  /// `after_step` on the snapshot's state and after each step; the failing step is taken without the guard, so the last call sees the state
-  /// the guard rejected, and the simulation is left in it. Returns false (and does nothing) when no step failed.
+  /// `after_step` on the snapshot's state and after each step; the failing step is taken without the guard, so the last
+  /// call sees the state the guard rejected, and the simulation is left in it. Returns false (and does nothing) when no
+  /// step failed.
   bool replay_failure(const std::function<void(const Simulation&)>& after_step);
   /// The step of the snapshot replay_failure() starts from (valid after a failure).
   Index failure_replay_start() const { return failure_ ? failure_->step : 0; }

@@ -145,7 +145,8 @@ SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, 
   // The energy sentinel (energy_sentinel.hpp): a fraction of the largest energy of the run so far.
   if (const auto tolerance = map.find("energy_tolerance"))
     solver.energy_tolerance = reader.number(*tolerance, Range::above(0), "");
-  if (const auto action = map.find("on_energy_drift")) solver.on_energy_drift = reader.choice<EnergyDriftAction>(*action);
+  if (const auto action = map.find("on_energy_drift"))
+    solver.on_energy_drift = reader.choice<EnergyDriftAction>(*action);
   return solver;
 }
 
