@@ -58,6 +58,16 @@ Balance run_bar(const std::string& yaml) {
   return b;
 }
 
+// The keys of the solver section, and their defaults (docs/scene-reference.md, solver).
+TEST(EnergySentinel, SolverKeys) {
+  const SceneDescription set = parse_scene(bar("fixed", ", energy_tolerance: 0.2, on_energy_drift: stop"), "bar.yaml");
+  EXPECT_EQ(set.solver.energy_tolerance, 0.2);
+  EXPECT_EQ(set.solver.on_energy_drift, EnergyDriftAction::stop);
+  const SceneDescription unset = parse_scene(bar("fixed"), "bar.yaml");
+  EXPECT_EQ(unset.solver.energy_tolerance, 0.05);
+  EXPECT_EQ(unset.solver.on_energy_drift, EnergyDriftAction::warn);
+}
+
 // Stretched at 0.5 m/s (ramped over 0.02 s) for 0.1 s: the work of the face is the energy the bar gains; the
 // balance is that of the explicit update (round-off and the time discretisation), a small fraction of it.
 TEST(EnergySentinel, PrescribedVelocityWorkBalancesTheEnergy) {
