@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <iostream>
 
 #include "mpm/app/key_location.hpp"
@@ -289,11 +288,7 @@ std::vector<Body<Dim>> prototype_bodies(const SceneDescription& scene, const Gri
   return bodies;
 }
 
-// TEMPORARY (measurement of the audit's cost): MPM_SENTINEL_INTERVAL steps between audits.
-int sentinel_interval() {
-  const char* v = std::getenv("MPM_SENTINEL_INTERVAL");
-  return v ? std::atoi(v) : 1;
-}
+namespace {
 
 /// The energy sentinel of every run (energy_sentinel.hpp), with the rigid partners of the modules that hold the
 /// bodies (reaction_provider.hpp) and the method it quotes hints for.
@@ -320,8 +315,10 @@ void add_energy_sentinel(const SceneDescription& scene, Simulation<Dim>& sim) {
   }
   sim.add_module(std::make_shared<EnergySentinel<Dim>>(scene.solver.energy_tolerance, scene.solver.on_energy_drift,
                                                        context, sim.energy(), sim.boundary().does_work(),
-                                                       std::move(partners), sentinel_interval()));
+                                                       std::move(partners)));
 }
+
+}  // namespace
 
 template <int Dim>
 std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
