@@ -34,7 +34,7 @@ SCHEME_NAMES = {"usl": "USL", "musl": "MUSL", "usf": "USF", "tlmpm": "TLMPM"}
 # The measurements the hint table's FLIP row rests on (tests/slow/test_energy_sentinel_disks.cpp asserts them;
 # `mpm run` of the scene printed by that test gives the numbers), and what the table is.
 ENERGY_SENTINEL_TEXT = (
-    "After every step the energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8) "
+    "Every 50 steps the energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8) "
     "compares the balance E(t) − E(0) − W with 0.05 of the largest energy of the run so far; the stability "
     "guard's stops are recorded by the flight recorder (`failure/`, docs/scene-reference.md). Both quote the "
     "one hint table below (`libmpm/src/energy_hints.cpp`, printed here by `verification_report`): the first row "

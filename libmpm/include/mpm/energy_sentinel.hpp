@@ -1,7 +1,7 @@
 #pragma once
 /// \file energy_sentinel.hpp
-/// The energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8): after every
-/// step, the balance
+/// The energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8): every
+/// `interval` steps (50; the work below is accumulated every step), the balance
 ///   B(t) = E(t) - E(0) - W(t),   E = kinetic + strain (with a gas's internal energy) + gravity potential +
 ///                                    plastic work (dissipation, kept as energy),
 /// where W is the work done on the bodies by the face conditions (prescribed velocities and tractions,
@@ -49,11 +49,16 @@ class EnergySentinel final : public Module<Dim> {
     int body = -1;
   };
   /// `fraction`: solver.energy_tolerance; `initial`: the audit of the initial state (Simulation::energy()).
-  /// `interval`: steps between audits (the work is accumulated every step).
+  /// Steps between two audits (the work is accumulated every step): an exact audit of every particle costs
+  /// about as much as a step of the cheapest schemes (docs/PERFORMANCE.md, "Energy sentinel"), and the
+  /// instabilities it is for grow over hundreds of steps.
+  static constexpr int default_interval = 50;
+  /// `interval`: steps between audits.
   EnergySentinel(Real fraction, EnergyDriftAction action, HintContext context, const EnergyBalance& initial,
-                 bool boundary_work, std::vector<Partner> partners, int interval = 1);
+                 bool boundary_work, std::vector<Partner> partners, int interval = default_interval);
 
   std::string_view name() const override { return "energy_sentinel"; }
+  int interval() const { return interval_; }
   unsigned phases() const override {
     return (boundary_work_ ? phase_grid_velocity : 0u) | phase_before_step | phase_end_of_step;
   }
@@ -76,6 +81,8 @@ class EnergySentinel final : public Module<Dim> {
   Real work() const { return work_; }
 
  private:
+  EnergyBalance audit(const StepContext<Dim>& ctx) const;
+
   Real fraction_;
   EnergyDriftAction action_;
   HintContext context_;
