@@ -4,9 +4,11 @@
 // fraction, quadratic B-splines, cpGIMP) the balance stays below the tolerance (0.05 of the largest energy).
 // Measured numbers: docs/VERIFICATION.md, "Energy sentinel". Label slow: 15-60 s of CPU per run.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -70,6 +72,28 @@ TEST(EnergySentinelDisks, FlipWithHatsWarnsWithTheFlipHint) {
   EXPECT_EQ(r.log.find("warning: energy sentinel", at + 1), std::string::npos) << "warned twice:\n" << r.log;
   for (const char* part : {"flip_fraction: 0.99", "quadratic_bspline", "cpgimp", "grew most", "+37.3%"})
     EXPECT_NE(r.log.find(part, at), std::string::npos) << "missing '" << part << "' in:\n" << r.log;
+}
+
+// `on_energy_drift: stop` through the program: status 3 at the step of the warning, the message names the key,
+// the state of that step is the last frame, and there is no failure/ (the guard's, for a failing particle).
+TEST(EnergySentinelDisks, StopEndsTheProgramWithStatusThree) {
+  const fs::path dir = fs::temp_directory_path() / ("mpm_sentinel_stop_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.yaml") << fine_disks("  end_time: 3.5", "  end_time: 3.5\n  on_energy_drift: stop");
+  const std::string command = std::string(MPM_EXECUTABLE) + " run " + (dir / "scene.yaml").string() + " -o " +
+                              (dir / "out").string() + " > " + (dir / "log").string() + " 2>&1";
+  const int raw = std::system(command.c_str());
+  std::ifstream in(dir / "log");
+  std::stringstream log;
+  log << in.rdbuf();
+  EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 3) << log.str();
+  for (const char* part :
+       {"energy sentinel: at step ", "(solver.on_energy_drift: stop)", "Hint: ", "The last good state was written"})
+    EXPECT_NE(log.str().find(part), std::string::npos) << "missing '" << part << "' in:\n" << log.str();
+  EXPECT_TRUE(fs::exists(dir / "out" / "particles_000001.vtu"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "failure"));
+  fs::remove_all(dir);
 }
 
 void expect_no_warning(const std::string& from, const std::string& to, const std::string& name) {

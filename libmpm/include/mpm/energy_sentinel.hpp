@@ -50,7 +50,7 @@ class EnergySentinel final : public Module<Dim> {
   };
   /// `fraction`: solver.energy_tolerance; `initial`: the audit of the initial state (Simulation::energy()).
   /// Steps between two audits (the work is accumulated every step): an exact audit of every particle costs
-  /// about as much as a step of the cheapest schemes (docs/PERFORMANCE.md, "Energy sentinel"), and the
+  /// about as much as a step of the cheapest schemes (an estimate, docs/theory.md §8), and the
   /// instabilities it is for grow over hundreds of steps.
   static constexpr int default_interval = 50;
   /// `interval`: steps between audits.
