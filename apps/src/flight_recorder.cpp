@@ -87,9 +87,9 @@ class Recorder {
     for (int r = 0; r < Dim; ++r)
       for (int c = 0; c < Dim; ++c) particle_ << ',' << F(r, c);
     particle_ << ',' << F.determinant();
-    const Mat<Dim> stress = p.stress[i].full();
-    for (int r = 0; r < Dim; ++r)
-      for (int c = r; c < Dim; ++c) particle_ << ',' << stress(r, c);
+    const Mat3 stress = p.stress[i].full();  // with the out-of-plane components of 1D and 2D
+    for (int r = 0; r < 3; ++r)
+      for (int c = r; c < 3; ++c) particle_ << ',' << stress(r, c);
     for (const auto& f : state_) {
       std::vector<std::byte> bytes;
       const std::array<Index, 1> which{i};
@@ -140,8 +140,8 @@ class Recorder {
     for (int r = 0; r < Dim; ++r)
       for (int c = 0; c < Dim; ++c) particle_ << ",F_" << axes[r] << axes[c];
     particle_ << ",det_F";
-    for (int r = 0; r < Dim; ++r)
-      for (int c = r; c < Dim; ++c) particle_ << ",stress_" << axes[r] << axes[c];
+    for (int r = 0; r < 3; ++r)
+      for (int c = r; c < 3; ++c) particle_ << ",stress_" << axes[r] << axes[c];
     for (const auto& f : state_)
       for (std::size_t k = 0; k < f.components; ++k)
         particle_ << ',' << f.name << (f.components > 1 ? fmt::format("_{}", k) : std::string());
