@@ -159,6 +159,7 @@ class Recorder {
   /// guard rejected: that is what it shows).
   void write_frame(const Simulation<Dim>& sim) {
     io::PointCloud cloud;
+    cloud.non_finite_allowed = true;  // the failing frame shows what the guard rejected
     for (const auto& b : sim.bodies())
       for (Index i = 0; i < b.particles.size(); ++i) append_padded<Dim>(cloud.points, b.particles.x[i]);
     for (const auto& name : fields_) {

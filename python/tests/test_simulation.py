@@ -107,7 +107,8 @@ def test_the_guard_raises_stability_error_with_the_programs_report(tmp_path):
     path.write_text(scene.to_yaml())
     status, _, err = run_mpm("run", path, "-o", tmp_path / "program")
     assert status == 3
-    program = err.splitlines()[0][len("error: "):]
+    # the program's error line (the flight recorder's line about failure/ comes before it)
+    program = next(line for line in err.splitlines() if line.startswith("error: "))[len("error: "):]
 
     sim = mpm.Simulation(mpm.Scene.from_yaml(str(path)), output=tmp_path / "python")
     with pytest.raises(mpm.StabilityError) as caught:

@@ -68,21 +68,25 @@ TEST(EnergySentinel, SolverKeys) {
   EXPECT_EQ(unset.solver.on_energy_drift, EnergyDriftAction::warn);
 }
 
-// Compressed at 0.5 m/s (ramped over 0.02 s) for 0.1 s: the work of the face is the energy the bar gains; the
-// balance is that of the explicit update (round-off and the time discretisation), a small fraction of it.
+// Compressed at 0.05 m/s (ramped over 0.02 s) for 0.1 s: the work of the face is the energy the bar gains; the
+// balance is that of the explicit update (round-off and the time discretisation), a small fraction of it
+// (measured: W = 0.136513 J, E - E0 = 0.1368 J). A velocity face constrains the row of grid nodes on the face: the
+// end moves 0.0045 m, a tenth of a cell. At 0.5 m/s it moves a whole cell, leaves the constrained nodes' support,
+// and the face then neither pushes the bar nor does work (W = 12.4 J against E - E0 = 10.7 J at 20 cells, 4.9 J
+// against 0.8 J at 80): the balance holds only while the material covers the face's nodes.
 TEST(EnergySentinel, PrescribedVelocityWorkBalancesTheEnergy) {
-  const Balance b = run_bar(bar("{velocity: [\"-0.5*min(t/0.02, 1)\"]}"));
+  const Balance b = run_bar(bar("{velocity: [\"-0.05*min(t/0.02, 1)\"]}"));
   std::printf("[ measured ] velocity face: W = %.6g J, E - E0 = %.6g J, balance %.3e J, largest ratio %.3g\n", b.work,
               b.energy, b.balance, b.largest_ratio);
   EXPECT_GT(b.work, 0.1);
-  EXPECT_LT(std::abs(b.balance), 0.02 * b.work);
+  EXPECT_LT(std::abs(b.balance), 0.01 * b.work);
   EXPECT_LT(b.largest_ratio, 1);
 }
 
 // Pushed by a traction of 100 Pa (ramped over 0.02 s; pulling would carry the end out of the grid): the same with
 // the traction's work f . v dt.
 TEST(EnergySentinel, TractionWorkBalancesTheEnergy) {
-  const Balance b = run_bar("{traction: [\"-100*min(t/0.02, 1)\"]}");
+  const Balance b = run_bar(bar("{traction: [\"-100*min(t/0.02, 1)\"]}"));
   std::printf("[ measured ] traction: W = %.6g J, E - E0 = %.6g J, balance %.3e J, largest ratio %.3g\n", b.work,
               b.energy, b.balance, b.largest_ratio);
   EXPECT_GT(b.work, 0.01);

@@ -42,7 +42,8 @@ void check_finite(const char* where, const std::string& name, const std::vector<
 }
 
 // Sizes, names and values of all fields, for `points` points.
-void check_fields(const char* where, const std::vector<FieldArray>& fields, std::size_t points) {
+void check_fields(const char* where, const std::vector<FieldArray>& fields, std::size_t points,
+                  bool finite_only = true) {
   std::set<std::string> names;
   for (const auto& f : fields) {
     if (f.name.empty()) fail(where, "a field has an empty name");
@@ -52,7 +53,7 @@ void check_fields(const char* where, const std::vector<FieldArray>& fields, std:
     if (f.values.size() != expected)
       fail(where, "field '" + f.name + "' has " + std::to_string(f.values.size()) + " values, expected " +
                       std::to_string(f.components) + " x " + std::to_string(points) + " = " + std::to_string(expected));
-    check_finite(where, f.name, f.values, f.components);
+    if (finite_only) check_finite(where, f.name, f.values, f.components);
   }
 }
 
@@ -123,14 +124,15 @@ void write_xml(const char* where, const std::filesystem::path& path, Writer* wri
 // Every cell has its own `corners` consecutive points (offsets k * corners, connectivity 0..n-1).
 void write_unstructured(const char* where, const std::filesystem::path& path, const std::vector<double>& xyz,
                         int cell_type, int corners, const std::vector<FieldArray>& point_fields,
-                        const std::vector<FieldArray>& cell_fields, const FieldData& field_data) {
+                        const std::vector<FieldArray>& cell_fields, const FieldData& field_data,
+                        bool finite_only = true) {
   if (xyz.size() % 3 != 0) fail(where, std::to_string(xyz.size()) + " coordinates is not 3 per point");
   const auto n = xyz.size() / 3;
   if (corners < 1 || n % static_cast<std::size_t>(corners) != 0)
     fail(where, std::to_string(n) + " points is not " + std::to_string(corners) + " per cell");
   const auto cell_count = n / static_cast<std::size_t>(corners);
-  check_finite(where, "points", xyz, 3);
-  check_fields(where, point_fields, n);
+  if (finite_only) check_finite(where, "points", xyz, 3);
+  check_fields(where, point_fields, n, finite_only);
   check_fields(where, cell_fields, cell_count);
 
   vtkNew<vtkDoubleArray> coords;
@@ -164,7 +166,8 @@ void write_unstructured(const char* where, const std::filesystem::path& path, co
 }  // namespace
 
 void write_vtu(const std::filesystem::path& path, const PointCloud& cloud) {
-  write_unstructured("write_vtu", path, cloud.points, VTK_VERTEX, 1, cloud.fields, {}, cloud.field_data);
+  write_unstructured("write_vtu", path, cloud.points, VTK_VERTEX, 1, cloud.fields, {}, cloud.field_data,
+                     !cloud.non_finite_allowed);
 }
 
 void write_cells_vtu(const std::filesystem::path& path, const CellMesh& mesh) {

@@ -118,10 +118,10 @@ void check_extension_keys(const YamlReader& reader, const YamlMap& map, const So
 
 SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
   const YamlMap map = reader.map(value);
-  std::vector<std::string> allowed{"scheme",           "shape_function",    "velocity_transfer", "flip_fraction",
-                                   "dt",               "cfl",               "end_time",          "mass_cutoff",
-                                   "gravity",          "snapshot_interval", "sort_interval",     "cpdi_domain_update",
-                                   "energy_tolerance", "on_energy_drift"};
+  std::vector<std::string> allowed{
+      "scheme",        "shape_function",     "velocity_transfer", "flip_fraction",  "dt",
+      "cfl",           "end_time",           "mass_cutoff",       "gravity",        "snapshot_interval",
+      "sort_interval", "cpdi_domain_update", "energy_tolerance",  "on_energy_drift"};
   for (const auto& [key, owner] : scheme_extension_solver_keys()) allowed.push_back(key);
   map.allow(allowed);
   SolverDescription solver;

@@ -42,6 +42,9 @@ struct PointCloud {
   std::vector<double> points;
   std::vector<FieldArray> fields;
   FieldData field_data;
+  /// Only for the flight recorder's failing frame (apps flight_recorder.cpp), which shows the values the
+  /// stability guard rejected: coordinates and fields may then be NaN or infinite. Every other writer refuses them.
+  bool non_finite_allowed = false;
   /// Number of points.
   std::size_t size() const { return points.size() / 3; }
 };
@@ -72,7 +75,8 @@ struct ImageGrid {
 /// Throws std::runtime_error, before anything is written, if a coordinate or a field value is not
 /// finite (the message names the field and the point index), if points.size() is not a multiple of
 /// 3, if a field's values.size() != components * size(), if a field has an empty or duplicate name
-/// or components < 1, if a field-data number is not finite; and if VTK fails to write the file.
+/// or components < 1, if a field-data number is not finite; and if VTK fails to write the file. With
+/// `cloud.non_finite_allowed` coordinates and field values are written as they are.
 void write_vtu(const std::filesystem::path& path, const PointCloud& cloud);
 
 /// Writes cells (particle domains) as a VTK XML UnstructuredGrid, same rules as write_vtu, with the
