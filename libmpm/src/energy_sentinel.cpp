@@ -9,6 +9,7 @@
 #include <cmath>
 #include <utility>
 
+#include "mpm/energy_audit.hpp"
 #include "mpm/field_keys.hpp"
 #include "mpm/state_archive.hpp"
 
@@ -51,24 +52,12 @@ Real body_force_power(const std::vector<Body<Dim>>& bodies) {
 
 }  // namespace
 
-// The terms of EnergyBalance::total() as Simulation::energy() sums them (energy_audit.hpp), without the momentum
-// and the mass: kinetic and gravity potential per particle, the materials' strain and dissipated energy, the
-// modules' shares.
+// The terms of EnergyBalance::total() exactly as Simulation::energy() sums them (energy_audit.hpp): kinetic and
+// gravity potential per particle, the materials' strain and dissipated energy, the modules' shares.
 template <int Dim>
 EnergyBalance EnergySentinel<Dim>::audit(const StepContext<Dim>& ctx) const {
   EnergySums sums;
-  const Vec<Dim>& g = ctx.settings.gravity;
-  const bool gravity = !g.isZero();
-  for (const auto& b : ctx.bodies) {
-    const auto& p = b.particles;
-    for (Index i = 0; i < p.size(); ++i) {
-      sums.kinetic += 0.5 * p.mass[i] * p.v[i].squaredNorm();
-      if (gravity) sums.gravity += -(p.mass[i] * g.dot(Vec<Dim>(p.x[i])));
-    }
-    b.material->add_strain_energy(p, sums.strain);
-    b.material->add_dissipated_energy(p, sums.plastic_work);
-    for (const auto& m : ctx.hooks.all()) m->add_energy(b, sums);
-  }
+  for (const auto& b : ctx.bodies) add_body_energy(b, ctx.settings.gravity, ctx.hooks.all(), sums);
   return sums.value();
 }
 

@@ -196,6 +196,7 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
     fresh_jacobian = !have_lu || norm > 0.1 * previous;
     previous = norm;
     bool accepted = false;
+    double newton_update = std::numeric_limits<double>::infinity();  // ||dx|| of the last finite Newton direction
     for (int attempt = 0; attempt < 2 && !accepted; ++attempt) {
       if (fresh_jacobian || attempt > 0) {  // a fresh Jacobian at the current iterate when the old one is stale
         if (!finite_difference_jacobian(problem, x, r, J, stats)) break;
@@ -213,6 +214,7 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
       const Vector dx = gmres.solve(Vector(-r));
       stats.linear_iterations += static_cast<int>(gmres.iterations());
       if (!dx.allFinite()) continue;
+      newton_update = dx.norm();
       // backtracking: halve while inadmissible or without sufficient decrease (Armijo, 1e-4)
       double alpha = 1;
       int inadmissible = 0;
@@ -264,6 +266,10 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
           break;
         }
       }
+    }
+    if (!accepted && newton_update <= s.step_rtol * x.norm()) {
+      stats.converged = stats.at_rounding_floor = true;
+      return stats;
     }
     if (!accepted) {
       stats.failure = "neither the line search along the Newton direction nor a Levenberg-Marquardt step reduced ||R||";

@@ -52,7 +52,26 @@ struct Stencil {
   }
 
   /// `half` (m): the particle's domain half-lengths, read only by domain-based functions (GIMP).
-  inline void compute(const VecU<Dim>& x, const GridGeometry<Dim>& g, const Vec<Dim>& half = Vec<Dim>::Zero()) {
+  /// The 3D linear-hat stencil is always inlined: once the kernels gained their coordinate-system parameter
+  /// (axisymmetry), GCC 12 stopped inlining it into the 3D linear-hat MUSL kernels, +8.3% instructions per
+  /// particle-update. Forcing it everywhere costs the 2D cubic kernels +1.2% instead, so the other stencils keep
+  /// the compiler's choice (bench/count_instructions.sh, PERFORMANCE.md §14).
+  /// The same body twice: an attribute cannot depend on a template parameter, and moving the body into a
+  /// helper changes GCC's decisions again (a forced helper: 2D linear +9.5%; a flattened wrapper: no effect).
+  static constexpr bool forced_inline = Dim == 3 && per_axis == 2;
+  [[gnu::always_inline]] inline void compute(const VecU<Dim>& x, const GridGeometry<Dim>& g,
+                                             const Vec<Dim>& half = Vec<Dim>::Zero()) requires forced_inline {
+    int base[Dim];
+    Real wa[Dim][per_axis], da[Dim][per_axis];
+    for (int d = 0; d < Dim; ++d) {
+      const Real xi = (x[d] - g.origin[d]) * g.inv_h[d];
+      evaluate_axis<Shape>(xi, g.nodes[d], half[d] * g.inv_h[d], base[d], wa[d], da[d]);
+      scale_and_offset(d, xi, g, base[d], da[d]);
+    }
+    combine(base, wa, da, g);
+  }
+  inline void compute(const VecU<Dim>& x, const GridGeometry<Dim>& g,
+                      const Vec<Dim>& half = Vec<Dim>::Zero()) requires(!forced_inline) {
     int base[Dim];
     Real wa[Dim][per_axis], da[Dim][per_axis];
     for (int d = 0; d < Dim; ++d) {

@@ -21,6 +21,11 @@ struct NewtonSettings {
   Real linear_rtol = 1e-4;
   int max_linear_iterations = 200;
   int restart = 50;
+  /// The Newton update is negligible when ||dx|| <= step_rtol ||x|| (PETSc SNES's "stol", same default). When
+  /// no step reduces ||R|| any more and the last Newton update was negligible, ||R|| has reached the floor at
+  /// which its evaluation rounds (the terms it sums are ~1e10 times larger than R there): the iterate is
+  /// accepted as converged at that floor instead of failing a tolerance below what R can resolve.
+  Real step_rtol = 1e-8;
 };
 
 struct NewtonStats {
@@ -32,11 +37,13 @@ struct NewtonStats {
   Real last_residual = 0;        ///< ||R|| at the returned x
   Real tolerance = 0;            ///< max(atol, rtol * reference)
   bool converged = false;
-  std::string failure;  ///< why not, when not converged
+  bool at_rounding_floor = false;  ///< converged by the negligible update (step_rtol), above the tolerance
+  std::string failure;             ///< why not, when not converged
 };
 
 /// Drives R(x) to ||R|| <= max(atol, rtol * reference) from the start x (overwritten with the last accepted
-/// iterate). The start must be admissible.
+/// iterate), or to where no step reduces ||R|| while the Newton update is negligible (step_rtol). The start
+/// must be admissible.
 NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real reference, const NewtonSettings& settings);
 
 }  // namespace mpm::implicit
