@@ -19,6 +19,7 @@
 #include "mpm/app/diff_command.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/out_of_memory.hpp"
+#include "mpm/app/parallel_launch.hpp"
 #include "mpm/app/particles_command.hpp"
 #include "mpm/app/reference_command.hpp"
 #include "mpm/app/run_checkpoints.hpp"
@@ -152,6 +153,11 @@ int main(int argc, char** argv) {
     return status == 0 ? exit_ok : exit_bad_input;
   }
 
+  // Under mpirun/srun with more than one process: refused on every process, explained by the first (issue 18).
+  if (const auto launch = parallel_launch([](const char* name) { return std::getenv(name); })) {
+    if (launch->rank == 0) std::cerr << "error: " << parallel_launch_refusal(*launch) << '\n';
+    return exit_bad_input;
+  }
   std::unique_ptr<tbb::global_control> thread_limit;
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);

@@ -1,0 +1,28 @@
+#pragma once
+/// \file parallel_launch.hpp
+/// A start as one of several processes of a parallel launcher (mpirun, mpiexec, srun). This build has no
+/// distributed engine yet (issue 18): N copies of the same run would each compute the whole scene and overwrite
+/// each other's output. `mpm` refuses such a start (exit 2) before reading anything; the first process says why.
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace mpm::app {
+
+struct ParallelLaunch {
+  long size = 1;         ///< processes the launcher started
+  long rank = 0;         ///< this one's index among them (0 when the launcher does not say)
+  std::string variable;  ///< the environment variable that gave the size
+};
+
+/// The launch as the launchers' environment describes it: OpenMPI's OMPI_COMM_WORLD_SIZE/RANK, the PMI
+/// (MPICH, Intel MPI) PMI_SIZE/RANK, and Slurm's SLURM_STEP_NUM_TASKS/SLURM_PROCID (set by srun for a job step;
+/// not SLURM_NTASKS, which a batch script also holds when it starts one process). Nothing when the size is
+/// absent, not a whole number, or 1.
+std::optional<ParallelLaunch> parallel_launch(const std::function<const char*(const char*)>& environment);
+
+/// The refusal: the count, the variable, what to do instead.
+std::string parallel_launch_refusal(const ParallelLaunch& launch);
+
+}  // namespace mpm::app

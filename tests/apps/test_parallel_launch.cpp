@@ -1,0 +1,99 @@
+// `mpm` started under a parallel launcher (apps/include/mpm/app/parallel_launch.hpp): refused with exit 2 on every
+// process before anything is read or written, explained once (by the first process); a single process, and a
+// Slurm batch script's SLURM_NTASKS alone, run as usual. The last test starts it under OpenMPI's real mpirun.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "mpm/app/parallel_launch.hpp"
+#include "run_mpm.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using cli::mpm;
+using cli::scratch;
+
+const std::string scene = (fs::path(MPM_SOURCE_DIR) / "examples" / "02_two_disks" / "scene.yaml").string();
+
+std::optional<mpm::app::ParallelLaunch> launch_of(const std::map<std::string, std::string>& environment) {
+  return mpm::app::parallel_launch([&](const char* name) -> const char* {
+    const auto it = environment.find(name);
+    return it == environment.end() ? nullptr : it->second.c_str();
+  });
+}
+
+TEST(ParallelLaunch, EachLaunchersVariablesAreRead) {
+  auto l = launch_of({{"OMPI_COMM_WORLD_SIZE", "4"}, {"OMPI_COMM_WORLD_RANK", "3"}});
+  ASSERT_TRUE(l);
+  EXPECT_EQ(l->size, 4);
+  EXPECT_EQ(l->rank, 3);
+  EXPECT_EQ(l->variable, "OMPI_COMM_WORLD_SIZE");
+  l = launch_of({{"PMI_SIZE", "2"}, {"PMI_RANK", "1"}});
+  ASSERT_TRUE(l);
+  EXPECT_EQ(l->size, 2);
+  EXPECT_EQ(l->rank, 1);
+  l = launch_of({{"SLURM_STEP_NUM_TASKS", "8"}, {"SLURM_PROCID", "0"}, {"SLURM_NTASKS", "8"}});
+  ASSERT_TRUE(l);
+  EXPECT_EQ(l->variable, "SLURM_STEP_NUM_TASKS");
+  EXPECT_EQ(l->rank, 0);
+  l = launch_of({{"PMI_SIZE", "3"}});  // no rank variable: counted as the first, so the message is printed
+  ASSERT_TRUE(l);
+  EXPECT_EQ(l->rank, 0);
+}
+
+TEST(ParallelLaunch, OneProcessOrNoLauncherIsNotALaunch) {
+  EXPECT_FALSE(launch_of({}));
+  EXPECT_FALSE(launch_of({{"OMPI_COMM_WORLD_SIZE", "1"}, {"OMPI_COMM_WORLD_RANK", "0"}}));
+  EXPECT_FALSE(launch_of({{"SLURM_NTASKS", "16"}}));  // a batch script that starts one process
+  EXPECT_FALSE(launch_of({{"PMI_SIZE", "two"}}));
+  EXPECT_FALSE(launch_of({{"PMI_SIZE", "4x"}}));
+}
+
+TEST(ParallelLaunch, EveryProcessExitsWithTwoAndTheFirstSaysWhy) {
+  const auto dir = scratch("parallel_launch");
+  const fs::path out = dir / "out";
+  auto r = mpm("run " + scene + " -o " + out.string(), dir, "OMPI_COMM_WORLD_SIZE=4 OMPI_COMM_WORLD_RANK=0");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("started as 4 processes (OMPI_COMM_WORLD_SIZE=4)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("built without MPI"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));  // nothing written
+  r = mpm("run " + scene + " -o " + out.string(), dir, "OMPI_COMM_WORLD_SIZE=4 OMPI_COMM_WORLD_RANK=2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "");  // only the first process explains
+  EXPECT_FALSE(fs::exists(out));
+  r = mpm("check " + scene, dir, "SLURM_STEP_NUM_TASKS=2 SLURM_PROCID=0");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("(SLURM_STEP_NUM_TASKS=2)"), std::string::npos) << r.err;
+  r = mpm("check " + scene, dir, "SLURM_NTASKS=4 OMPI_COMM_WORLD_SIZE=1");
+  EXPECT_EQ(r.status, 0) << r.err;
+  fs::remove_all(dir);
+}
+
+TEST(ParallelLaunch, UnderOpenMpisMpirunNoProcessRuns) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  const auto dir = scratch("parallel_launch_mpirun");
+  const fs::path out = dir / "out";
+  // timeout: a launcher that hangs fails the test instead of the suite
+  const std::string cmd =
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 mpirun "
+      "--oversubscribe -np 2 " +
+      std::string(MPM_EXECUTABLE) + " run " + scene + " -o " + out.string() + " > " + (dir / "stdout").string() +
+      " 2> " + (dir / "stderr").string() + " < /dev/null";
+  const int raw = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_NE(WEXITSTATUS(raw), 0);
+  EXPECT_NE(WEXITSTATUS(raw), 124) << "mpirun did not finish within 120 s";
+  const std::string err = cli::slurp(dir / "stderr");
+  const auto first = err.find("started as 2 processes (OMPI_COMM_WORLD_SIZE=2)");
+  EXPECT_NE(first, std::string::npos) << err;
+  EXPECT_EQ(err.find("started as 2 processes", first + 1), std::string::npos) << "printed more than once:\n" << err;
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+}  // namespace
