@@ -144,8 +144,11 @@ SemiInfinite semi_infinite_temperatures(const std::string& contact, const std::s
   return r;
 }
 
-// (a) Perfect contact (no thermal_conductance): equal bars reach the mean at the interface; unequal
-// effusivities (k_cold = 4: e_c = 2 e_h) the effusivity-weighted mean 333.33 K.
+// (a) Perfect contact (no thermal_conductance): equal bars reach the mean at the interface (the discrete solution is
+// antisymmetric about it, so this holds to round-off); unequal effusivities (k_cold = 4: e_c = 2 e_h) the
+// effusivity-weighted mean 333.33 K, which the scheme has to earn. Profile tolerance 1e-3 of the jump: the scheme's
+// error on the 1D bar of eq. 5.27 is 1.5e-4 at this resolution (physics/thermal/README.md); measured 6.6e-5 and
+// 2.6e-4 here.
 TEST(ThermalContact, PerfectContactGivesTheEffusivityWeightedMean) {
   const Interface equal = semi_infinite_run("1", "contact:", 1);
   const double mean = 0.5 * (T_hot + T_cold);
@@ -153,14 +156,14 @@ TEST(ThermalContact, PerfectContactGivesTheEffusivityWeightedMean) {
               equal.temperature, mean, equal.profile_error);
   EXPECT_NEAR(equal.temperature, mean, 0.01 * mean);
   EXPECT_NEAR(equal.temperature, mean, 0.01 * (T_hot - T_cold));  // 1% of the jump, stricter
-  EXPECT_LT(equal.profile_error, 0.01);
+  EXPECT_LT(equal.profile_error, 1e-3);
 
   const Interface unequal = semi_infinite_run("4", "contact:", 4);
   const double weighted = (1 * T_hot + 2 * T_cold) / 3;
   std::printf("[ measured ] perfect, e_c = 2 e_h: interface %.6f K (analytic %.6f), profile error %.3e\n",
               unequal.temperature, weighted, unequal.profile_error);
   EXPECT_NEAR(unequal.temperature, weighted, 0.01 * (T_hot - T_cold));
-  EXPECT_LT(unequal.profile_error, 0.02);
+  EXPECT_LT(unequal.profile_error, 1e-3);
 }
 
 // The default is today's shared field, bit for bit: the same bars without a contact section, with `contact:` and
