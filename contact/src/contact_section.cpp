@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 #include "mpm/contact/multi_velocity_contact.hpp"
@@ -51,6 +52,13 @@ std::array<std::string, 3> velocity(const YamlReader& reader, const YamlValue& v
   return components;
 }
 
+/// A thermal contact conductance, W/(m^2 K): a number >= 0, or `perfect` (+infinity: the bodies share the
+/// temperature at their common nodes).
+double read_conductance(const YamlReader& reader, const YamlValue& value) {
+  if (value.node.IsScalar() && value.node.Scalar() == "perfect") return std::numeric_limits<double>::infinity();
+  return reader.number(value, Range::at_least(0), "W/(m^2 K)");
+}
+
 /// Fails when the scene's other choices exclude contact (contact/README.md, limits).
 void check_solver(const YamlReader& reader, const YamlValue& section, const SceneDescription& scene) {
   if (is_total_lagrangian(scene.solver.scheme))
@@ -67,16 +75,21 @@ void check_solver(const YamlReader& reader, const YamlValue& section, const Scen
 
 std::vector<PairFriction> read_pairs(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
   std::vector<PairFriction> pairs;
-  for (const auto& item : reader.list(value, std::nullopt, "pairs {bodies: [a, b], friction: mu}")) {
+  for (const auto& item :
+       reader.list(value, std::nullopt, "pairs {bodies: [a, b], friction: mu, thermal_conductance: h}")) {
     const YamlMap map = reader.map(item);
-    map.allow({"bodies", "friction"});
+    map.allow({"bodies", "friction", "thermal_conductance"});
     const YamlValue bodies = map.required("bodies");
-    const YamlValue friction = map.required("friction");
+    const auto friction = map.find("friction");
+    const auto conductance = map.find("thermal_conductance");
+    if (!friction && !conductance)  // a pair sets at least one of the two
+      map.required("friction", "key", " (a pair gives friction, thermal_conductance or both)");
     const auto names = reader.list(bodies, 2, "body names", "");
     PairFriction pair;
     pair.bodies = {body_name(reader, names[0], scene), body_name(reader, names[1], scene)};
     if (pair.bodies[0] == pair.bodies[1]) reader.fail(bodies, "a pair needs two different bodies");
-    pair.friction = reader.number(friction, Range::at_least(0), "");
+    if (friction) pair.friction = reader.number(*friction, Range::at_least(0), "");
+    if (conductance) pair.thermal_conductance = read_conductance(reader, *conductance);
     pair.where = reader.location(item.mark);
     pairs.push_back(pair);
   }
@@ -147,9 +160,14 @@ std::any parse_contact_section(const YamlReader& reader, const YamlValue& sectio
   contact.where = reader.location(section.mark);
   if (section.node.IsNull()) return contact;  // `contact:` alone: frictionless, defaults
   const YamlMap map = reader.map(section);
-  map.allow({"friction", "pairs", "normals", "onset", "rigid_bodies", "planes", "force_file", "force_interval"});
+  map.allow({"friction", "thermal_conductance", "pairs", "normals", "onset", "rigid_bodies", "planes", "force_file",
+             "force_interval"});
   check_solver(reader, section, scene);
   if (const auto friction = map.find("friction")) contact.friction = reader.number(*friction, Range::at_least(0), "");
+  if (const auto conductance = map.find("thermal_conductance")) {
+    contact.thermal_conductance = read_conductance(reader, *conductance);
+    contact.thermal_conductance_where = reader.location(conductance->mark);
+  }
   if (const auto normals = map.find("normals")) contact.normals = reader.choice(*normals, {"mass_gradient", "density"});
   if (const auto onset = map.find("onset")) contact.onset = reader.choice(*onset, {"grid", "particle_gap"});
   if (const auto file = map.find("force_file")) contact.force_file = reader.name(*file);
@@ -161,6 +179,35 @@ std::any parse_contact_section(const YamlReader& reader, const YamlValue& sectio
   return contact;
 }
 
+namespace {
+
+/// The pairs' thermal contact conductances (n x n, W/(m^2 K)), or none when every pair is perfect (the default:
+/// the bodies then share the temperature at their common nodes, as without contact). Refused without a
+/// thermal: section (nothing would conduct heat).
+std::vector<Real> thermal_conductance(const SceneDescription& scene, const ContactDescription& contact) {
+  const int body_count = static_cast<int>(scene.bodies.size());
+  int given = -1;  // the first pair that gives one
+  for (std::size_t k = 0; k < contact.pairs.size() && given < 0; ++k)
+    if (contact.pairs[k].thermal_conductance) given = static_cast<int>(k);
+  if (!contact.thermal_conductance && given < 0) return {};
+  if (!scene.extensions.count("thermal")) {
+    const std::string why = "a thermal contact conductance needs heat conduction: add a thermal: section";
+    if (contact.thermal_conductance)
+      throw SceneError(contact.thermal_conductance_where, "contact.thermal_conductance", why);
+    throw SceneError(contact.pairs[given].where, fmt::format("contact.pairs[{}].thermal_conductance", given), why);
+  }
+  std::vector<Real> h(body_count * body_count,
+                      contact.thermal_conductance.value_or(std::numeric_limits<Real>::infinity()));
+  for (const auto& pair : contact.pairs) {
+    if (!pair.thermal_conductance) continue;
+    const int a = body_index(scene, pair.bodies[0]), b = body_index(scene, pair.bodies[1]);
+    h[a * body_count + b] = h[b * body_count + a] = *pair.thermal_conductance;
+  }
+  return h;
+}
+
+}  // namespace
+
 template <int Dim>
 void build_contact(const SceneDescription& scene, Simulation<Dim>& simulation) {
   const auto& contact = std::any_cast<const ContactDescription&>(scene.extensions.at("contact"));
@@ -169,8 +216,9 @@ void build_contact(const SceneDescription& scene, Simulation<Dim>& simulation) {
   settings.friction.assign(body_count * body_count, contact.friction);
   for (const auto& pair : contact.pairs) {
     const int a = body_index(scene, pair.bodies[0]), b = body_index(scene, pair.bodies[1]);
-    settings.friction[a * body_count + b] = settings.friction[b * body_count + a] = pair.friction;
+    if (pair.friction) settings.friction[a * body_count + b] = settings.friction[b * body_count + a] = *pair.friction;
   }
+  settings.thermal_conductance = thermal_conductance(scene, contact);
   settings.normals = contact.normals == "density" ? NormalMethod::density : NormalMethod::mass_gradient;
   settings.onset = contact.onset == "particle_gap" ? Onset::particle_gap : Onset::grid;
   std::set<int> listed;

@@ -12,10 +12,12 @@
 
 namespace mpm::contact {
 
-/// Friction coefficient of one pair of bodies (overrides the section's default).
+/// Friction coefficient and thermal contact conductance of one pair of bodies (each overrides the section's
+/// default when given).
 struct PairFriction {
   std::array<std::string, 2> bodies;
-  double friction = 0;
+  std::optional<double> friction;
+  std::optional<double> thermal_conductance;  ///< W/(m^2 K)
   SourceLocation where;
 };
 
@@ -38,6 +40,10 @@ struct PlaneDescription {
 
 struct ContactDescription {
   double friction = 0;  ///< default Coulomb coefficient of every pair of bodies
+  /// Default thermal contact conductance h of every pair of bodies, W/(m^2 K) (docs/theory.md eq. TC.1); none:
+  /// perfect contact (the bodies share the temperature at their common nodes).
+  std::optional<double> thermal_conductance;
+  SourceLocation thermal_conductance_where;  ///< of the section's `thermal_conductance` value
   std::vector<PairFriction> pairs;
   std::string normals = "mass_gradient";  ///< "mass_gradient" (eq. 5.12) or "density" (eqs 5.9-5.11)
   std::string onset = "grid";             ///< "grid" (contact nodes, the paper) or "particle_gap"

@@ -12,12 +12,14 @@
 
 #include <array>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "mpm/exact_sum.hpp"
 #include "mpm/expression.hpp"
+#include "mpm/interface_conductance.hpp"
 #include "mpm/module.hpp"
 #include "mpm/reaction_provider.hpp"
 
@@ -29,6 +31,8 @@ enum class Onset { grid, particle_gap };
 template <int Dim>
 struct ContactSettings {
   std::vector<Real> friction;  ///< n x n (n = number of bodies), symmetric
+  /// n x n, symmetric: thermal contact conductance h of each pair, W/(m^2 K); +infinity (perfect) when empty
+  std::vector<Real> thermal_conductance;
   NormalMethod normals = NormalMethod::mass_gradient;
   Onset onset = Onset::grid;
   struct Rigid {
@@ -62,7 +66,7 @@ template <int Dim>
 class ShapePasses;
 
 template <int Dim>
-class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<Dim> {
+class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<Dim>, public InterfaceConductance {
  public:
   /// Gives every body its own nodal arrays; `shape_function` is the scene's (for the normals).
   MultiVelocityContact(const GridGeometry<Dim>& grid, std::vector<Body<Dim>>& bodies, const std::string& shape_function,
@@ -77,6 +81,13 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   /// the force CSV (continued by restore_state(), io/continued_file.hpp).
   void save_state(StateArchive& archive, const std::string& prefix) const override;
   void restore_state(const StateArchive& archive, const std::string& prefix) override;
+
+  /// The pair's `thermal_conductance` (W/(m^2 K); +infinity, perfect, when the scene gives none): read by heat
+  /// conduction (interface_conductance.hpp), which exchanges q = h (T_b - T_a) across the pair's common nodes.
+  Real interface_conductance(int a, int b) const override {
+    return settings_.thermal_conductance.empty() ? std::numeric_limits<Real>::infinity()
+                                                 : settings_.thermal_conductance[a * body_count_ + b];
+  }
 
   /// Time (end of the step) of the first contact correction, or a negative value if none happened yet.
   Real onset_time() const { return onset_time_; }

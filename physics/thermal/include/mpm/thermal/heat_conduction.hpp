@@ -20,10 +20,18 @@
 /// Axisymmetric (Coords): the same equations with the particles' ring masses and volumes (so capacity and
 /// conductance are r-weighted; a scalar field has no hoop term), J with F_tt, face fluxes per unit area of the
 /// revolved face, and the hoop rate joins the thermal expansion (axisymmetric.hpp).
+/// Contact conductance (docs/theory.md eq. TC.1): when a module of the run (contact/) gives a pair of bodies a
+/// finite thermal contact conductance h (interface_conductance.hpp), every body maps to its own nodal fields,
+/// bodies in perfect contact are merged at their common nodes (which is the shared field), and at a node where a
+/// and b with finite h meet, heat Q = h A_I (T_b - T_a) flows from b to a, A_I = |a_I^a - a_I^b|/2 with
+/// a_I^k = sum_p V_p grad phi_I (the node's share of the interface); integrated exactly over the step for the
+/// two nodal capacities (eq. TC.2). Without a finite conductance the single shared field runs unchanged.
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
@@ -32,6 +40,7 @@
 #include "mpm/axisymmetric.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/field_keys.hpp"
+#include "mpm/interface_conductance.hpp"
 #include "mpm/module.hpp"
 #include "mpm/shape/stencil.hpp"
 #include "mpm/state_archive.hpp"
@@ -70,12 +79,7 @@ class HeatConduction final : public Module<Dim> {
     }
     for (const auto& r : setup_.region_temperature) region_.emplace_back(r, std::vector<std::string>{"t"});
     for (const auto& b : setup_.bodies) expands_ = expands_ || b.expansion != 0;
-    const Index n = g.node_count();
-    capacity_.assign(n, 0);
-    heat_content_.assign(n, 0);
-    heat_flow_.assign(n, 0);
-    nodal_temperature_.assign(n, 0);
-    updated_temperature_.assign(n, 0);
+    shared_.assign(g.node_count(), false);
   }
 
   std::string_view name() const override { return "heat_conduction"; }
@@ -112,13 +116,26 @@ class HeatConduction final : public Module<Dim> {
     flux_ready_ = archive.integer(prefix + "flux_ready") != 0;
   }
 
-  /// The grid temperature T_I^{t+dt} of the last step (K; zero on nodes without heat capacity).
-  const std::vector<Real>& grid_temperature() const { return nodal_temperature_; }
+  /// The grid temperature T_I^{t+dt} of the last step (K; zero on nodes without heat capacity). With a finite
+  /// contact conductance: the capacity-weighted mean of the bodies' nodal temperatures.
+  const std::vector<Real>& grid_temperature() const { return shared_.temperature; }
+  /// Body b's own nodal temperature T_I^{t+dt} (K) when the bodies have their own fields (a finite contact
+  /// conductance), else the shared grid temperature.
+  const std::vector<Real>& grid_temperature(int b) const {
+    return own_.empty() ? shared_.temperature : own_[static_cast<std::size_t>(b)].temperature;
+  }
+  /// Whether the bodies have their own nodal temperatures (some pair has a finite contact conductance).
+  bool separate_fields() const { return !own_.empty(); }
 
   void after_p2g(StepContext<Dim>& ctx) override {
     auto& grid = ctx.grid;
     const auto& g = grid.geometry;
     const Real t1 = ctx.time + ctx.dt;
+    if (!interfaces_resolved_) resolve_interfaces(ctx);
+    if (!own_.empty()) {
+      separate_step(ctx);
+      return;
+    }
     if (!flux_ready_) {  // the first step: q_p from the initial temperature field
       hold_particles(ctx.bodies, ctx.time);
       map_temperature(ctx, false);
@@ -130,21 +147,18 @@ class HeatConduction final : public Module<Dim> {
     for (int f = 0; f < 2 * Dim; ++f)
       if (face_flux_[f]) {
         const Real q = (*face_flux_[f])(0, 0, 0, ctx.time);
-        for (std::size_t k = 0; k < faces_[f].node.size(); ++k) heat_flow_[faces_[f].node[k]] -= q * faces_[f].area[k];
+        for (std::size_t k = 0; k < faces_[f].node.size(); ++k)
+          shared_.heat_flow[faces_[f].node[k]] -= q * faces_[f].area[k];
       }
     // T~_I = T_I + dt Q_I / C_I; Dirichlet nodes: T_I = T~_I = T*
-    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
-      for (Index n = r.begin(); n != r.end(); ++n)
-        updated_temperature_[n] =
-            capacity_[n] > 0 ? nodal_temperature_[n] + ctx.dt * heat_flow_[n] / capacity_[n] : nodal_temperature_[n];
-    });
-    hold_nodes(nodal_temperature_, ctx.time);
-    hold_nodes(updated_temperature_, t1);
+    predict(shared_, ctx.dt);
+    hold_nodes(shared_.temperature, ctx.time);
+    hold_nodes(shared_.updated, t1);
     // T_p += sum phi (T~_I - T_I), then the second mapping gives T_I^{t+dt}
-    for (auto& body : ctx.bodies) update_particles(body, g, t1);
+    for (auto& body : ctx.bodies) update_particles(body, shared_, g, t1);
     map_temperature(ctx, false);
     flux_from_grid(ctx);
-    grid.node_fields["temperature"] = nodal_temperature_;
+    grid.node_fields["temperature"] = shared_.temperature;
   }
 
   /// Thermal expansion (eq. 5.26): L -= (alpha dT / dt) I before the stress update of linear_elastic bodies.
@@ -181,6 +195,168 @@ class HeatConduction final : public Module<Dim> {
   }
 
  private:
+  /// Per node: C_I (J/K), sum phi m c T (J), Q_I (W), T_I (K; T_I^{t+dt} after the step), T~_I (K) and, for the
+  /// contact conductance, a_I = sum V_p grad phi_I (m^2 per unit thickness in 2D; the body's boundary share).
+  struct NodalHeat {
+    std::vector<Real> capacity, heat_content, heat_flow, temperature, updated;
+    std::vector<VecU<Dim>> area;
+    void assign(Index n, bool with_area) {
+      for (auto* v : {&capacity, &heat_content, &heat_flow, &temperature, &updated}) v->assign(n, 0);
+      if (with_area) area.assign(n, VecU<Dim>::Zero());
+    }
+  };
+
+  /// Asks the run's modules for the pairs' contact conductances (interface_conductance.hpp); with a finite one,
+  /// every body gets its own nodal fields.
+  void resolve_interfaces(StepContext<Dim>& ctx) {
+    interfaces_resolved_ = true;
+    const int n = static_cast<int>(ctx.bodies.size());
+    for (const auto& m : ctx.hooks.all())
+      if (const auto* provider = dynamic_cast<const InterfaceConductance*>(m.get())) {
+        conductance_.assign(n * n, std::numeric_limits<Real>::infinity());
+        bool finite = false;
+        for (int a = 0; a < n; ++a)
+          for (int b = 0; b < n; ++b)
+            if (a != b) {
+              conductance_[a * n + b] = provider->interface_conductance(a, b);
+              finite = finite || std::isfinite(conductance_[a * n + b]);
+            }
+        if (!finite) return;
+        own_.resize(ctx.bodies.size());
+        for (auto& f : own_) f.assign(ctx.grid.geometry.node_count(), true);
+        return;
+      }
+  }
+
+  /// T~_I = T_I + dt Q_I / C_I.
+  static void predict(NodalHeat& f, Real dt) {
+    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(f.capacity.size()), 1 << 12), [&](const auto& r) {
+      for (Index n = r.begin(); n != r.end(); ++n)
+        f.updated[n] = f.capacity[n] > 0 ? f.temperature[n] + dt * f.heat_flow[n] / f.capacity[n] : f.temperature[n];
+    });
+  }
+
+  /// The step with the bodies' own nodal fields (a finite contact conductance): Alg. 8 per body, with the heat
+  /// exchanged at the nodes two bodies share (eqs TC.1-TC.2) and perfect pairs merged there.
+  void separate_step(StepContext<Dim>& ctx) {
+    const auto& g = ctx.grid.geometry;
+    const Real t1 = ctx.time + ctx.dt;
+    if (!flux_ready_) {
+      hold_particles(ctx.bodies, ctx.time);
+      map_temperature(ctx, false);
+      flux_from_grid(ctx);
+      flux_ready_ = true;
+    }
+    hold_particles(ctx.bodies, ctx.time);
+    map_temperature(ctx, true);  // per body: C_I, T_I^t (perfect pairs merged), Q_I and a_I
+    for (int f = 0; f < 2 * Dim; ++f)
+      if (face_flux_[f]) {  // shared by the bodies at the node in proportion to their capacities
+        const Real q = (*face_flux_[f])(0, 0, 0, ctx.time);
+        for (std::size_t k = 0; k < faces_[f].node.size(); ++k) {
+          const Index I = faces_[f].node[k];
+          if (!(shared_.capacity[I] > 0)) continue;
+          for (auto& own : own_) own.heat_flow[I] -= q * faces_[f].area[k] * own.capacity[I] / shared_.capacity[I];
+        }
+      }
+    for (auto& own : own_) predict(own, ctx.dt);
+    exchange(ctx.bodies.size(), ctx.dt);
+    for (auto& own : own_) {
+      hold_nodes(own.temperature, ctx.time);
+      hold_nodes(own.updated, t1);
+    }
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_particles(ctx.bodies[b], own_[b], g, t1);
+    map_temperature(ctx, false);
+    flux_from_grid(ctx);
+    ctx.grid.node_fields["temperature"] = shared_.temperature;
+  }
+
+  /// The bodies with heat capacity at node I, and for each the first body of its perfect-contact group (bodies
+  /// joined by pairs of infinite conductance share one temperature there). Returns the number of bodies.
+  int groups_at(Index I, std::size_t bodies, int* present, int* root) const {
+    int count = 0;
+    for (std::size_t k = 0; k < bodies; ++k)
+      if (own_[k].capacity[I] > 0) present[count++] = static_cast<int>(k);
+    const int n = static_cast<int>(bodies);
+    for (int i = 0; i < count; ++i) {
+      root[i] = i;
+      for (int j = 0; j < i; ++j)
+        if (!std::isfinite(conductance_[present[i] * n + present[j]]) && root[i] != root[j]) {
+          // relabel i's group with j's label; a label stays the index of one of its members
+          const int old = root[i], joined = root[j];
+          for (int k = 0; k <= i; ++k)
+            if (root[k] == old) root[k] = joined;
+        }
+    }
+    return count;
+  }
+
+  /// At every node two bodies share: perfect groups take one temperature sum C T / sum C; pairs of groups with
+  /// a finite h exchange heat (eq. TC.2); a group's predicted temperature is then T + dt sum Q / sum C.
+  void exchange(std::size_t bodies, Real dt) {
+    const int n = static_cast<int>(bodies);
+    const Index nodes = static_cast<Index>(shared_.capacity.size());
+    tbb::parallel_for(tbb::blocked_range<Index>(0, nodes, 1 << 12), [&](const auto& r) {
+      std::vector<int> present(bodies), root(bodies);
+      std::vector<Real> C(bodies), T(bodies), Q(bodies);
+      for (Index I = r.begin(); I != r.end(); ++I) {
+        const int count = groups_at(I, bodies, present.data(), root.data());
+        if (count < 2) continue;
+        // group sums, held at the group's first member
+        for (int i = 0; i < count; ++i) C[i] = T[i] = Q[i] = 0;
+        for (int i = 0; i < count; ++i) {
+          const auto& own = own_[present[i]];
+          C[root[i]] += own.capacity[I];
+          T[root[i]] += own.capacity[I] * own.temperature[I];
+          Q[root[i]] += own.heat_flow[I];
+        }
+        for (int i = 0; i < count; ++i)
+          if (root[i] == i) T[i] /= C[i];
+        // eq. TC.2 between the members of different groups with a finite conductance
+        for (int i = 0; i < count; ++i)
+          for (int j = i + 1; j < count; ++j) {
+            const int a = present[i], b = present[j], ga = root[i], gb = root[j];
+            const Real h = conductance_[a * n + b];
+            if (ga == gb || !std::isfinite(h) || !(h > 0)) continue;
+            const Real A = 0.5 * (Vec<Dim>(own_[a].area[I]) - Vec<Dim>(own_[b].area[I])).norm();
+            const Real inv = 1 / C[ga] + 1 / C[gb];
+            const Real decay = -std::expm1(-h * A * inv * dt);  // 1 - exp(-lambda dt)
+            const Real flow = (T[gb] - T[ga]) * decay / (inv * dt);
+            Q[ga] += flow;
+            Q[gb] -= flow;
+          }
+        for (int i = 0; i < count; ++i) {
+          auto& own = own_[present[i]];
+          own.temperature[I] = T[root[i]];
+          own.updated[I] = T[root[i]] + dt * Q[root[i]] / C[root[i]];
+        }
+      }
+    });
+  }
+
+  /// After a mapping with own fields: perfect groups take one temperature at their common nodes, and the shared
+  /// field holds the capacity-weighted mean (for the grid output).
+  void merge_groups(std::size_t bodies) {
+    const Index nodes = static_cast<Index>(shared_.capacity.size());
+    tbb::parallel_for(tbb::blocked_range<Index>(0, nodes, 1 << 12), [&](const auto& r) {
+      std::vector<int> present(bodies), root(bodies);
+      std::vector<Real> C(bodies), H(bodies);
+      for (Index I = r.begin(); I != r.end(); ++I) {
+        Real c = 0, hc = 0;
+        for (const auto& own : own_) c += own.capacity[I], hc += own.heat_content[I];
+        shared_.capacity[I] = c;
+        shared_.temperature[I] = c > 0 ? hc / c : 0;
+        const int count = groups_at(I, bodies, present.data(), root.data());
+        if (count < 2) continue;
+        for (int i = 0; i < count; ++i) C[i] = H[i] = 0;
+        for (int i = 0; i < count; ++i) {
+          C[root[i]] += own_[present[i]].capacity[I];
+          H[root[i]] += own_[present[i]].heat_content[I];
+        }
+        for (int i = 0; i < count; ++i) own_[present[i]].temperature[I] = H[root[i]] / C[root[i]];
+      }
+    });
+  }
+
   static FaceNodes face_nodes(const GridGeometry<Dim>& g, int face) {
     const int axis = face / 2;
     const int layer = face % 2 == 0 ? 0 : g.nodes[axis] - 1;
@@ -228,15 +404,20 @@ class HeatConduction final : public Module<Dim> {
   void map_temperature(StepContext<Dim>& ctx, bool heat_flow) {
     auto& grid = ctx.grid;
     const auto& g = grid.geometry;
-    std::fill(capacity_.begin(), capacity_.end(), 0);
-    std::fill(heat_content_.begin(), heat_content_.end(), 0);
-    if (heat_flow) std::fill(heat_flow_.begin(), heat_flow_.end(), 0);
+    const bool separate = !own_.empty();
+    if (!separate) clear(shared_, heat_flow);
+    for (auto& f : own_) clear(f, heat_flow);
     const bool constant_source = source_.is_constant();
     const Real source_value = source_.constant_value();
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
       auto& body = ctx.bodies[b];
       const auto& p = body.particles;
       const Real c = setup_.bodies[b].specific_heat;
+      NodalHeat& f = separate ? own_[b] : shared_;
+      Real* capacity = f.capacity.data();
+      Real* heat_content = f.heat_content.data();
+      Real* heat_flow_out = f.heat_flow.data();
+      VecU<Dim>* area = separate ? f.area.data() : nullptr;
       const VecU<Dim>* x = positions(p);
       const auto& T = p.field(mpm::keys::temperature);
       const auto& q = p.field(keys::heat_flux<Dim>);
@@ -258,8 +439,8 @@ class HeatConduction final : public Module<Dim> {
           st.compute(x[i], g, domain(i));
           const Real mc = p.mass[i] * c, mcT = mc * T[i];
           for (int a = 0; a < st.count; ++a) {
-            capacity_[st.node[a]] += st.w[a] * mc;
-            heat_content_[st.node[a]] += st.w[a] * mcT;
+            capacity[st.node[a]] += st.w[a] * mc;
+            heat_content[st.node[a]] += st.w[a] * mcT;
           }
           if (!heat_flow) continue;
           const Mat<Dim> F = p.F[i];
@@ -276,21 +457,41 @@ class HeatConduction final : public Module<Dim> {
           for (int a = 0; a < st.count; ++a) {
             Real flow = src * st.w[a];
             for (int d = 0; d < Dim; ++d) flow += V * qv[d] * st.grad[a][d];
-            heat_flow_[st.node[a]] += flow;
+            heat_flow_out[st.node[a]] += flow;
           }
+          if (area)  // a_I = sum V_p grad phi_I (eq. TC.1)
+            for (int a = 0; a < st.count; ++a)
+              for (int d = 0; d < Dim; ++d) area[st.node[a]][d] += V * st.grad[a][d];
         }
       });
     }
-    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+    if (!separate) nodal_values(shared_);
+    for (auto& f : own_) nodal_values(f);
+    if (separate) merge_groups(ctx.bodies.size());
+    if (heat_flow) return;
+    hold_nodes(shared_.temperature, ctx.time + ctx.dt);
+    for (auto& f : own_) hold_nodes(f.temperature, ctx.time + ctx.dt);
+  }
+
+  static void clear(NodalHeat& f, bool heat_flow) {
+    std::fill(f.capacity.begin(), f.capacity.end(), 0);
+    std::fill(f.heat_content.begin(), f.heat_content.end(), 0);
+    if (!heat_flow) return;
+    std::fill(f.heat_flow.begin(), f.heat_flow.end(), 0);
+    std::memset(static_cast<void*>(f.area.data()), 0, f.area.size() * sizeof(VecU<Dim>));
+  }
+
+  /// T_I = sum phi (m c T) / C_I (eq. 5.25).
+  static void nodal_values(NodalHeat& f) {
+    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(f.capacity.size()), 1 << 12), [&](const auto& r) {
       for (Index n = r.begin(); n != r.end(); ++n)
-        nodal_temperature_[n] = capacity_[n] > 0 ? heat_content_[n] / capacity_[n] : 0;
+        f.temperature[n] = f.capacity[n] > 0 ? f.heat_content[n] / f.capacity[n] : 0;
     });
-    if (!heat_flow) hold_nodes(nodal_temperature_, ctx.time + ctx.dt);
   }
 
   /// T_p += sum phi (T~_I - T_I); keeps the increment for the thermal expansion (field
   /// keys::temperature_increment, only when a body expands).
-  void update_particles(Body<Dim>& body, const GridGeometry<Dim>& g, Real t1) {
+  void update_particles(Body<Dim>& body, const NodalHeat& f, const GridGeometry<Dim>& g, Real t1) {
     auto& p = body.particles;
     auto& T = p.field(mpm::keys::temperature);
     const VecU<Dim>* x = positions(p);
@@ -304,8 +505,7 @@ class HeatConduction final : public Module<Dim> {
       for (Index i = r.begin(); i != r.end(); ++i) {
         st.compute(x[i], g, domain(i));
         Real d = 0;
-        for (int a = 0; a < st.count; ++a)
-          d += st.w[a] * (updated_temperature_[st.node[a]] - nodal_temperature_[st.node[a]]);
+        for (int a = 0; a < st.count; ++a) d += st.w[a] * (f.updated[st.node[a]] - f.temperature[st.node[a]]);
         if (region && region[i] >= 0) d = held[static_cast<std::size_t>(region[i])] - T[i];
         T[i] += d;
         if (dT) dT[i] = d;
@@ -321,6 +521,7 @@ class HeatConduction final : public Module<Dim> {
       auto& q = p.field(keys::heat_flux<Dim>);
       const VecU<Dim>* x = positions(p);
       const Mat<Dim> k = setup_.bodies[b].conductivity;
+      const std::vector<Real>& nodal_temperature = own_.empty() ? shared_.temperature : own_[b].temperature;
       tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
         axisym::StencilFor<Dim, Shape, Coords> st;
         const ParticleDomain<Dim, Shape> domain(p);
@@ -328,7 +529,7 @@ class HeatConduction final : public Module<Dim> {
           st.compute(x[i], g, domain(i));
           Vec<Dim> grad = Vec<Dim>::Zero();
           for (int a = 0; a < st.count; ++a)
-            for (int d = 0; d < Dim; ++d) grad[d] += st.grad[a][d] * nodal_temperature_[st.node[a]];
+            for (int d = 0; d < Dim; ++d) grad[d] += st.grad[a][d] * nodal_temperature[st.node[a]];
           if (setup_.total_lagrangian) grad = Mat<Dim>(p.F[i]).inverse().transpose() * grad;
           q[i] = -(k * grad);
         }
@@ -343,10 +544,12 @@ class HeatConduction final : public Module<Dim> {
   std::vector<Expression> region_;
   bool expands_ = false;
   bool flux_ready_ = false;
+  bool interfaces_resolved_ = false;
   Real h_min_ = 1;
-  // Per node: C_I (J/K), sum phi m c T (J), Q_I (W), T_I (K; T_I^{t+dt} after the step), T~_I (K).
-  std::vector<Real> capacity_, heat_content_, heat_flow_, nodal_temperature_, updated_temperature_;
-  std::vector<Real> gamma_;  ///< scratch: W/m^3 per particle
+  NodalHeat shared_;               ///< all bodies on one field (perfect contact); with own fields, their sum
+  std::vector<NodalHeat> own_;     ///< per body, only when some pair has a finite contact conductance
+  std::vector<Real> conductance_;  ///< n x n, W/(m^2 K) (+infinity: perfect), from an InterfaceConductance
+  std::vector<Real> gamma_;        ///< scratch: W/m^3 per particle
 };
 
 }  // namespace mpm::thermal
