@@ -5,7 +5,10 @@
 # project switched off and on, then compares them with bench/compare_builds.sh (alternating rounds; best and
 # median particle-updates/s, heap bytes per particle; runs in $MPM_BUILD_DIR-modules-on/compare_builds.csv).
 #   bash bench/run_module_overhead.sh [--rounds N] [--case 2d_linear_usl,3d_linear_usl] [--threads 1] [--full]
-# --full uses the 1e6-particle blocks (default: the --quick blocks of about 2.5e5 particles).
+#   bash bench/run_module_overhead.sh --instructions [--case ...]
+# --full uses the 1e6-particle blocks (default: the --quick blocks of about 2.5e5 particles). --instructions
+# counts instructions per particle-update instead (bench/count_instructions.sh, valgrind): exact to the last
+# digit, where the wall-time comparison wanders by +-10% on a shared VM (PERFORMANCE.md §11, §14).
 # Build directories: $MPM_BUILD_DIR-modules-off and -on (default build-modules-off, build-modules-on);
 # MPM_JOBS compile jobs (default 1). Optional modules follow one convention: a CMake option MPM_WITH_<NAME>
 # (physics/CMakeLists.txt); the script finds them in the CMake cache, so new modules are included as they land.
@@ -18,13 +21,15 @@ rounds=5
 cases=2d_linear_usl,3d_linear_usl
 threads=1
 size=""
+instructions=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --rounds) rounds="${2:?--rounds needs a value}"; shift 2 ;;
     --case) cases="${2:?--case needs a value}"; shift 2 ;;
     --threads) threads="${2:?--threads needs a value}"; shift 2 ;;
     --full) size="--full"; shift ;;
-    -h | --help) sed -n '2,15p' "$0"; exit 0 ;;
+    --instructions) instructions=1; shift ;;
+    -h | --help) sed -n '2,14p' "$0"; exit 0 ;;
     *) echo "run_module_overhead.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -47,5 +52,8 @@ cmake --build "$off" --target bench_throughput -j "$jobs"
 
 # Modules off = A, modules on = B.
 cd "$base-modules-on"
+if [[ -n "$instructions" ]]; then
+  exec bash "$root/bench/count_instructions.sh" "$off/bench/bench_throughput" "$on/bench/bench_throughput" --case "$cases"
+fi
 exec bash "$root/bench/compare_builds.sh" "$off/bench/bench_throughput" "$on/bench/bench_throughput" \
   --rounds "$rounds" --case "$cases" --threads "$threads" ${size:+"$size"}
