@@ -195,7 +195,9 @@ TEST(ThermalContact, LargeConductanceTendsToPerfectContact) {
     for (std::size_t I = 0; I < perfect.nodes.size(); ++I)
       difference = std::max(difference, std::abs(stiff.nodes[I] - perfect.nodes[I]));
     std::printf("[ measured ] dx = %s m: h = 1e9 W/(m^2 K) against perfect, max nodal |dT| = %.4f K\n", dx, difference);
-    if (previous > 0) EXPECT_LT(difference, 0.6 * previous);
+    if (previous > 0) {
+      EXPECT_LT(difference, 0.6 * previous);
+    }
     previous = difference;
   }
   EXPECT_LT(previous, 0.02 * (T_hot - T_cold));
