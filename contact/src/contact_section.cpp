@@ -70,7 +70,9 @@ void check_solver(const YamlReader& reader, const YamlValue& section, const Scen
   for (int f = 0; f < 2 * scene.dimension; ++f)
     for (const auto& traction : scene.grid.boundary[f].traction)
       if (traction)
-        reader.fail(section, "face tractions (grid.boundary ... traction) are not supported together with contact");
+        reader.fail(section,
+                    "face tractions (grid.boundary ... traction) are not supported together with contact: a traction "
+                    "acts on the shared grid field, and contact gives every body its own");
 }
 
 std::vector<PairFriction> read_pairs(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
