@@ -24,39 +24,25 @@
 namespace mpm::test {
 namespace {
 
-/// Hot bar [0, L] (body 0) and cold bar [L, 2L] (body 1), 1D; @CONTACT@ is the contact section (or nothing).
-const std::string bars_1d = R"(
-dimension: 1
-grid: {origin: [0], extent: [@EXTENT@], cell_size: @H@}
+/// Hot bar [0, L] (body 0) and cold bar [L, 2L] (body 1); @CONTACT@ is the contact section (or nothing). In 2D
+/// (@Y0@ = ", 0", @HEIGHT@ = ", 0.02") the bars are 0.02 m high (4 cells) and the interface is the grid line x = L.
+const std::string bars = R"(
+dimension: @DIM@
+grid: {origin: [0@Y0@], extent: [@EXTENT@@HEIGHT@], cell_size: @H@}
 materials:
   hot: {model: linear_elastic, density: @RHO@, youngs_modulus: 1.0e-9, poisson_ratio: 0, specific_heat: @C@,
         thermal_conductivity: @K_HOT@}
   cold: {model: linear_elastic, density: @RHO@, youngs_modulus: 1.0e-9, poisson_ratio: 0, specific_heat: @C@,
          thermal_conductivity: @K_COLD@}
 bodies:
-  - {name: hot, material: hot, shape: {type: box, min: [0], max: [@L@]}, particles_per_cell: 2}
-  - {name: cold, material: cold, shape: {type: box, min: [@L@], max: [@EXTENT@]}, particles_per_cell: 2}
+  - {name: hot, material: hot, shape: {type: box, min: [0@Y0@], max: [@L@@HEIGHT@]}, particles_per_cell: 2}
+  - {name: cold, material: cold, shape: {type: box, min: [@L@@Y0@], max: [@EXTENT@@HEIGHT@]}, particles_per_cell: 2}
 solver: {scheme: musl, shape_function: linear, cfl: 0.8, end_time: @END@}
 thermal: {initial_temperature: "x < @L@ ? 400 : 300"}
 @CONTACT@
 )";
-
-/// The same in 2D: bars of height 0.02 m (4 cells), the interface a grid line x = L.
-const std::string bars_2d = R"(
-dimension: 2
-grid: {origin: [0, 0], extent: [@EXTENT@, 0.02], cell_size: @H@}
-materials:
-  hot: {model: linear_elastic, density: @RHO@, youngs_modulus: 1.0e-9, poisson_ratio: 0, specific_heat: @C@,
-        thermal_conductivity: @K_HOT@}
-  cold: {model: linear_elastic, density: @RHO@, youngs_modulus: 1.0e-9, poisson_ratio: 0, specific_heat: @C@,
-         thermal_conductivity: @K_COLD@}
-bodies:
-  - {name: hot, material: hot, shape: {type: box, min: [0, 0], max: [@L@, 0.02]}, particles_per_cell: 2}
-  - {name: cold, material: cold, shape: {type: box, min: [@L@, 0], max: [@EXTENT@, 0.02]}, particles_per_cell: 2}
-solver: {scheme: musl, shape_function: linear, cfl: 0.8, end_time: @END@}
-thermal: {initial_temperature: "x < @L@ ? 400 : 300"}
-@CONTACT@
-)";
+const std::string bars_1d = fill(bars, {{"DIM", "1"}, {"Y0", ""}, {"HEIGHT", ""}});
+const std::string bars_2d = fill(bars, {{"DIM", "2"}, {"Y0", ", 0"}, {"HEIGHT", ", 0.02"}});
 
 constexpr double T_hot = 400, T_cold = 300;
 
