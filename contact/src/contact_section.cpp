@@ -253,6 +253,8 @@ void build_contact(const SceneDescription& scene, Simulation<Dim>& simulation) {
   if (!contact.force_file.empty())
     settings.force_file = (std::filesystem::path(scene.output.directory) / contact.force_file).string();
   settings.force_interval = contact.force_interval;
+  // USF takes the strain rate from v^t: a node whose bodies separate at v^t is released (docs/theory.md §11, "Energy").
+  settings.release_on_start = scene.solver.scheme == SchemeKind::usf;
   try {
     simulation.add_module(std::make_shared<MultiVelocityContact<Dim>>(simulation.grid().geometry, simulation.bodies(),
                                                                       scene.solver.shape_function, settings));

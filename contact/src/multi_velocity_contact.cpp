@@ -333,6 +333,9 @@ void MultiVelocityContact<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStag
   body_velocities(ctx, stage);
   // v^t is left as mapped: the FLIP increment v~ - v^t carries the contact impulse to the particles.
   if (stage == GridStage::mapped) return;
+  // MUSL's re-mapped velocity only gives the strain rate: correcting it changes the strain energy but no particle's
+  // momentum (docs/theory.md §11, "Energy"), so by default each body keeps its own.
+  if (stage == GridStage::remapped && !settings_.correct_remapped) return;
   const bool record = stage == GridStage::updated;
   correct(ctx, stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped, record);
 }
@@ -380,12 +383,26 @@ void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVel
 template <int Dim>
 bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Index I, int k, int other,
                                                  const Vec<Dim>& v_cm, const Vec<Dim>& n, Real mu) {
-  Vec<Dim> v = body_grids_[k].velocity[I].*pass.member;
+  NodeVelocity<Dim>& nv = body_grids_[k].velocity[I];
+  Vec<Dim> v = nv.*pass.member;
   const Vec<Dim> before = v;
+  // The partner's velocity at the start of the step: a body's own v^t, a plane's velocity.
+  const bool rigid_partner = other >= body_count_ || rigid_of_[other] >= 0;
+  const Vec<Dim> partner_start = other >= body_count_ ? pass.plane_velocity[other - body_count_]
+                                                      : Vec<Dim>(body_grids_[other].velocity[I].mapped);
+  // release_on_start: a node whose bodies separate at v^t is not corrected (the correction's work J.(v^t_k -
+  // v^t_partner) would be positive, CorrectionWork::start_velocity).
+  if (pass.record && settings_.release_on_start && !((Vec<Dim>(nv.mapped) - partner_start).dot(n) > 0)) return false;
   if (!correct_velocity<Dim>(v, v_cm, n, mu)) return false;
-  body_grids_[k].velocity[I].*pass.member = v;
-  if (!pass.record) return true;
-  const Vec<Dim> f = body_grids_[k].node[I].mass * (v - before) / pass.dt;
+  nv.*pass.member = v;
+  const Real m = body_grids_[k].node[I].mass;
+  if (!pass.record) {  // the re-mapped velocity: only the strain rate sees the change
+    work_.remapped -= pass.dt * Vec<Dim>(body_grids_[k].node[I].force).dot(v - before);
+    return true;
+  }
+  const Vec<Dim> impulse = m * (v - before);
+  work_.start_velocity += impulse.dot(Vec<Dim>(nv.mapped) - (rigid_partner ? partner_start : Vec<Dim>::Zero()));
+  const Vec<Dim> f = impulse / pass.dt;
   StepSums& sums = step_sums_[k * pass.slots + other];
   for (int d = 0; d < Dim; ++d) sums.force[d] += f[d];
   Vec3 x3 = Vec3::Zero(), f3 = Vec3::Zero();

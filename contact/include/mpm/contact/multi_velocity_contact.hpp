@@ -50,6 +50,26 @@ struct ContactSettings {
   std::vector<Plane> planes;
   std::string force_file;  ///< empty: no CSV
   Real force_interval = 0;
+  /// MUSL: correct the re-mapped velocity again (the paper's Remark 33). Off: the strain rate of each body is
+  /// taken from its own re-mapped velocity. The second correction changes the velocity the strain rate is taken
+  /// from without changing any particle's momentum, and under compression at the node its work
+  /// -dt sum f_I . dv_I is positive: it made the colliding cylinders gain energy (docs/theory.md §11, "Energy").
+  bool correct_remapped = false;
+  /// Correct a node only if its bodies also approach in the velocity v^t of the start of the step (the USF
+  /// strain rate's); the trial velocity alone is the paper's test (eq. 5.2).
+  bool release_on_start = false;
+};
+
+/// The work the contact corrections did in the scheme's energy balance, summed over the run (J, per unit
+/// thickness in 2D): how each correction changes the total energy, measured by the corrections themselves.
+struct CorrectionWork {
+  /// -dt sum f_I . (v_I - v~_I) of the corrections of the re-mapped velocity (MUSL with `correct_remapped`): the
+  /// strain energy they add or remove while no particle velocity changes (f_I: the body's internal force).
+  Real remapped = 0;
+  /// sum J_I . v_I^t of the corrections at the updated stage (J_I: impulse on a body at node I, v_I^t its velocity
+  /// at the start of the step; a rigid partner's term with its reaction): positive when bodies that were
+  /// separating at the start of the step are corrected, which USF's strain rate (from v^t) does not see.
+  Real start_velocity = 0;
 };
 
 /// Force on `body` from `other` (a body index, or -1 - plane index), summed over the contact nodes.
@@ -93,6 +113,11 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   Real onset_time() const { return onset_time_; }
   /// Forces of the last step, one entry per pair that touched (bodies, then rigid reactions).
   const std::vector<PairForce<Dim>>& last_forces() const { return last_forces_; }
+  /// The work of the corrections since the start of the run (see CorrectionWork).
+  const CorrectionWork& correction_work() const { return work_; }
+  /// Switches of ContactSettings that tests change on a built simulation (the paper's corrections).
+  void set_correct_remapped(bool on) { settings_.correct_remapped = on; }
+  void set_release_on_start(bool on) { settings_.release_on_start = on; }
   /// Number of contact nodes (corrected at the `updated` stage) in the last step.
   Index contact_node_count() const { return contact_nodes_last_; }
   /// Position of plane k at the current time (it moves with its velocity).
@@ -181,6 +206,7 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
     ExactSum normal;
   };
   std::vector<StepSums> step_sums_;
+  CorrectionWork work_;
   Real onset_time_ = -1;
   Index contact_nodes_last_ = 0;
   Real last_row_time_ = 0;
