@@ -388,8 +388,8 @@ bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Ind
   const Vec<Dim> before = v;
   // The partner's velocity at the start of the step: a body's own v^t, a plane's velocity.
   const bool rigid_partner = other >= body_count_ || rigid_of_[other] >= 0;
-  const Vec<Dim> partner_start = other >= body_count_ ? pass.plane_velocity[other - body_count_]
-                                                      : Vec<Dim>(body_grids_[other].velocity[I].mapped);
+  const Vec<Dim> partner_start =
+      other >= body_count_ ? pass.plane_velocity[other - body_count_] : Vec<Dim>(body_grids_[other].velocity[I].mapped);
   // release_on_start: a node whose bodies separate at v^t is not corrected (the correction's work J.(v^t_k -
   // v^t_partner) would be positive, CorrectionWork::start_velocity).
   if (pass.record && settings_.release_on_start && !((Vec<Dim>(nv.mapped) - partner_start).dot(n) > 0)) return false;
