@@ -103,7 +103,9 @@ TEST(ContactEnergy, CylindersNeverGainEnergy) {
         print(std::string(plastic ? "plastic" : "elastic") + " cylinders, " + scheme + ", " + onset, r);
         EXPECT_LT(r.rise, 0.005) << scheme << " " << onset << " plastic " << plastic;
         EXPECT_EQ(r.remapped_work, 0);  // no second correction
-        if (scheme == "usf") EXPECT_LE(r.start_work, 0) << onset;
+        if (scheme == "usf") {
+          EXPECT_LE(r.start_work, 0) << onset;
+        }
         EXPECT_GT(r.onset, 0);
       }
 }
