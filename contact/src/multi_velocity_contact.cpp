@@ -390,9 +390,12 @@ bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Ind
   const bool rigid_partner = other >= body_count_ || rigid_of_[other] >= 0;
   const Vec<Dim> partner_start =
       other >= body_count_ ? pass.plane_velocity[other - body_count_] : Vec<Dim>(body_grids_[other].velocity[I].mapped);
-  // release_on_start: a node whose bodies separate at v^t is not corrected (the correction's work J.(v^t_k -
-  // v^t_partner) would be positive, CorrectionWork::start_velocity).
-  if (pass.record && settings_.release_on_start && !((Vec<Dim>(nv.mapped) - partner_start).dot(n) > 0)) return false;
+  // release_on_start: a node whose two deformable bodies separate at v^t is not corrected (the correction's work
+  // J.(v^t_k - v^t_partner) would be positive, CorrectionWork::start_velocity). Planes and rigid bodies keep the
+  // paper's test: a resting contact there has v^t . n = 0 up to round-off and would chatter.
+  if (pass.record && settings_.release_on_start && !rigid_partner &&
+      !((Vec<Dim>(nv.mapped) - partner_start).dot(n) > 0))
+    return false;
   if (!correct_velocity<Dim>(v, v_cm, n, mu)) return false;
   nv.*pass.member = v;
   const Real m = body_grids_[k].node[I].mass;

@@ -7,7 +7,8 @@
 ///  - after P2G: the contact candidates (nodes with mass of two bodies, or behind a rigid plane), the
 ///    bodies' normals there (eq. 5.12 or 5.9-5.11) and, with onset `particle_gap`, the particle gap;
 ///  - at every grid-velocity stage: the bodies' nodal velocities, the boundary conditions, and at the
-///    `updated` and MUSL `remapped` stages the contact correction (eqs 5.2-5.8; Remark 33: MUSL twice).
+///    `updated` stage the contact correction (eqs 5.2-5.8); MUSL's re-mapped velocity is not corrected again
+///    unless `correct_remapped` (the paper's Remark 33, which adds energy: docs/theory.md §11, "Energy").
 /// Contact forces (impulse of the correction / dt) go to a CSV, reaction forces of rigid bodies too.
 
 #include <array>
@@ -55,8 +56,11 @@ struct ContactSettings {
   /// from without changing any particle's momentum, and under compression at the node its work
   /// -dt sum f_I . dv_I is positive: it made the colliding cylinders gain energy (docs/theory.md §11, "Energy").
   bool correct_remapped = false;
-  /// Correct a node only if its bodies also approach in the velocity v^t of the start of the step (the USF
-  /// strain rate's); the trial velocity alone is the paper's test (eq. 5.2).
+  /// Correct a node of two deformable bodies only if they also approach in the velocity v^t of the start of the
+  /// step; the trial velocity alone is the paper's test (eq. 5.2). With MUSL and USF a correction changes the
+  /// particles' kinetic energy by J.v^t to first order: at a node whose bodies separate at v^t (the node criterion
+  /// corrects nodes between bodies still apart) that is positive. On by default with onset `grid` and MUSL or USF
+  /// (contact_section.cpp; docs/theory.md §11, "Energy").
   bool release_on_start = false;
 };
 
