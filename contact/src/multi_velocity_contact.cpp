@@ -333,9 +333,10 @@ void MultiVelocityContact<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStag
   body_velocities(ctx, stage);
   // v^t is left as mapped: the FLIP increment v~ - v^t carries the contact impulse to the particles.
   if (stage == GridStage::mapped) return;
-  // MUSL's re-mapped velocity only gives the strain rate: correcting it changes the strain energy but no particle's
-  // momentum (docs/theory.md §11, "Energy"), so by default each body keeps its own.
-  if (stage == GridStage::remapped && !settings_.correct_remapped) return;
+  // MUSL's re-mapped velocity only gives the strain rate: correcting it between two deformable bodies changes the
+  // strain energy but no particle's momentum (docs/theory.md §11, "Energy"), so by default each keeps its own.
+  // Against a plane or a rigid body it is still corrected: like a boundary condition (also applied to the re-mapped
+  // velocity), the prescribed motion then enters the strain rate (the platen's reaction, test_rigid_platen.cpp).
   const bool record = stage == GridStage::updated;
   correct(ctx, stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped, record);
 }
@@ -390,6 +391,7 @@ bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Ind
   const bool rigid_partner = other >= body_count_ || rigid_of_[other] >= 0;
   const Vec<Dim> partner_start =
       other >= body_count_ ? pass.plane_velocity[other - body_count_] : Vec<Dim>(body_grids_[other].velocity[I].mapped);
+  if (!pass.record && !settings_.correct_remapped && !rigid_partner) return false;
   // release_on_start: a node whose two deformable bodies separate at v^t is not corrected (the correction's work
   // J.(v^t_k - v^t_partner) would be positive, CorrectionWork::start_velocity). Planes and rigid bodies keep the
   // paper's test: a resting contact there has v^t . n = 0 up to round-off and would chatter.

@@ -7,8 +7,9 @@
 ///  - after P2G: the contact candidates (nodes with mass of two bodies, or behind a rigid plane), the
 ///    bodies' normals there (eq. 5.12 or 5.9-5.11) and, with onset `particle_gap`, the particle gap;
 ///  - at every grid-velocity stage: the bodies' nodal velocities, the boundary conditions, and at the
-///    `updated` stage the contact correction (eqs 5.2-5.8); MUSL's re-mapped velocity is not corrected again
-///    unless `correct_remapped` (the paper's Remark 33, which adds energy: docs/theory.md §11, "Energy").
+///    `updated` stage the contact correction (eqs 5.2-5.8); MUSL's re-mapped velocity again against planes and
+///    rigid bodies, between two deformable bodies only with `correct_remapped` (the paper's Remark 33, which adds
+///    energy there: docs/theory.md §11, "Energy").
 /// Contact forces (impulse of the correction / dt) go to a CSV, reaction forces of rigid bodies too.
 
 #include <array>
@@ -51,8 +52,9 @@ struct ContactSettings {
   std::vector<Plane> planes;
   std::string force_file;  ///< empty: no CSV
   Real force_interval = 0;
-  /// MUSL: correct the re-mapped velocity again (the paper's Remark 33). Off: the strain rate of each body is
-  /// taken from its own re-mapped velocity. The second correction changes the velocity the strain rate is taken
+  /// MUSL: correct the re-mapped velocity again at nodes of two deformable bodies (the paper's Remark 33; against a
+  /// plane or a rigid body it is always corrected). Off: the strain rate of each body is taken from its own
+  /// re-mapped velocity there. The second correction changes the velocity the strain rate is taken
   /// from without changing any particle's momentum, and under compression at the node its work
   /// -dt sum f_I . dv_I is positive: it made the colliding cylinders gain energy (docs/theory.md §11, "Energy").
   bool correct_remapped = false;
