@@ -31,9 +31,11 @@ solver: {scheme: @SCHEME@, shape_function: @SHAPE@, cfl: 0.4, end_time: 0.003}
 contact: {onset: particle_gap}
 )";
 
-// Measured: MUSL with hats, striker -0.051 and target -0.949 m/s after separation, contact 2.032 ms, max |v_r|
-// 0.70 v0; USF with cubic B-splines -0.016, -0.984 m/s, 2.043 ms, 0.26 v0 (the same scene in plane strain gives
-// the same axial velocities to 0.3%); the axial momentum is conserved to round-off (equal and opposite normals).
+// Measured: MUSL with hats, striker -0.072 and target -0.929 m/s after separation, contact 2.037 ms, max |v_r|
+// 0.63 v0 (-0.051 and -0.949 m/s when the re-mapped velocity was corrected again, the paper's Remark 33, which
+// adds energy between deformable bodies: test_contact_energy.cpp); USF with cubic B-splines -0.016, -0.984 m/s, 2.043
+// ms, 0.26 v0 (the same scene in plane strain gives the same axial velocities to 0.3%); the axial momentum is conserved
+// to round-off (equal and opposite normals).
 TEST(AxisymmetricBarImpact, StrikerStopsAndTargetTakesItsVelocity) {
   constexpr double v0 = 1, c = 100, L = 0.1;  // c = sqrt(E / rho)
   for (const auto& [scheme, shape] : {std::pair{"musl", "linear"}, std::pair{"usf", "cubic_bspline"}}) {
@@ -58,8 +60,8 @@ TEST(AxisymmetricBarImpact, StrikerStopsAndTargetTakesItsVelocity) {
         "[ measured ] coaxial bars %s/%s: striker v_z %.4f, target v_z %.4f m/s (bar theory 0, %.1f), contact "
         "%.3f ms (2L/c %.3f), |p_z - p_z0| max %.1e (p_z0 %.4f), max |v_r| %.3f v0\n",
         scheme, shape, striker[1], target[1], -v0, 1e3 * duration, 2e3 * L / c, pz_drift, pz0, vr_max / v0);
-    EXPECT_NEAR(striker[1], 0, 0.06 * v0) << scheme;
-    EXPECT_NEAR(target[1], -v0, 0.06 * v0) << scheme;
+    EXPECT_NEAR(striker[1], 0, 0.08 * v0) << scheme;
+    EXPECT_NEAR(target[1], -v0, 0.08 * v0) << scheme;
     EXPECT_NEAR(duration, 2 * L / c, 0.03 * 2 * L / c) << scheme;
     EXPECT_LT(pz_drift, 1e-12 * std::abs(pz0)) << scheme;
     EXPECT_LT(vr_max, v0) << scheme;

@@ -67,12 +67,14 @@ DiskRun run_disks(const std::string& scheme, const std::string& shape, const std
 // Paper's criterion (contact nodes): onset one cell early.
 TEST(TwoDisksContact, GridCriterionMusl) {
   const DiskRun r = run_disks("musl", "linear", "grid");
-  EXPECT_NEAR(r.onset, 1.13, 0.05);           // measured 1.130 s (0.46 s early: a node is shared one cell early)
-  EXPECT_EQ(r.contact_nodes_at_end, 0);       // released
-  EXPECT_GT(r.separation_speed, 0.2);         // measured 0.25: clean rebound
-  EXPECT_LT(r.momentum, 1e-12);               // zero initially; equal and opposite normals keep it zero
-  EXPECT_LT(std::abs(r.final_change), 0.02);  // measured -1.2%
-  EXPECT_LT(r.worst, 0.12);                   // measured 10.6% at the deepest point of the impact
+  EXPECT_NEAR(r.onset, 1.13, 0.05);      // measured 1.130 s (0.46 s early: a node is shared one cell early)
+  EXPECT_EQ(r.contact_nodes_at_end, 0);  // released
+  EXPECT_GT(r.separation_speed, 0.2);    // measured 0.25: clean rebound
+  EXPECT_LT(r.momentum, 1e-12);          // zero initially; equal and opposite normals keep it zero
+  // Measured -9.5% (worst -14.4% at the deepest point of the impact): the release of nodes separating at v^t
+  // (issue 21; with the paper's corrections -1.2%, worst -10.6%) dissipates more.
+  EXPECT_LT(std::abs(r.final_change), 0.11);
+  EXPECT_LT(r.worst, 0.16);
 }
 
 // Particle-gap criterion (contact/README.md): onset within about a particle spacing / closing speed.
@@ -82,7 +84,7 @@ TEST(TwoDisksContact, ParticleGapCriterionMusl) {
   EXPECT_EQ(r.contact_nodes_at_end, 0);
   EXPECT_GT(r.separation_speed, 0.2);
   EXPECT_LT(r.momentum, 1e-12);
-  EXPECT_LT(std::abs(r.final_change), 0.04);  // measured -2.3%
+  EXPECT_LT(std::abs(r.final_change), 0.04);  // measured -2.9% (-2.3% with the paper's Remark 33)
 }
 
 // Normals from the cell-centred density (eqs 5.9-5.11) instead of the mass gradient (5.12): the review
@@ -94,7 +96,7 @@ TEST(TwoDisksContact, DensityNormals) {
   EXPECT_EQ(density.contact_nodes_at_end, 0);
   EXPECT_NEAR(density.separation_speed, gradient.separation_speed, 0.02);
   EXPECT_LT(density.momentum, 1e-12);
-  EXPECT_LT(std::abs(density.final_change), 0.03);
+  EXPECT_LT(std::abs(density.final_change), 0.11);  // measured -9.7% (mass gradient: -9.5%)
 }
 
 // The other schemes and the cubic B-spline: clean release, momentum kept, onset as measured. The grid
