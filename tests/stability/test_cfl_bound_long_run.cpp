@@ -1,0 +1,74 @@
+// 1e5 steps exactly at the CFL bound (cfl 1: every step is h / (c + max|v|) of its state, eq. 2.73) on a 2D
+// elastic block of 256 particles in its first axial mode, per explicit scheme (issue 21, part 4; the implicit
+// scheme has no CFL bound: test_implicit_large_step.cpp). What it does and what the user is told:
+// - USL: the energy sentinel warns at step 50 (USL hint) and the guard stops the run at step 68 (inverted particle);
+// - MUSL: runs, loses 51.7% of the energy (its double mapping damps), no warning;
+// - USF: runs, the energy grows 91-fold; the sentinel warns once, at step 700 (FLIP-with-hats hint), the guard never
+//   trips (every value stays finite);
+// - TLMPM: runs, +42.5%; the sentinel warns at step 10350 ("no documented cause" hint).
+// At cfl 0.5 (measured with `mpm run`): USL -53%, MUSL -24%, USF +1100%, TLMPM +2.3%. Setup:
+// extended_stability_cases.cpp.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "stability_test_support.hpp"
+
+namespace mpm::verification {
+namespace {
+
+namespace fs = std::filesystem;
+
+StabilityOutcome run(const fs::path& dir, const std::string& scheme) {
+  const StabilityOutcome o = run_stability_case("cfl_bound_" + scheme, dir / scheme);
+  std::printf("[ measured ] %s: %s\n", scheme.c_str(), o.summary.c_str());
+  return o;
+}
+
+TEST(CflBoundLongRun, UslIsStoppedByTheGuardAfterTheSentinelWarns) {
+  const auto dir = scratch("cfl_usl");
+  const StabilityOutcome o = run(dir, "usl");
+  ASSERT_TRUE(o.stopped()) << o.summary;
+  EXPECT_EQ(o.measures.at("warning_step"), 50);
+  EXPECT_NE(o.log.find("Hint: USL is the least stable explicit scheme"), std::string::npos) << o.log;
+  EXPECT_NE(o.message.find("det F = -"), std::string::npos) << o.message;
+  EXPECT_LT(o.steps, 200);  // measured: stopped at step 68
+  expect_clean_output(o);
+  expect_flight_record(dir / "usl", o);
+  fs::remove_all(dir);
+}
+
+TEST(CflBoundLongRun, MuslRunsAndDamps) {
+  const auto dir = scratch("cfl_musl");
+  const StabilityOutcome o = run(dir, "musl");
+  ASSERT_TRUE(o.completed()) << o.message;
+  EXPECT_EQ(o.steps, 100000);
+  EXPECT_NEAR(o.measured, -0.517, 0.05);
+  EXPECT_LT(o.measures.at("energy_growth"), 1e-3);
+  EXPECT_EQ(o.measures.at("warning_step"), -1) << o.log;
+  EXPECT_LT(o.largest_energy_ratio, 1);  // measured 0.85
+  expect_clean_output(o);
+  fs::remove_all(dir);
+}
+
+TEST(CflBoundLongRun, UsfAndTlmpmGainEnergyAndTheSentinelWarns) {
+  const auto dir = scratch("cfl_usf_tlmpm");
+  const StabilityOutcome usf = run(dir, "usf");
+  const StabilityOutcome tlmpm = run(dir, "tlmpm");
+  for (const auto* o : {&usf, &tlmpm}) {
+    ASSERT_TRUE(o->completed()) << o->message;
+    EXPECT_EQ(o->steps, 100000);
+    EXPECT_GT(o->largest_energy_ratio, 1);
+    expect_clean_output(*o);
+  }
+  EXPECT_GT(usf.measured, 30);  // measured +90.0 (91-fold)
+  EXPECT_EQ(usf.measures.at("warning_step"), 700);
+  EXPECT_NE(usf.log.find("Hint: pure FLIP with linear hats"), std::string::npos) << usf.log;
+  EXPECT_NEAR(tlmpm.measured, 0.425, 0.1);
+  EXPECT_EQ(tlmpm.measures.at("warning_step"), 10350);
+  EXPECT_NE(tlmpm.log.find("Hint: no documented cause"), std::string::npos) << tlmpm.log;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mpm::verification
