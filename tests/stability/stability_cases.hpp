@@ -48,7 +48,7 @@ struct StabilityCase {
   std::function<StabilityOutcome(const std::filesystem::path& output_directory)> run;
 };
 
-/// Every case, in the order of issue 9.
+/// Every case, in the order of issue 9, then those of issue 21 part 4 (extended_stability_cases.hpp).
 std::vector<StabilityCase> stability_cases();
 /// The case called `name` (throws std::invalid_argument).
 StabilityOutcome run_stability_case(const std::string& name, const std::filesystem::path& output_directory);
