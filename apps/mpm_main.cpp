@@ -21,6 +21,7 @@
 #include "mpm/app/out_of_memory.hpp"
 #include "mpm/app/parallel_launch.hpp"
 #include "mpm/app/particles_command.hpp"
+#include "mpm/app/rank_report.hpp"
 #include "mpm/app/reference_command.hpp"
 #include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_scene.hpp"
@@ -94,6 +95,12 @@ int main(int argc, char** argv) {
   checkpoint_cmd->add_option("file", checkpoint_file, "checkpoint file (.h5)")->required();
   auto* check_cmd = cli.add_subcommand("check", "validate a scene without running it");
   check_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
+  int ranks = 0;
+  check_cmd
+      ->add_option("--ranks", ranks,
+                   "also print what a distributed run on N ranks would hold: tiles, particles per rank, the "
+                   "largest useful rank count, ghost nodes and halo bytes per step (docs/distributed.md)")
+      ->check(CLI::PositiveNumber);
   ParticlesOptions particles;  // `mpm particles`: particle sets of meshes, images and scenes for ParaView
   auto* particles_cmd = cli.add_subcommand("particles", "write the particles of a mesh, an image or a scene (.vtu)");
   particles_cmd->add_option("input", particles.input, "mesh (.stl .obj .off .ply) or image (.png .pgm .vti)");
@@ -182,7 +189,7 @@ int main(int argc, char** argv) {
     }
     const mpm::SceneDescription scene = mpm::load_scene(scene_file);
     if (check_cmd->parsed()) {
-      check_scene(scene, std::cout);
+      check_scene(scene, std::cout, ranks);
       return exit_ok;
     }
     RunOptions options;
@@ -196,6 +203,9 @@ int main(int argc, char** argv) {
     return summary.stopped_by_signal != 0 ? 128 + summary.stopped_by_signal : exit_ok;
   } catch (const mpm::SceneError& e) {
     std::cerr << "error: " << e.what() << missing_module_note(e, missing_modules()) << '\n';
+    return exit_bad_input;
+  } catch (const RankCountError& e) {
+    std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
   } catch (const RestartError& e) {
     std::cerr << "error: " << e.what() << '\n';

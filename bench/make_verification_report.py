@@ -33,6 +33,29 @@ SCHEME_NAMES = {"usl": "USL", "musl": "MUSL", "usf": "USF", "tlmpm": "TLMPM"}
 
 # The measurements the hint table's FLIP row rests on (tests/slow/test_energy_sentinel_disks.cpp asserts them;
 # `mpm run` of the scene printed by that test gives the numbers), and what the table is.
+# The stiff and extreme cases of issue 21, part 4 (tests/stability/extended_stability_cases.cpp): what their
+# measures are and how "what the user is told" is read, printed under the stability table when they ran.
+STABILITY_EXTENDED_TEXT = (
+    "The cases `locking_*`, `impact_10km_s_*`, `density_ratio_*` and `cfl_bound_*` (issue 21, part 4; setups in "
+    "`extended_stability_cases.cpp`, asserted by `test_locking.cpp`, `test_hypervelocity_eos.cpp`, "
+    "`test_density_ratio_contact.cpp`, `test_cfl_bound_long_run.cpp`) end their summary with what the user was "
+    "told: the stability guard's message (the program exits with status 3), the energy sentinel's warning with "
+    "its hint (the run goes on), or nothing (then the sentinel's largest balance / tolerance).\n\n"
+    "- *Locking*: ν = 0.49999 block under its own weight on a slip floor. The checkerboard amplitude is half "
+    "the rms, over the interior particles of the lattice of reference positions, of p − (mean p of the four "
+    "lattice neighbours), p = −tr σ / 3 of the last frame, over ρgH (a ±A checkerboard gives A; a field linear "
+    "in X and Y gives 0). The explicit schemes use Neo-Hookean, the implicit scheme elastic `hencky_j2` with "
+    "the same K and G (its Q1/P0 cell volume has one pressure per cell).\n"
+    "- *10 km/s*: 4340 steel, Johnson–Cook with Mie–Grüneisen (c0 = 4569 m/s, S = 1.49, Γ0 = 2.17); the "
+    "Mie–Grüneisen pressure diverges at det F = 1 − 1/S = 0.329. \"the EOS held it\": the run completed; "
+    "\"the guard stopped it\": it did not.\n"
+    "- *Density ratio 1e4*: restitution along the line of centres of the light disk off the heavy one "
+    "(1 for rigid elastic disks; the light disk then leaves at 0.29996 m/s per axis); momentum against the "
+    "momentum handed over; closest particles of the two bodies in particle spacings (< 1: interpenetration).\n"
+    "- *CFL bound*: `cfl: 1` (dt = h / (c + max|v|) of every step's state, eq. 2.73) for 1e5 steps "
+    "(`mpm run --steps 100000`). The implicit scheme has no CFL bound and is not in this set.\n"
+)
+
 ENERGY_SENTINEL_TEXT = (
     "Every 50 steps the energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8) "
     "compares the balance E(t) − E(0) − W with 0.05 of the largest energy of the run so far; the stability "
@@ -419,6 +442,8 @@ def main():
             w(f"| {r['case']} | {r['description']} | {r['outcome']} | {r['summary']} | {r['all_output_finite']} "
               f"| {fmt(number(r['wall_seconds']), '.2f')} |")
         w("")
+        if any(r["case"].startswith(("locking_", "cfl_bound_")) for r in stability):
+            w(STABILITY_EXTENDED_TEXT)
         hints = os.path.join(args.csv_dir, "energy_hints.md")
         if os.path.exists(hints):
             w("### Energy sentinel and the hint table\n")

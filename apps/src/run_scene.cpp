@@ -11,6 +11,7 @@
 
 #include "mpm/app/flight_recorder.hpp"
 #include "mpm/app/memory_estimate.hpp"
+#include "mpm/app/rank_report.hpp"
 #include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_description.hpp"
 #include "mpm/app/scene_builder.hpp"
@@ -70,7 +71,7 @@ void restore_simulation(Simulation<Dim>& sim, const RestartPoint& point, std::os
 }
 
 template <int Dim>
-void check(const SceneDescription& scene, std::ostream& out) {
+void check(const SceneDescription& scene, std::ostream& out, int ranks) {
   auto sim = build_simulation<Dim>(scene);
   std::vector<std::string> warnings;
   build_histories<Dim>(scene, *sim, warnings);  // what only the built bodies can refuse
@@ -92,6 +93,7 @@ void check(const SceneDescription& scene, std::ostream& out) {
   const MemoryBudget budget = available_memory();
   fmt::print(out, "memory: about {} estimated before building ({:.4g} particles, {} grid nodes), {} available ({})\n",
              format_bytes(memory.bytes()), memory.particles(), memory.nodes, format_bytes(budget.bytes), budget.source);
+  if (ranks > 0) rank_report<Dim>(scene, *sim, ranks, out);
 }
 
 /// The command that runs `scene` as `options` did (for the flight recorder's diagnosis).
@@ -333,14 +335,14 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
 
 }  // namespace
 
-void check_scene(const SceneDescription& scene, std::ostream& out) {
+void check_scene(const SceneDescription& scene, std::ostream& out, int ranks) {
   switch (scene.dimension) {
     case 1:
-      return check<1>(scene, out);
+      return check<1>(scene, out, ranks);
     case 2:
-      return check<2>(scene, out);
+      return check<2>(scene, out, ranks);
     default:
-      return check<3>(scene, out);
+      return check<3>(scene, out, ranks);
   }
 }
 

@@ -9,7 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "extended_stability_cases.hpp"
 #include "mms.hpp"
+#include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/scene_error.hpp"
@@ -22,34 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 using Status = StabilityOutcome::Status;
-
-/// Runs a scene as `mpm run` does (app::run_scene: output, and the last good state when the guard trips)
-/// into `dir`, then reads back what was written.
-StabilityOutcome run_yaml(const std::string& yaml, const std::string& name, const fs::path& dir) {
-  StabilityOutcome o;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "scene.yaml") << yaml;  // to rerun the case with `mpm run DIR/scene.yaml`
-  const auto start = Clock::now();
-  try {
-    const SceneDescription scene = parse_scene(yaml, name);
-    app::RunOptions options;
-    options.output_directory = dir;
-    std::ostringstream log;
-    o.steps = app::run_scene(scene, options, log).steps;
-  } catch (const SceneError& e) {
-    o.status = Status::refused_by_loader;
-    o.message = e.what();
-  } catch (const StabilityError& e) {
-    o.status = Status::stopped_by_guard;
-    o.message = e.what();
-    o.steps = e.report().step - 1;
-  }
-  o.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (fs::exists(dir)) o.output = scan_output(dir);
-  if (!o.output.energy.empty()) o.time = o.output.energy.back().at("time");
-  return o;
-}
 
 double velocity_x(const std::map<std::string, double>& row) { return row.at("momentum_x") / row.at("mass"); }
 
@@ -103,7 +77,7 @@ StabilityOutcome long_run(const fs::path& dir) {
   // 16 cells, dt = 0.1 h / c: 1e5 steps are 154.7 periods of mode 1.
   const double h = 25.0 / 16, dt = 0.1 * h / 10, end = 1e5 * dt;
   StabilityOutcome o =
-      run_yaml(bar_yaml(100, 16, fmt::format("dt: {:.17g}", dt), end, end / 100, "musl"), "long_run.yaml", dir);
+      run_scene_text(bar_yaml(100, 16, fmt::format("dt: {:.17g}", dt), end, end / 100, "musl"), "long_run.yaml", dir);
   o.measured = o.output.energy_change();
   o.summary = fmt::format(
       "{} steps ({:.1f} periods), MUSL, FLIP: total energy change {:+.3e}, largest growth over the 101 frames {:+.3e}; "
@@ -125,7 +99,7 @@ StabilityOutcome stiff_block(const fs::path& dir) {
       "          particles_per_cell: 2, velocity: [100, 0]}]\n"
       "solver: {scheme: musl, shape_function: linear, cfl: 0.5, end_time: 1.5e-4}\n"
       "output: {interval: 5.0e-6, fields: [velocity, stress, deformation_gradient]}\n";
-  StabilityOutcome o = run_yaml(yaml, "stiff_block.yaml", dir);
+  StabilityOutcome o = run_scene_text(yaml, "stiff_block.yaml", dir);
   o.measured = velocity_x(o.output.energy.back());
   o.summary = fmt::format(
       "{} steps; rebound at v_cm = {:.2f} m/s (from +100 m/s); total energy grows by at most {:+.3f} of E0 over the "
@@ -143,7 +117,7 @@ StabilityOutcome nearly_incompressible(const fs::path& dir) {
       "          particles_per_cell: 2, velocity: [\"-2*(y-0.5)\", \"2*(x-0.5)\"]}]\n"
       "solver: {scheme: musl, shape_function: linear, cfl: 0.5, end_time: 0.1}\n"
       "output: {interval: 0.005, fields: [velocity, stress, deformation_gradient]}\n";
-  StabilityOutcome o = run_yaml(yaml, "nearly_incompressible.yaml", dir);
+  StabilityOutcome o = run_scene_text(yaml, "nearly_incompressible.yaml", dir);
   o.measured = std::max(std::abs(o.output.min_det_F - 1), std::abs(o.output.max_det_F - 1));
   o.summary = fmt::format(
       "{} steps (c_p / c_s = 70.7, dt set by c_p = 1291 m/s); max |det F - 1| = {:.2e}; energy change {:+.2e}; "
@@ -164,7 +138,7 @@ StabilityOutcome hypervelocity(const fs::path& dir, const std::string& scheme) {
       "solver: {{scheme: {}, shape_function: linear, cfl: 0.5, end_time: 8.0e-6}}\n"
       "output: {{interval: 2.0e-7, fields: [velocity, stress, deformation_gradient]}}\n",
       scheme);
-  StabilityOutcome o = run_yaml(yaml, "hypervelocity.yaml", dir);
+  StabilityOutcome o = run_scene_text(yaml, "hypervelocity.yaml", dir);
   o.measured = velocity_x(o.output.energy.back());
   o.summary = o.completed()
                   ? fmt::format(
@@ -188,7 +162,7 @@ StabilityOutcome thin_plate(const fs::path& dir, const std::string& scheme) {
       "solver: {{scheme: {}, shape_function: linear, cfl: 0.5, end_time: 0.8}}\n"
       "output: {{interval: 0.02, fields: [velocity, stress, deformation_gradient]}}\n",
       scheme);
-  StabilityOutcome o = run_yaml(yaml, "thin_plate.yaml", dir);
+  StabilityOutcome o = run_scene_text(yaml, "thin_plate.yaml", dir);
   const auto& e = o.output.energy;
   o.measured = o.output.energy_change();
   const double dp = std::abs(e.back().at("momentum_x") - e.front().at("momentum_x")) / e.front().at("momentum_x");
@@ -224,6 +198,38 @@ StabilityOutcome extreme_compression(const fs::path& dir, const std::string& sch
 
 }  // namespace
 
+StabilityOutcome run_scene_text(const std::string& yaml, const std::string& name, const fs::path& dir,
+                                std::optional<long long> steps) {
+  StabilityOutcome o;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.yaml") << yaml;  // to rerun the case with `mpm run DIR/scene.yaml`
+  std::ostringstream log;
+  const auto start = Clock::now();
+  try {
+    app::register_modules();  // the modules' materials, schemes and sections, as `mpm run` has them
+    const SceneDescription scene = parse_scene(yaml, name);
+    app::RunOptions options;
+    options.output_directory = dir;
+    options.steps = steps;
+    const app::RunSummary summary = app::run_scene(scene, options, log);
+    o.steps = summary.steps;
+    o.largest_energy_ratio = summary.largest_energy_ratio;
+  } catch (const SceneError& e) {
+    o.status = Status::refused_by_loader;
+    o.message = e.what();
+  } catch (const StabilityError& e) {
+    o.status = Status::stopped_by_guard;
+    o.message = e.what();
+    o.steps = e.report().step - 1;
+  }
+  o.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  o.log = log.str();
+  if (fs::exists(dir)) o.output = scan_output(dir);
+  if (!o.output.energy.empty()) o.time = o.output.energy.back().at("time");
+  return o;
+}
+
 BarRun run_bar(const fs::path& dir, double E, int cells, double dt_over_bound, double periods, int frames_per_period,
                const std::string& scheme) {
   const double period = 4 * 25 / std::sqrt(E), amplitude = 0.01 * std::sqrt(E) * 2 / std::numbers::pi;
@@ -232,9 +238,9 @@ BarRun run_bar(const fs::path& dir, double E, int cells, double dt_over_bound, d
   r.stable_dt = app::build_simulation<1>(parse_scene(bar_yaml(E, cells, "cfl: 1", period, period, scheme), "bar.yaml"))
                     ->stable_time_step();
   const double dt = dt_over_bound * r.stable_dt;
-  r.outcome =
-      run_yaml(bar_yaml(E, cells, fmt::format("dt: {:.17g}", dt), periods * period, period / frames_per_period, scheme),
-               "bar.yaml", dir);
+  r.outcome = run_scene_text(
+      bar_yaml(E, cells, fmt::format("dt: {:.17g}", dt), periods * period, period / frames_per_period, scheme),
+      "bar.yaml", dir);
   if (r.outcome.completed()) {
     double worst = 0;
     for (const auto& row : r.outcome.output.energy)
@@ -246,7 +252,7 @@ BarRun run_bar(const fs::path& dir, double E, int cells, double dt_over_bound, d
 }
 
 std::vector<StabilityCase> stability_cases() {
-  return {
+  std::vector<StabilityCase> cases{
       {"stiff_bar", "1D bar mode 1, E = 1e12 Pa, MUSL: max |v_cm error| / amplitude over one period", stiff_bar},
       {"stiff_block_impact", "2D block, E = 1e12 Pa, at 100 m/s onto a fixed wall, MUSL: rebound velocity (m/s)",
        stiff_block},
@@ -276,6 +282,8 @@ std::vector<StabilityCase> stability_cases() {
        [](const fs::path& d) { return fixed_dt(d, 1.1); }},
       {"long_run", "1D bar, 1e5 steps, MUSL: relative energy change", long_run},
   };
+  for (auto& c : extended_stability_cases()) cases.push_back(std::move(c));  // issue 21, part 4
+  return cases;
 }
 
 StabilityOutcome run_stability_case(const std::string& name, const fs::path& dir) {

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,13 @@ struct StabilityOutcome {
   double measured = std::numeric_limits<double>::quiet_NaN();
   std::string summary;  ///< one sentence with the numbers, for the report
   OutputScan output;    ///< what the run wrote (empty when refused)
+  /// What the user was told besides `message`: the run's log (the warnings, among them the energy sentinel's
+  /// "warning: energy sentinel: ..." with its hint, and its closing "largest balance / tolerance" line), and that
+  /// largest ratio (> 1: it warned; 0 when the run did not complete).
+  std::string log;
+  double largest_energy_ratio = 0;
+  /// Further named numbers of a case, for its test (e.g. "checkerboard" of the locking cases).
+  std::map<std::string, double> measures;
   bool stopped() const { return status == Status::stopped_by_guard; }
   bool completed() const { return status == Status::completed; }
 };
@@ -39,10 +48,16 @@ struct StabilityCase {
   std::function<StabilityOutcome(const std::filesystem::path& output_directory)> run;
 };
 
-/// Every case, in the order of issue 9.
+/// Every case, in the order of issue 9, then those of issue 21 part 4 (extended_stability_cases.hpp).
 std::vector<StabilityCase> stability_cases();
 /// The case called `name` (throws std::invalid_argument).
 StabilityOutcome run_stability_case(const std::string& name, const std::filesystem::path& output_directory);
+
+/// Runs the scene text `yaml` as `mpm run` does (app::run_scene) into `dir`, which is emptied first and keeps the
+/// scene as DIR/scene.yaml, then reads back what the run wrote. `steps`: stop after that many (`mpm run --steps`).
+StabilityOutcome run_scene_text(const std::string& yaml, const std::string& name,
+                                const std::filesystem::path& output_directory,
+                                std::optional<long long> steps = std::nullopt);
 
 /// The bar of review §6.1.1 (mode 1, L = 25 m, E = 100 Pa unless given, rho = 1, fixed at x = 0, MUSL,
 /// linear, FLIP) with `cells` cells and a fixed dt: max over the output frames of |v_cm - exact| / amplitude.

@@ -88,8 +88,26 @@ class ExactSum {
   }
   void clear() { *this = ExactSum(); }
 
- private:
   static constexpr int digits = 70;  ///< 32-bit digits from 2^-1074: 2^1166 > 2^30 terms of 2^1024
+  using Digits = std::array<std::int64_t, digits>;
+  /// The digits after carrying (digits 0..68 in [0, 2^32), the sign in the top one): what an allreduce adds
+  /// across ranks (MPI_SUM on int64, no overflow below 2^31 ranks); the inf/NaN part is summed apart.
+  Digits carried_digits() const {
+    ExactSum n = *this;
+    n.carry();
+    return n.digit_;
+  }
+  double special() const { return special_; }
+  /// The sum whose digits (as carried_digits() gives, or sums of them) and inf/NaN part are these.
+  static ExactSum from_digits(const Digits& d, double special) {
+    ExactSum s;
+    s.digit_ = d;
+    s.special_ = special;
+    s.carry();  // a sum of up to 2^31 carried sets is below 2^63 per word; carried, it takes 2^30 terms more
+    return s;
+  }
+
+ private:
   static constexpr std::uint64_t digit_mask = 0xffffffffu;
   static constexpr std::int64_t carry_interval = std::int64_t{1} << 30;  ///< terms before a word could overflow
 

@@ -55,8 +55,9 @@ struct RunSummary {
   int stopped_by_signal = 0;
 };
 
-/// Builds the scene's simulation without running it (throws SceneError like load_scene).
-void check_scene(const SceneDescription& scene, std::ostream& out);
+/// Builds the scene's simulation without running it (throws SceneError like load_scene). `ranks` > 0 adds what a
+/// distributed run on that many ranks would hold (rank_report.hpp; throws RankCountError above the tile count).
+void check_scene(const SceneDescription& scene, std::ostream& out, int ranks = 0);
 
 /// Runs the scene to its end time (or options.end_time, or options.steps steps, or until SIGINT, SIGTERM or
 /// SIGUSR1), writing output and checkpoints, or continues a checkpoint (options.restart); returns the

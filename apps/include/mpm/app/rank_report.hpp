@@ -1,0 +1,24 @@
+#pragma once
+/// \file rank_report.hpp
+/// `mpm check SCENE --ranks N`: what a distributed run of the scene on N ranks would hold (issue 18), from the
+/// fixed global tiling and its model (tiling.hpp, docs/distributed.md §2): the tiles, the particles and cost per
+/// rank, the largest rank count that gives every rank particles, and the ghost nodes and halo bytes per step.
+/// Any build prints it (it needs no MPI); more ranks than tiles is refused.
+
+#include <ostream>
+#include <stdexcept>
+
+#include "mpm/scene.hpp"
+#include "mpm/simulation.hpp"
+
+namespace mpm::app {
+
+/// More ranks than the grid has tiles (exit status 2; the message names both counts and the option).
+struct RankCountError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+template <int Dim>
+void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int ranks, std::ostream& out);
+
+}  // namespace mpm::app

@@ -1,0 +1,47 @@
+#pragma once
+/// \file communicator.hpp
+/// What the engine asks of the other processes of a distributed run (issue 18, docs/distributed.md §3): the
+/// global sums, bounds and flags of a step. The engine and the physics modules see only this interface; MPI lives
+/// in the `distributed/` library (MpiCommunicator), built with MPM_WITH_MPI. Every reduction is exact and so
+/// independent of the number of ranks and of the order they combine in: sums are ExactSum (the bits of one sum
+/// over every rank's terms), bounds are max/min (exact in floating point), flags a logical or.
+
+#include <span>
+
+#include "mpm/exact_sum.hpp"
+
+namespace mpm {
+
+class Communicator {
+ public:
+  virtual ~Communicator() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  /// Every rank's sums merged, the same on every rank: sums[i] becomes the exact sum of all ranks' terms of
+  /// sums[i] (ExactSum::merge over ranks).
+  virtual void sum(std::span<ExactSum> sums) = 0;
+  /// values[i] becomes its maximum (minimum) over the ranks. NaN is not a value here: the guard flags it first.
+  virtual void max(std::span<double> values) = 0;
+  virtual void min(std::span<double> values) = 0;
+  /// True on every rank when `flag` is true on any (the stability guard's roll-back is collective).
+  virtual bool any(bool flag) = 0;
+  virtual void barrier() = 0;
+  /// Ends every process of the job with `status`: an internal error on one rank must not leave the others
+  /// waiting in a collective.
+  [[noreturn]] virtual void abort(int status) = 0;
+};
+
+/// One process: every reduction is the identity.
+class SerialCommunicator final : public Communicator {
+ public:
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+  void sum(std::span<ExactSum>) override {}
+  void max(std::span<double>) override {}
+  void min(std::span<double>) override {}
+  bool any(bool flag) override { return flag; }
+  void barrier() override {}
+  [[noreturn]] void abort(int status) override;
+};
+
+}  // namespace mpm
