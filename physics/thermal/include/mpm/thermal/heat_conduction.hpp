@@ -57,12 +57,21 @@ struct FaceNodes {
   std::vector<Real> area;  ///< m^2 (m in 2D, 1 in 1D)
 };
 
-/// The particle domains of the thermal weights: the scheme's (ParticleDomain), except a CPDI domain with the TLMPM,
-/// whose weights are those of the reference configuration (the TLMPM caches them at t = 0): corners X_p + (X_c -
-/// X_p)(0) at the reference position, not the current x_p + F_p (X_c - X_p).
+/// The particle domains of the thermal weights: the scheme's (ParticleDomain), except with the TLMPM, whose weights
+/// are those of the reference configuration (it caches them at t = 0): a CPDI domain has its corners X_p + (X_c -
+/// X_p)(0), not the current x_p + F_p (X_c - X_p), and a cpGIMP domain its half-lengths l_p(0)/2, not l_p(0)/2 F_aa.
 template <int Dim, class Shape>
 struct ThermalDomain : ParticleDomain<Dim, Shape> {
   ThermalDomain(const ParticleSet<Dim>& p, bool) : ParticleDomain<Dim, Shape>(p) {}
+};
+template <int Dim, class Shape>
+requires Shape::uses_domain struct ThermalDomain<Dim, Shape> {  // GIMP: cpGIMP's l_p(0)/2 F_aa becomes l_p(0)/2
+  ParticleDomain<Dim, Shape> current;
+  const VecU<Dim>* half0 = nullptr;  ///< l_p(0)/2 (TLMPM only)
+  ThermalDomain(const ParticleSet<Dim>& p, bool total_lagrangian) : current(p) {
+    if (total_lagrangian) half0 = p.field(mpm::keys::domain_half_length0<Dim>).data();
+  }
+  Vec<Dim> operator()(Index i) const { return half0 ? Vec<Dim>(half0[i]) : current(i); }
 };
 template <int Dim, class Shape>
 requires Shape::corner_domain struct ThermalDomain<Dim, Shape> {
