@@ -19,6 +19,10 @@ struct HeatSpec {
   double cfl = 0.8;                ///< factor on the diffusion bound
   double end_time = 0.05;          ///< s
   bool particle_boundary = false;  ///< 2D: hold the particles of the boundary cells instead of the face nodes
+  /// 1D, TLMPM: the bar stretches freely with v = a x (1/s; stress-free, E = 1e-9), F = 1 + a t. In the reference
+  /// coordinates the capacity per length stays rho c and the conductance becomes k/F, so T(X, t) is eq. 5.27 at
+  /// the time tau = ln(1 + a t)/a (the exact value the errors are taken against).
+  double stretch_rate = 0;
 };
 
 struct HeatResult {
