@@ -158,19 +158,28 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
   NewtonStats stats;
   const Index n = problem.size();
   Vector r(n), r_trial(n), x_trial(n);
-  // The predictor may be inadmissible at a large dt (det F <= 0 where the projected velocity turns sharply):
-  // shorten it toward x = 0, which is always admissible (F_{n+1} = F_n).
-  bool admissible = false;
-  for (int k = 0; k <= 12 && !admissible; ++k) {
-    if (k == 12) x.setZero();
+  // The start: of the points s x0 (s = 1, 1/2, 1/4, 1/8, 0) between the predictor x0 and x = 0 (F_{n+1} = F_n,
+  // always admissible), the admissible one with the smallest ||R||; the predictor alone when it converges
+  // already (a uniform translation). Where a body meets a wall at speed the predictor is a poor start: at the
+  // Taylor bar's first step on the halved mesh it compresses the cells on the wall by 62% (||R|| = 7.0e6
+  // against 1.6e5 at x = 0), the linearisation there is nearly singular (Newton directions of 1e-2 m, 30 cells,
+  // along the axis nodes) and Newton stalled; from x = 0 it converges in 6 full steps.
+  const Vector x0 = x;
+  const double tolerance = std::max(s.atol, s.rtol * reference);
+  double best = std::numeric_limits<double>::infinity(), best_scale = 1;
+  for (double scale : {1.0, 0.5, 0.25, 0.125, 0.0}) {
+    x_trial = scale * x0;
     ++stats.residual_evaluations;
-    admissible = problem.residual(x, r);
-    if (!admissible) x *= 0.5;
+    if (!problem.residual(x_trial, r_trial) || !(r_trial.norm() < best)) continue;
+    best = r_trial.norm(), best_scale = scale;
+    x = x_trial, r = r_trial;
+    if (best <= tolerance) break;
   }
-  if (!admissible) {
+  if (!std::isfinite(best)) {
     stats.failure = "the start of the Newton iteration is inadmissible";
     return stats;
   }
+  if (std::getenv("MPM_NEWTON_TRACE")) std::fprintf(stderr, "start: %g x predictor, |R| %.6e\n", best_scale, best);
   stats.first_residual = stats.last_residual = r.norm();
   stats.tolerance = std::max(s.atol, s.rtol * reference);
   SparseMatrix J;
