@@ -6,6 +6,7 @@
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -121,6 +122,35 @@ namespace mpm::implicit {
 namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
+using Clock = std::chrono::steady_clock;
+
+/// The problem with the time spent in its residual counted (NewtonStats::residual_seconds, solver.csv).
+class TimedProblem final : public NonlinearProblem {
+ public:
+  TimedProblem(NonlinearProblem& problem, double& seconds) : problem_(problem), seconds_(seconds) {}
+  Index size() const override { return problem_.size(); }
+  bool residual(const Vector& x, Vector& r) override {
+    const auto start = Clock::now();
+    const bool ok = problem_.residual(x, r);
+    seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+    return ok;
+  }
+  const std::vector<std::vector<Index>>& column_groups() const override { return problem_.column_groups(); }
+  const std::vector<std::vector<Index>>& column_rows() const override { return problem_.column_rows(); }
+  Real unknown_scale() const override { return problem_.unknown_scale(); }
+
+ private:
+  NonlinearProblem& problem_;
+  double& seconds_;
+};
+
+/// Runs f and adds its wall time to `seconds`.
+template <class F>
+void timed(double& seconds, F&& f) {
+  const auto start = Clock::now();
+  f();
+  seconds += std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 /// The finite-difference Jacobian at x (R(x) = r), one residual per column group; false if a probe fails.
 bool finite_difference_jacobian(NonlinearProblem& problem, const Vector& x, const Vector& r, SparseMatrix& J,
@@ -154,8 +184,9 @@ bool finite_difference_jacobian(NonlinearProblem& problem, const Vector& x, cons
 
 }  // namespace
 
-NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real reference, const NewtonSettings& s) {
+NewtonStats solve_newton_krylov(NonlinearProblem& untimed, Vector& x, Real reference, const NewtonSettings& s) {
   NewtonStats stats;
+  TimedProblem problem(untimed, stats.residual_seconds);
   const Index n = problem.size();
   Vector r(n), r_trial(n), x_trial(n);
   // The start: of the points s x0 (s = 1, 1/2, 1/4, 1/8, 0) between the predictor x0 and x = 0 (F_{n+1} = F_n,
@@ -209,7 +240,7 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
     for (int attempt = 0; attempt < 2 && !accepted; ++attempt) {
       if (fresh_jacobian || attempt > 0) {  // a fresh Jacobian at the current iterate when the old one is stale
         if (!finite_difference_jacobian(problem, x, r, J, stats)) break;
-        lu.compute(J);
+        timed(stats.factor_seconds, [&] { lu.compute(J); });
         have_lu = lu.info() == Eigen::Success;
         if (!have_lu) break;
       }
@@ -262,7 +293,7 @@ NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real refer
         for (Index k = 0; k < n; ++k)
           regularised.coeffRef(static_cast<int>(k), static_cast<int>(k)) += mu * diagonal[k];
         Eigen::SparseLU<SparseMatrix> lm;
-        lm.compute(regularised);
+        timed(stats.factor_seconds, [&] { lm.compute(regularised); });
         if (lm.info() != Eigen::Success) continue;
         const Vector dx = lm.solve(Vector(-r));
         x_trial = x + dx;

@@ -37,6 +37,8 @@ struct NewtonStats {
   Real first_residual = 0;       ///< ||R(x_0)||
   Real last_residual = 0;        ///< ||R|| at the returned x
   Real tolerance = 0;            ///< max(atol, rtol * reference)
+  double residual_seconds = 0;   ///< wall time in R (Jacobian columns, Krylov products, line search)
+  double factor_seconds = 0;     ///< wall time in the sparse LU factorisations
   bool converged = false;
   bool at_rounding_floor = false;  ///< converged by the negligible update (step_rtol), above the tolerance
   std::string failure;             ///< why not, when not converged
