@@ -42,7 +42,7 @@ struct TaylorBarResult {
   double face_plastic_strain = 0;    ///< equivalent plastic strain of the impact-face particle nearest the axis
   double largest_plastic_strain = 0;
   double wall_seconds = 0;
-  double cpu_seconds = 0;     ///< process CPU time of the run (std::clock), the measure on a loaded machine
+  double cpu_seconds = 0;     ///< process CPU time of the run (std::clock; less the runner's per-step energy audit)
   double simulated_time = 0;  ///< s, reached
   long long steps = 0, particles = 0;
   /// Scheme implicit (solver.csv summed over the steps): Newton and GMRES iterations, residual evaluations,
