@@ -216,7 +216,8 @@ void compare_csv(Comparison& c, const fs::path& a_dir, const fs::path& b_dir, co
                 fmt::format("({} rows against {})", a.size() - 1, b.size() - 1));
   const auto& header = a[0];
   for (std::size_t col = 0; col < header.size(); ++col) {
-    if (header[col] == "wall_seconds") continue;  // the wall time of a step (solver.csv): not a result
+    // wall times (solver.csv: wall_seconds and its parts, projection_seconds, ...): not results
+    if (header[col].ends_with("_seconds")) continue;
     double scale = 0;
     for (std::size_t r = 1; r < a.size(); ++r)
       if (col < a[r].size()) scale = std::max(scale, std::abs(std::strtod(a[r][col].c_str(), nullptr)));

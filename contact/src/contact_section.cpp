@@ -62,7 +62,10 @@ double read_conductance(const YamlReader& reader, const YamlValue& value) {
 /// Fails when the scene's other choices exclude contact (contact/README.md, limits).
 void check_solver(const YamlReader& reader, const YamlValue& section, const SceneDescription& scene) {
   if (is_total_lagrangian(scene.solver.scheme))
-    reader.fail(section, "contact needs scheme usl, musl or usf (TLMPM has no contact between bodies)");
+    reader.fail(section,
+                "contact needs scheme usl, musl or usf (TLMPM has no contact between bodies: it maps on the reference "
+                "configuration, where they never meet; so neither has lagrange_quadratic, offered with the TLMPM "
+                "only because its negative weights would give nodes at a moving body's edge a negative mass)");
   if (scene.solver.velocity_transfer == VelocityTransfer::apic)
     reader.fail(
         section,

@@ -11,10 +11,12 @@
 namespace mpm::contact {
 namespace {
 
-/// The shape functions contact runs with: every listed one with non-negative weights (not tlmpm_only)
-/// whose weights are products of 1D functions (not CPDI).
+/// The shape functions contact runs with: every listed one the updated schemes run (not tlmpm_only). Lagrange
+/// quadratic is offered with the TLMPM only (its negative lobes would give a particle a negative share of a nodal
+/// mass once it moves), and the TLMPM maps on the reference configuration, where two bodies never meet: there is
+/// no contact to detect (contact_section.cpp refuses the TLMPM before this list is read).
 template <class Shape>
-constexpr bool contact_supports = !shape_tlmpm_only<Shape> && !shape_corner_domain<Shape>;
+constexpr bool contact_supports = !shape_tlmpm_only<Shape>;
 
 template <int Dim, class Shape, class Coords>
 class Passes final : public ShapePasses<Dim> {
@@ -50,14 +52,27 @@ class Passes final : public ShapePasses<Dim> {
         bool any = false;
         for (int a = 0; a < st.count; ++a) any |= (flag[st.node[a]] & 1) != 0 && st.w[a] > 0;
         if (!any) continue;
-        const Real volume = p.volume0[i] * axisym::volume_ratio(p, i, hoop);
-        const Real size = Coords::axisymmetric ? axisym::meridian_area(volume, p.x[i][0]) : volume;
-        const Real half = 0.5 * std::pow(size, 1.0 / Dim);
-        for (int a = 0; a < st.count; ++a) {
-          const Index I = st.node[a];
-          if (!(flag[I] & 1) || !(st.w[a] > 0)) continue;
-          const Real s = sign * Vec<Dim>(p.x[i]).dot(Vec<Dim>(normal[I])) + half;
-          if (s > e[I]) e[I] = s;
+        if constexpr (shape_corner_domain<Shape>) {
+          // CPDI: the particle's domain is known, the farthest of its corners along sign n_I
+          const CornerSet<Dim> corners = domain(i);
+          for (int a = 0; a < st.count; ++a) {
+            const Index I = st.node[a];
+            if (!(flag[I] & 1) || !(st.w[a] > 0)) continue;
+            for (int c = 0; c < Shape::element::corners; ++c) {
+              const Real s = sign * Vec<Dim>(corners[c]).dot(Vec<Dim>(normal[I]));
+              if (s > e[I]) e[I] = s;
+            }
+          }
+        } else {
+          const Real volume = p.volume0[i] * axisym::volume_ratio(p, i, hoop);
+          const Real size = Coords::axisymmetric ? axisym::meridian_area(volume, p.x[i][0]) : volume;
+          const Real half = 0.5 * std::pow(size, 1.0 / Dim);
+          for (int a = 0; a < st.count; ++a) {
+            const Index I = st.node[a];
+            if (!(flag[I] & 1) || !(st.w[a] > 0)) continue;
+            const Real s = sign * Vec<Dim>(p.x[i]).dot(Vec<Dim>(normal[I])) + half;
+            if (s > e[I]) e[I] = s;
+          }
         }
       }
     });
@@ -70,7 +85,8 @@ template <int Dim>
 std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape, Coordinates coordinates) {
   std::unique_ptr<ShapePasses<Dim>> passes;
   dispatch_shape(shape, [&]<class Shape>() {
-    if constexpr (contact_supports<Shape>) {
+    // (a CPDI element of another dimension: the scene loader refuses it before contact is built)
+    if constexpr (contact_supports<Shape> && shape_exists_in<Shape, Dim>) {
       if constexpr (Dim == 2 && shape_axisymmetric<Shape>)
         if (coordinates == Coordinates::axisymmetric) {
           passes = std::make_unique<Passes<Dim, Shape, AxisymmetricCoordinates>>();
@@ -82,7 +98,9 @@ std::unique_ptr<ShapePasses<Dim>> make_shape_passes(const std::string& shape, Co
   if (!passes)
     throw std::invalid_argument(
         "contact is not available with the shape function '" + shape +
-        "' (valid: " + shape_function_names_where([]<class Shape>() { return contact_supports<Shape>; }) + ")");
+        "': it is offered with the TLMPM only (negative weights), and the TLMPM has no contact between bodies "
+        "(valid: " +
+        shape_function_names_where([]<class Shape>() { return contact_supports<Shape>; }) + ")");
   return passes;
 }
 

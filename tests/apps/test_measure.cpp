@@ -178,14 +178,15 @@ TEST(Diff, EqualForAnyThreadCountDifferentWhenTheSceneChanges) {
   fs::remove_all(dir);
 }
 
-// A table's wall_seconds column (the implicit scheme's solver.csv) is a wall time, not a result: mpm diff skips it
-// and compares every other column.
+// A table's wall-time columns (the implicit scheme's solver.csv: wall_seconds and its parts, named *_seconds) are
+// not results: mpm diff skips them and compares every other column.
 TEST(Diff, SkipsTheWallTimeColumn) {
   const auto dir = scratch("diff_wall");
   for (const char* run : {"a", "b", "c"}) fs::create_directories(dir / run);
-  std::ofstream(dir / "a" / "solver.csv") << "step,newton_iterations,wall_seconds\n1,4,0.0123\n2,5,0.0456\n";
-  std::ofstream(dir / "b" / "solver.csv") << "step,newton_iterations,wall_seconds\n1,4,0.0987\n2,5,0.0654\n";
-  std::ofstream(dir / "c" / "solver.csv") << "step,newton_iterations,wall_seconds\n1,4,0.0123\n2,6,0.0456\n";
+  const std::string header = "step,newton_iterations,wall_seconds,residual_seconds\n";
+  std::ofstream(dir / "a" / "solver.csv") << header << "1,4,0.0123,0.01\n2,5,0.0456,0.04\n";
+  std::ofstream(dir / "b" / "solver.csv") << header << "1,4,0.0987,0.09\n2,5,0.0654,0.06\n";
+  std::ofstream(dir / "c" / "solver.csv") << header << "1,4,0.0123,0.01\n2,6,0.0456,0.04\n";
   const auto same = mpm("diff " + (dir / "a").string() + " " + (dir / "b").string(), dir);
   EXPECT_EQ(same.status, 0) << same.out << same.err;
   const auto other = mpm("diff " + (dir / "a").string() + " " + (dir / "c").string(), dir);

@@ -19,10 +19,18 @@ struct HeatSpec {
   double cfl = 0.8;                ///< factor on the diffusion bound
   double end_time = 0.05;          ///< s
   bool particle_boundary = false;  ///< 2D: hold the particles of the boundary cells instead of the face nodes
+  /// 1D, TLMPM: the bar stretches freely with v = a x (1/s; stress-free, E = 1e-9), F = 1 + a t. In the reference
+  /// coordinates the capacity per length stays rho c and the conductance becomes k/F, so T(X, t) is eq. 5.27 at
+  /// the time tau = ln(1 + a t)/a (the exact value the errors are taken against).
+  double stretch_rate = 0;
 };
 
 struct HeatResult {
-  double max_error = 0;       ///< max over grid nodes |T_I - T_exact| / (T1 - T0) at end_time (-)
+  double max_error = 0;  ///< max over grid nodes |T_I - T_exact| / (T1 - T0) at end_time (-)
+  /// The same for the grid field at the nodes, T_h(x_I) = sum_J phi_J(x_I) T_J: the nodal values T_I are the
+  /// coefficients of the field, equal to it only where phi_J(x_I) = delta_IJ (linear, Lagrange, GIMP and CPDI,
+  /// whose grid basis is the hat; not the B-splines and Bernstein's mid nodes).
+  double max_field_error = 0;
   double probe = 0;           ///< grid temperature at x = 0.5 (1D) or the centre (2D), K
   double probe_exact = 0;     ///< exact value there, K
   double thermal_energy = 0;  ///< sum m c (T - T_ref) at the end, J

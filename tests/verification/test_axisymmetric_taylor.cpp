@@ -98,6 +98,10 @@ TEST(AxisymmetricTaylorAnvil, ExampleScenesAreTheRunnerScenes) {
   bar.particles_per_cell = 1;
   bar.model = "j2_plasticity";
   EXPECT_EQ(read("17_love_sulsky_bar/tlmpm.yaml"), taylor_bar_scene(bar));
+  TaylorBarSpec implicit;  // the paper's run (tests/stability/test_implicit_large_step.cpp)
+  implicit.scheme = "implicit", implicit.h = 0.8e-3, implicit.h_z = 0.648e-3, implicit.paper_box = true;
+  implicit.dt = 1e-6, implicit.max_newton_iterations = 50;
+  EXPECT_EQ(read("17_love_sulsky_bar/implicit.yaml"), taylor_bar_scene(implicit));
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 #pragma once
 /// \file cpdi_corner_tracking.hpp
 /// CPDI2 domain update (review eq. 3.38): every corner of every particle domain moves with the grid
-/// velocity interpolated by hat functions at the corner, x_c^{t+dt} = x_c^t + dt sum_I N_I(x_c) v_I^{t+dt}.
+/// velocity interpolated by hat functions at the corner, x_c^{t+dt} = x_c^t + dt sum_I N_I(x_c) v_I^{t+dt}, with
+/// the body's own nodal velocities when contact gives it a field of its own (Body::own_grid).
 /// Neighbouring particles share corner positions, so they move together and leave no gaps. The module
 /// is constructed only for scenes whose CPDI domains follow their corners (field "cpdi_corners").
 
@@ -53,10 +54,11 @@ class CpdiCornerTracking final : public Module<Dim> {
     for (auto& body : ctx.bodies) {
       if (!body.particles.has_field(keys::cpdi_corners<Dim>)) continue;
       auto& corners = body.particles.field(keys::cpdi_corners<Dim>);
+      // the body's own field with contact (its velocity after the contact correction), else the shared one
+      const Grid<Dim>& grid = body.own_grid ? *body.own_grid : ctx.grid;
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, corners.size(), 1024), [&](const auto& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
-          for (int c = 0; c < corners_; ++c)
-            corners[i][c] += ctx.dt * grid_velocity_at(ctx.grid, Vec<Dim>(corners[i][c]));
+          for (int c = 0; c < corners_; ++c) corners[i][c] += ctx.dt * grid_velocity_at(grid, Vec<Dim>(corners[i][c]));
       });
     }
   }

@@ -98,11 +98,6 @@ inline void check_no_thermal_keys(const SceneDescription& scene) {
   }
 }
 
-/// The shape functions heat conduction runs with: the listed cell-based ones (not the two-cell elements of
-/// Bernstein and Lagrange, not CPDI).
-template <class Shape>
-constexpr bool conduction_supports = shape_cell_multiple<Shape> == 1 && !shape_corner_domain<Shape>;
-
 template <int Dim, class Shape, class Coords = CartesianCoordinates>
 std::shared_ptr<Module<Dim>> make_conduction(ConductionSetup<Dim> setup, const GridGeometry<Dim>& g) {
   auto m = std::make_shared<HeatConduction<Dim, Shape, Coords>>(std::move(setup), g);
@@ -155,8 +150,10 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene
   }
   const std::string& shape = scene.solver.shape_function;
   std::shared_ptr<Module<Dim>> conduction;
+  // Every shape function: the grid functions, GIMP, the two-cell elements of Bernstein and Lagrange (face fluxes
+  // with their own face shares, face_nodes) and CPDI (its weights and gradients, as in its P2G).
   dispatch_shape(shape, [&]<class Shape>() {
-    if constexpr (conduction_supports<Shape>) {
+    if constexpr (shape_exists_in<Shape, Dim>) {  // (a CPDI element of another dimension: refused by the loader)
       if constexpr (Dim == 2 && shape_axisymmetric<Shape>)
         if (g.coordinates == Coordinates::axisymmetric) {
           conduction = make_conduction<Dim, Shape, AxisymmetricCoordinates>(std::move(setup), g);
@@ -165,10 +162,8 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene
       conduction = make_conduction<Dim, Shape>(std::move(setup), g);
     }
   });
-  if (!conduction)
-    throw SceneError(td.where, section_key,
-                     fmt::format("heat conduction supports the shape functions {}; the solver uses {}",
-                                 shape_function_names_where([]<class S>() { return conduction_supports<S>; }), shape));
+  if (!conduction)  // unreachable: the scene loader checked the name and the dimension
+    throw SceneError(td.where, section_key, fmt::format("heat conduction: unknown shape function {}", shape));
   return conduction;
 }
 

@@ -49,8 +49,17 @@ class ImplicitScheme final : public Scheme<Dim> {
 
   std::string_view step_log_file() const override { return "solver.csv"; }
   std::vector<std::string> step_log_columns() const override {
-    return {"step",           "time",          "newton_iterations", "gmres_iterations", "residual_evaluations",
-            "first_residual", "last_residual", "wall_seconds"};
+    return {"step",
+            "time",
+            "newton_iterations",
+            "gmres_iterations",
+            "residual_evaluations",
+            "first_residual",
+            "last_residual",
+            "wall_seconds",
+            "projection_seconds",
+            "residual_seconds",
+            "factorization_seconds"};
   }
   std::vector<double> step_log_row() const override {
     const StepRecord& r = record_;
@@ -61,7 +70,10 @@ class ImplicitScheme final : public Scheme<Dim> {
             double(r.residual_evaluations),
             r.first_residual,
             r.last_residual,
-            r.wall_seconds};
+            r.wall_seconds,
+            r.projection_seconds,
+            r.residual_seconds,
+            r.factorization_seconds};
   }
 
   /// Adds the mixed volume Theta (= 1, or J of a body read from a file) to every body (before the first snapshot).
@@ -80,6 +92,7 @@ class ImplicitScheme final : public Scheme<Dim> {
     const GridGeometry<Dim>& g = ctx.grid.geometry;
     points_.gather(ctx.bodies, g);
     project(ctx);
+    const double projection_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     MixedResidual<Dim> problem(points_, *mass_, dofs_, g, v_n_, f_ext_, ctx.dt, options_.volumetric);
     Vector x(problem.size()), r(problem.size());
     for (Index k = 0; k < problem.size(); ++k) x[k] = ctx.dt * v_n_[dofs_.dofs[k].first][dofs_.dofs[k].second];
@@ -94,7 +107,10 @@ class ImplicitScheme final : public Scheme<Dim> {
                stats.residual_evaluations + 1,
                stats.first_residual,
                stats.last_residual,
-               0};
+               0,
+               projection_seconds,
+               stats.residual_seconds,
+               stats.factor_seconds};
     if (!stats.converged) {
       if (std::getenv("MPM_NEWTON_TRACE") && problem.residual(x, r)) {  // where the residual stays
         std::vector<Index> order(static_cast<std::size_t>(r.size()));

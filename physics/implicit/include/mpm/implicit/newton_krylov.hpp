@@ -1,6 +1,7 @@
 #pragma once
 /// \file newton_krylov.hpp
-/// Newton-Krylov for NonlinearProblem: each Newton direction from Eigen's restarted GMRES (unsupported module,
+/// Newton-Krylov for NonlinearProblem, started at the point of least ||R|| among s x (s = 1, 1/2, 1/4, 1/8, 0;
+/// x the given predictor): each Newton direction from Eigen's restarted GMRES (unsupported module,
 /// shipped with Eigen) on the matrix-free operator J v = [R(x + e v) - R(x)]/e, preconditioned by the
 /// sparse LU of a finite-difference Jacobian built column group by column group (the problem's colouring),
 /// then a backtracking line search that halves the step while R is inadmissible (det F <= 0, Theta <= 0) or
@@ -36,14 +37,17 @@ struct NewtonStats {
   Real first_residual = 0;       ///< ||R(x_0)||
   Real last_residual = 0;        ///< ||R|| at the returned x
   Real tolerance = 0;            ///< max(atol, rtol * reference)
+  double residual_seconds = 0;   ///< wall time in R (Jacobian columns, Krylov products, line search)
+  double factor_seconds = 0;     ///< wall time in the sparse LU factorisations
   bool converged = false;
   bool at_rounding_floor = false;  ///< converged by the negligible update (step_rtol), above the tolerance
   std::string failure;             ///< why not, when not converged
 };
 
-/// Drives R(x) to ||R|| <= max(atol, rtol * reference) from the start x (overwritten with the last accepted
-/// iterate), or to where no step reduces ||R|| while the Newton update is negligible (step_rtol). The start
-/// must be admissible.
+/// Drives R(x) to ||R|| <= max(atol, rtol * reference) from the predictor x (overwritten with the last accepted
+/// iterate), or to where no step reduces ||R|| while the Newton update is negligible (step_rtol). x = 0 must be
+/// admissible; the iteration starts at the admissible s x (s = 1, 1/2, 1/4, 1/8, 0) of least ||R||, or at x
+/// itself when it converges there.
 NewtonStats solve_newton_krylov(NonlinearProblem& problem, Vector& x, Real reference, const NewtonSettings& settings);
 
 }  // namespace mpm::implicit

@@ -54,6 +54,20 @@ inline Mat3 right_cauchy_green_increment(const Mat3& F_n, const Mat3& H) {
   return 0.5 * (D + D.transpose());
 }
 
+/// The same in the inner product <A, B> = A : G B of a metric G (symmetric positive definite on symmetric
+/// tensors): D_z f = g + [Delta f + D - g : Delta z] / (Delta z : G Delta z) G Delta z, given `metric_dz` = G Delta z.
+/// D_z f : Delta z = Delta f + D exactly for any G (the proofs of (80) and (102)-(106) use only that), so G is
+/// free; (75) is G = identity. Gonzalez's discrete gradients are defined for any metric.
+inline Mat3 discrete_gradient(const Mat3& mean_gradient, const Mat3& dz, const Mat3& metric_dz, Real increment,
+                              Real round_off) {
+  constexpr Real eps = std::numeric_limits<Real>::epsilon();
+  const Real dz2 = contract(dz, metric_dz), g_dz = contract(mean_gradient, dz);
+  const Real numerator = increment - g_dz;
+  const Real noise = round_off + 16 * eps * (std::abs(increment) + mean_gradient.norm() * dz.norm());
+  if (dz2 == 0 || std::abs(numerator) <= noise) return mean_gradient;  // NaN goes on to the correction
+  return mean_gradient + (numerator / dz2) * metric_dz;
+}
+
 /// Discrete derivative of a scalar function f of a symmetric tensor z, eqs. (75) and (79) with the dot
 /// product restored: D_z f = g + [Delta f + D - g : Delta z] / ||Delta z||^2 Delta z, so that
 /// D_z f : Delta z = Delta f + D exactly (eq. 80). `mean_gradient` g is the midpoint (77) or trapezoidal (78)
@@ -61,18 +75,19 @@ inline Mat3 right_cauchy_green_increment(const Mat3& F_n, const Mat3& H) {
 /// bound on the rounding error of that increment. Returns g when the numerator is not above
 /// round_off + its own rounding (then the identity holds to that level).
 inline Mat3 discrete_gradient(const Mat3& mean_gradient, const Mat3& dz, Real increment, Real round_off) {
-  constexpr Real eps = std::numeric_limits<Real>::epsilon();
-  const Real dz2 = dz.squaredNorm(), g_dz = contract(mean_gradient, dz);
-  const Real numerator = increment - g_dz;
-  const Real noise = round_off + 16 * eps * (std::abs(increment) + mean_gradient.norm() * std::sqrt(dz2));
-  if (dz2 == 0 || std::abs(numerator) <= noise) return mean_gradient;  // NaN goes on to the correction
-  return mean_gradient + (numerator / dz2) * dz;
+  return discrete_gradient(mean_gradient, dz, dz, increment, round_off);
 }
 
 /// The algorithmic deviatoric stress S_algo^dev of eq. (81) with S-bar of eq. (82), from what the material
 /// gives at the two ends of the step: S_n = phi_n^*(dev tau_n), S_n1 = phi_{n+1}^*(dev tau_{n+1}) (Pa),
-/// W~_n, W~_{n+1} and Delta D (J/m^3 of reference volume), with dC = C_{n+1} - C_n and the scale
-/// C_n (only its size enters, for the round-off bound). 1/2 S_algo^dev : dC = W~_{n+1} - W~_n + Delta D (83).
+/// W~_n, W~_{n+1} and Delta D (J/m^3 of reference volume), with dC = C_{n+1} - C_n and C_n.
+/// 1/2 S_algo^dev : dC = W~_{n+1} - W~_n + Delta D (83).
+/// The metric: G dC = C-bar^-1 dC C-bar^-1 (C-bar = C_n + dC/2), not the identity of (75). dC : G dC is then
+/// the squared spatial strain increment at the midpoint, whatever the stretch already reached; with the
+/// identity, a point compressed 11:1 (eigenvalues of C_n 4.6e-3 and 11) shows its axial strain increment in
+/// dC scaled by 4.6e-3, the correction [...] / ||dC||^2 dC grew like 1/||dC||, and the residual had a kink
+/// within each Newton step (the implicit Taylor bar, docs/theory.md §15). Objective (C does not see a
+/// superposed rotation), symmetric, and the same identity to round-off.
 /// The round-off of W~ is that of the principal log strains (absolute eps each): eps ||dev tau|| per unit
 /// strain, bounded by eps ||S-bar|| (||C_n|| + ||dC||); the fallback is S-bar.
 inline Mat3 algorithmic_deviatoric_stress(const Mat3& S_n, const Mat3& S_n1, Real W_n, Real W_n1, Real dissipation,
@@ -81,8 +96,11 @@ inline Mat3 algorithmic_deviatoric_stress(const Mat3& S_n, const Mat3& S_n1, Rea
   const Mat3 S_bar = 0.5 * (S_n + S_n1);
   const Real round_off =
       16 * eps * (std::abs(W_n) + std::abs(W_n1) + dissipation + S_bar.norm() * (C_n.norm() + dC.norm()));
+  const Mat3 C_mid_inv = (C_n + 0.5 * dC).inverse();
+  Mat3 metric_dC = C_mid_inv * dC * C_mid_inv;
+  metric_dC = (0.5 * (metric_dC + metric_dC.transpose())).eval();
   // S_algo = 2 D_C W~ (D = Delta D), whose mean gradient is S-bar / 2
-  return 2 * discrete_gradient(0.5 * S_bar, dC, W_n1 - W_n + dissipation, round_off);
+  return 2 * discrete_gradient(0.5 * S_bar, dC, metric_dC, W_n1 - W_n + dissipation, round_off);
 }
 
 /// D_C J(C_n, C_{n+1}) for J = sqrt(det C), in closed form: det is cubic, so exactly

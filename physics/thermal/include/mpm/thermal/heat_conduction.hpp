@@ -42,6 +42,7 @@
 #include "mpm/field_keys.hpp"
 #include "mpm/interface_conductance.hpp"
 #include "mpm/module.hpp"
+#include "mpm/shape/shape_functions.hpp"
 #include "mpm/shape/stencil.hpp"
 #include "mpm/state_archive.hpp"
 #include "mpm/thermal/field_keys.hpp"
@@ -54,6 +55,40 @@ namespace mpm::thermal {
 struct FaceNodes {
   std::vector<Index> node;
   std::vector<Real> area;  ///< m^2 (m in 2D, 1 in 1D)
+};
+
+/// The particle domains of the thermal weights: the scheme's (ParticleDomain), except with the TLMPM, whose weights
+/// are those of the reference configuration (it caches them at t = 0): a CPDI domain has its corners X_p + (X_c -
+/// X_p)(0), not the current x_p + F_p (X_c - X_p), and a cpGIMP domain its half-lengths l_p(0)/2, not l_p(0)/2 F_aa.
+template <int Dim, class Shape>
+struct ThermalDomain : ParticleDomain<Dim, Shape> {
+  ThermalDomain(const ParticleSet<Dim>& p, bool) : ParticleDomain<Dim, Shape>(p) {}
+};
+template <int Dim, class Shape>
+requires Shape::uses_domain struct ThermalDomain<Dim, Shape> {  // GIMP: cpGIMP's l_p(0)/2 F_aa becomes l_p(0)/2
+  ParticleDomain<Dim, Shape> current;
+  const VecU<Dim>* half0 = nullptr;  ///< l_p(0)/2 (TLMPM only)
+  ThermalDomain(const ParticleSet<Dim>& p, bool total_lagrangian) : current(p) {
+    if (total_lagrangian) half0 = p.field(mpm::keys::domain_half_length0<Dim>).data();
+  }
+  Vec<Dim> operator()(Index i) const { return half0 ? Vec<Dim>(half0[i]) : current(i); }
+};
+template <int Dim, class Shape>
+requires Shape::corner_domain struct ThermalDomain<Dim, Shape> {
+  ParticleDomain<Dim, Shape> current;
+  const VecU<Dim>* X = nullptr;              ///< reference positions (TLMPM only)
+  const CornerSet<Dim>* offsets0 = nullptr;  ///< X_c - X_p at t = 0 (TLMPM only; corner tracking is refused there)
+  ThermalDomain(const ParticleSet<Dim>& p, bool total_lagrangian) : current(p) {
+    if (!total_lagrangian) return;
+    X = p.field(mpm::keys::reference_position<Dim>).data();
+    offsets0 = p.field(mpm::keys::cpdi_corner_offsets0<Dim>).data();
+  }
+  CornerSet<Dim> operator()(Index i) const {
+    if (!X) return current(i);
+    CornerSet<Dim> c;
+    for (int k = 0; k < 4; ++k) c[k] = Vec<Dim>(X[i]) + Vec<Dim>(offsets0[i][k]);
+    return c;
+  }
 };
 
 template <int Dim>
@@ -357,16 +392,51 @@ class HeatConduction final : public Module<Dim> {
     });
   }
 
+  /// The face's share of every node on it, A_I = integral of phi_I over the face (the consistent load of a
+  /// uniform flux). The hat functions' tributary areas (axisym::face_node_area) for every function whose trace on a
+  /// grid face is the hat's (linear, GIMP, CPDI) or close to it (B-splines: interior nodes alike); the two-cell
+  /// elements of Bernstein and Lagrange integrate to other shares (per element of size E = 2h: E/3 at each of
+  /// Bernstein's three nodes; E/6, 2E/3, E/6 for Lagrange), and the hat's would heat their vertex and mid nodes
+  /// unevenly under a uniform flux (their lumped capacities have the same shares): those integrate the function.
   static FaceNodes face_nodes(const GridGeometry<Dim>& g, int face) {
     const int axis = face / 2;
     const int layer = face % 2 == 0 ? 0 : g.nodes[axis] - 1;
+    std::array<std::vector<Real>, Dim> share;
+    if constexpr (shape_cell_multiple<Shape> == 2)
+      for (int d = 0; d < Dim; ++d)
+        if (d != axis) share[d] = axis_integrals(g, d);
     FaceNodes f;
     for (Index n = 0; n < g.node_count(); ++n) {
-      if (g.node_indices(n)[axis] != layer) continue;
+      const auto ijk = g.node_indices(n);
+      if (ijk[axis] != layer) continue;
       f.node.push_back(n);
-      f.area.push_back(axisym::face_node_area(g, n, axis));  // revolved face when axisymmetric
+      if constexpr (shape_cell_multiple<Shape> == 2) {
+        Real area = 1;
+        for (int d = 0; d < Dim; ++d)
+          if (d != axis) area *= share[d][static_cast<std::size_t>(ijk[d])];
+        f.area.push_back(area);
+      } else {
+        f.area.push_back(axisym::face_node_area(g, n, axis));  // revolved face when axisymmetric
+      }
     }
     return f;
+  }
+
+  /// The integral of every node's 1D function along axis d (m): 3-point Gauss per cell, exact for the quadratics.
+  static std::vector<Real> axis_integrals(const GridGeometry<Dim>& g, int d) {
+    std::vector<Real> integral(static_cast<std::size_t>(g.nodes[d]), 0);
+    const Real r = std::sqrt(Real(0.6)) / 2;
+    const Real point[3] = {Real(0.5) - r, Real(0.5), Real(0.5) + r},
+               weight[3] = {5 / Real(18), 8 / Real(18), 5 / Real(18)};
+    for (int cell = 0; cell + 1 < g.nodes[d]; ++cell)
+      for (int q = 0; q < 3; ++q) {
+        int base = 0;
+        Real w[Shape::support], dw[Shape::support];
+        evaluate_axis<Shape>(cell + point[q], g.nodes[d], 0, base, w, dw);
+        for (int k = 0; k < Shape::support; ++k)
+          integral[static_cast<std::size_t>(base + k)] += weight[q] * g.h[d] * w[k];
+      }
+    return integral;
   }
 
   /// The temperature change of the last thermal step per particle (K), for the expansion: a particle field,
@@ -433,7 +503,7 @@ class HeatConduction final : public Module<Dim> {
       }
       for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
         axisym::StencilFor<Dim, Shape, Coords> st;
-        const ParticleDomain<Dim, Shape> domain(p);
+        const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
         for (Index k = 0; k < count; ++k) {
           const Index i = index[k];
           st.compute(x[i], g, domain(i));
@@ -501,7 +571,7 @@ class HeatConduction final : public Module<Dim> {
     for (const auto& r : region_) held.push_back(r(0, 0, 0, t1));
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
       axisym::StencilFor<Dim, Shape, Coords> st;
-      const ParticleDomain<Dim, Shape> domain(p);
+      const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
       for (Index i = r.begin(); i != r.end(); ++i) {
         st.compute(x[i], g, domain(i));
         Real d = 0;
@@ -524,7 +594,7 @@ class HeatConduction final : public Module<Dim> {
       const std::vector<Real>& nodal_temperature = own_.empty() ? shared_.temperature : own_[b].temperature;
       tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
         axisym::StencilFor<Dim, Shape, Coords> st;
-        const ParticleDomain<Dim, Shape> domain(p);
+        const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
         for (Index i = r.begin(); i != r.end(); ++i) {
           st.compute(x[i], g, domain(i));
           Vec<Dim> grad = Vec<Dim>::Zero();
