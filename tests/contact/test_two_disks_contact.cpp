@@ -124,8 +124,9 @@ TEST(TwoDisksContact, OtherSchemesAndShapes) {
 // CPDI (review §3.6): the normals from the CPDI gradients (the ones its P2G uses), the particle gap from the
 // domains' corners. CPDI-R4 (domains follow F) and CPDI-Q4 (corners tracked with each body's own nodal velocity).
 // Measured (both functions alike): grid criterion at 1.002 s (the CPDI stencil reaches two cells, earlier than the
-// hat's 1.127 s), final energy -10%; particle gap at 1.502 s (the square domains' corners along the diagonal normal
-// reach half a diagonal, 0.018 m, beyond the centre), final energy -3.7% (R4), -3.1% (Q4); rebound 0.221-0.228 m/s.
+// hat's 1.127 s), final energy -19.2% (R4), -19.1% (Q4); particle gap at 1.502 s (the square domains' corners along
+// the diagonal normal reach half a diagonal, 0.018 m, beyond the centre), final energy -5.1% (R4), -4.3% (Q4);
+// rebound 0.210-0.226 m/s; never above E0. (With the paper's corrections before issue 21 part 3: -10%, -3.7%, -3.1%.)
 // With the Q4 corners moved by the shared field (the velocity of both bodies, as before contact was allowed with
 // CPDI): particle gap at 1.658 s, final energy -18.8%, the disks stuck (8 contact nodes, separation -0.013 m/s).
 TEST(TwoDisksContact, Cpdi) {
@@ -134,8 +135,8 @@ TEST(TwoDisksContact, Cpdi) {
     const DiskRun gap = run_disks("musl", shape, "particle_gap");
     EXPECT_NEAR(grid.onset, 1.00, 0.05) << shape;
     EXPECT_NEAR(gap.onset, 1.5858, 0.1) << shape;
-    EXPECT_LT(std::abs(grid.final_change), 0.12) << shape;
-    EXPECT_LT(std::abs(gap.final_change), 0.05) << shape;
+    EXPECT_LT(std::abs(grid.final_change), 0.21) << shape;
+    EXPECT_LT(std::abs(gap.final_change), 0.06) << shape;
     for (const DiskRun* r : {&grid, &gap}) {
       EXPECT_EQ(r->contact_nodes_at_end, 0) << shape;  // released
       EXPECT_GT(r->separation_speed, 0.2) << shape;
