@@ -63,10 +63,6 @@ double read_conductance(const YamlReader& reader, const YamlValue& value) {
 void check_solver(const YamlReader& reader, const YamlValue& section, const SceneDescription& scene) {
   if (is_total_lagrangian(scene.solver.scheme))
     reader.fail(section, "contact needs scheme usl, musl or usf (TLMPM has no contact between bodies)");
-  if (scene.solver.velocity_transfer == VelocityTransfer::apic)
-    reader.fail(
-        section,
-        "contact is not available with velocity_transfer: apic (a block on a contact plane diverges); use flip");
   for (int f = 0; f < 2 * scene.dimension; ++f)
     for (const auto& traction : scene.grid.boundary[f].traction)
       if (traction)

@@ -82,8 +82,8 @@ Mat<Dim> affine_matrix(const Stencil<Dim, Shape>& st, NodeVelocityOf&& velocity_
 /// A node lighter than this fraction of a particle's mass is "nearly empty" for APIC with hats (below).
 inline constexpr Real apic_light_node_fraction = 0.1;
 
-/// C_p from the trial velocities v~_I = v_I^t + dt (f_I/m_I + g) (theory §5.5, eq. APIC.3). For hats a node
-/// enters C_p = sum v_I (x) grad phi_I with the weight grad phi_I, not phi_I: a nearly empty node at a free
+/// C_p from the trial velocities v~_I = v_I^t + dt (f_I/m_I + g) (docs/theory.md §2, velocity transfers). For hats a
+/// node enters C_p = sum v_I (x) grad phi_I with the weight grad phi_I, not phi_I: a nearly empty node at a free
 /// surface (m_I = phi_I m_p -> 0) brings its trial velocity dt f_I/m_I unfiltered, the small-mass blow-up of
 /// eq. 2.62 that PIC/FLIP see only through phi_I. Such a node (m_I < apic_light_node_fraction m_p) enters
 /// C_p with the particle's own velocity v_p, i.e. without a gradient. Other shape functions weigh it by phi_I
