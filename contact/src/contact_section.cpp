@@ -66,10 +66,6 @@ void check_solver(const YamlReader& reader, const YamlValue& section, const Scen
                 "contact needs scheme usl, musl or usf (TLMPM has no contact between bodies: it maps on the reference "
                 "configuration, where they never meet; so neither has lagrange_quadratic, offered with the TLMPM "
                 "only because its negative weights would give nodes at a moving body's edge a negative mass)");
-  if (scene.solver.velocity_transfer == VelocityTransfer::apic)
-    reader.fail(
-        section,
-        "contact is not available with velocity_transfer: apic (a block on a contact plane diverges); use flip");
   for (int f = 0; f < 2 * scene.dimension; ++f)
     for (const auto& traction : scene.grid.boundary[f].traction)
       if (traction)

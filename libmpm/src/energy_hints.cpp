@@ -19,11 +19,13 @@ constexpr std::array<EnergyHint, 8> rows{{
      "MUSL, node criterion); now never above E0 with either onset (docs/theory.md §11, \"Energy\")"},
     {"APIC with linear hats", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.transfer == VelocityTransfer::apic && is_linear(c); },
-     "APIC with linear hats is unstable on free surfaces (C_p weighs a nearly empty node as much as a full "
-     "one); use `shape_function: quadratic_bspline` or `cubic_bspline`, or `velocity_transfer: flip`",
-     "the dam break (examples/12) with APIC and hats inverts a particle at 0.093 s (MUSL), 0.067 s (USL), 0.068 s "
-     "(USF); with quadratic / cubic B-splines it runs to 0.3 s with an energy change of -0.10% / -0.14% "
-     "(physics/fluids/README.md, Limits)"},
+     "APIC with linear hats runs on free surfaces with MUSL and USF (the re-map takes C_p from the trial "
+     "velocities, a nearly empty node enters C_p without its gradient); with USL a particle next to a nearly "
+     "empty node inverts F as with FLIP: use `scheme: musl` or `usf`. APIC itself loses energy (grid-scale "
+     "modes), it does not gain it",
+     "the dam break (examples/12) with APIC and hats, to 1.7 s: energy change -4.85% (MUSL), -5.02% (USF), no "
+     "density warning; USL inverts a particle at 0.065 s, FLIP with USL at 0.066 s; before the fix MUSL inverted "
+     "at 0.093 s, USF at 0.068 s (physics/fluids/README.md, Limits)"},
     {"USL (any shape function)", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.scheme == SchemeKind::usl; },
      "USL is the least stable explicit scheme here: use `scheme: musl` (or usf), or a smaller `cfl`",

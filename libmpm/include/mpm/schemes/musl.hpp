@@ -64,11 +64,15 @@ class Musl final : public ShapedScheme<Dim, Shape> {
           dv += st.w[a] * (nv.updated - nv.mapped);
         }
         if (affine) {
-          // APIC: PIC velocity, re-mapped with the affine term of the particle's current C_p (eq. 5.37).
-          // The new C_p is taken in the last pass from the re-mapped v^{t+dt}: from the trial velocity it
-          // would carry the small-mass blow-up (eq. 2.62) that the double mapping exists to avoid.
+          // APIC: the particle's new state (v_p, C_p) from the trial velocities, re-mapped with eq. 5.37
+          // (docs/theory.md §2, velocity transfers). C_p must be the one that goes with v_p: re-mapping v^{t+dt} with
+          // the previous step's C_p made the re-mapped velocity, and so L_p and the next C_p, a running average of past
+          // velocity gradients (a strain rate delayed by steps), which pumped energy into the acoustic modes until a
+          // particle inverted (dam break at 0.093 s; a 1D column at rest at 0.091 s). The final C_p is taken in the
+          // last pass from the re-mapped v^{t+dt}, like L_p.
           p.v[i] = v_pic;
-          const Mat<Dim> C = affine[i];
+          const Mat<Dim> C = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic,
+                                                             [&](Index n) { return Vec<Dim>(vel[n].updated); });
           for (int a = 0; a < st.count; ++a)
             node[st.node[a]].momentum += st.w[a] * p.mass[i] * (v_pic + C * st.node_offset(a));
           continue;

@@ -79,6 +79,26 @@ Mat<Dim> affine_matrix(const Stencil<Dim, Shape>& st, NodeVelocityOf&& velocity_
   }
 }
 
+/// A node lighter than this fraction of a particle's mass is "nearly empty" for APIC with hats (below).
+inline constexpr Real apic_light_node_fraction = 0.1;
+
+/// C_p from the trial velocities v~_I = v_I^t + dt (f_I/m_I + g) (docs/theory.md §2, velocity transfers). For hats a
+/// node enters C_p = sum v_I (x) grad phi_I with the weight grad phi_I, not phi_I: a nearly empty node at a free
+/// surface (m_I = phi_I m_p -> 0) brings its trial velocity dt f_I/m_I unfiltered, the small-mass blow-up of
+/// eq. 2.62 that PIC/FLIP see only through phi_I. Such a node (m_I < apic_light_node_fraction m_p) enters
+/// C_p with the particle's own velocity v_p, i.e. without a gradient. Other shape functions weigh it by phi_I
+/// in B_p D_p^-1 and are left unchanged.
+template <int Dim, class Shape, class NodeVelocityOf>
+Mat<Dim> affine_matrix_of_trial(const Stencil<Dim, Shape>& st, const NodeRecord<Dim>* node, Real particle_mass,
+                                const Vec<Dim>& v_p, NodeVelocityOf&& velocity_of) {
+  if constexpr (std::is_same_v<Shape, LinearHat>) {
+    const Real light = apic_light_node_fraction * particle_mass;
+    return affine_matrix(st, [&](Index n) { return node[n].mass < light ? v_p : Vec<Dim>(velocity_of(n)); });
+  } else {
+    return affine_matrix(st, velocity_of);
+  }
+}
+
 /// P2G (eqs 2.40, 2.43, 2.36): nodal mass, momentum and internal force f_I = -sum V_p sigma_p grad phi.
 /// USF maps mass and momentum first and the force of the updated stress later: the two flags select.
 /// Axisymmetric (Coords): V_p includes F_tt and f_rI gains the hoop term -V_p sigma_tt T_I (eq. G.2).

@@ -105,6 +105,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
     const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
+    const NodeRecord<Dim>* node = kernels::grid_of(body, ctx.grid).node.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
@@ -121,7 +122,8 @@ class Usf final : public ShapedScheme<Dim, Shape> {
         }
         if (affine) {  // APIC
           p.v[i] = v_pic;
-          affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].updated); });
+          affine[i] = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic,
+                                                      [&](Index n) { return Vec<Dim>(vel[n].updated); });
         } else {
           p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
         }

@@ -33,6 +33,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
     const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
     const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
+    const NodeRecord<Dim>* node = kernels::grid_of(body, ctx.grid).node.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
     [[maybe_unused]] const axisym::HoopFields hoop =
@@ -57,7 +58,8 @@ class Usl final : public ShapedScheme<Dim, Shape> {
       }
       if (affine) {  // APIC: PIC velocity plus the affine matrix
         p.v[i] = v_pic;
-        affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].updated); });
+        affine[i] = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic,
+                                                    [&](Index n) { return Vec<Dim>(vel[n].updated); });
       } else {
         p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
       }
