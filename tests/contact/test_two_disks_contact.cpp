@@ -149,9 +149,10 @@ TEST(TwoDisksContact, Cpdi) {
 // body maps v_p + C_p (x_I - x_p) to its own nodal field and takes C_p from its own corrected velocities. Same
 // checks as the FLIP runs on onset, release, momentum and rebound. The energy is not held to FLIP's bound:
 // APIC dissipates the disks' vibration after the impact whether or not there is contact (MUSL, hats, no
-// contact section, the disks then stick: -26.7% by 3.5 s); measured with contact -24.3% / -25.4% (MUSL,
-// grid / particle gap) and -36.6% / -27.7% (USF). Asserted: the energy only decreases (the contact
-// correction adds none) and by less than 40%.
+// contact section, the disks then stick: -26.7% by 3.5 s); measured with contact, with the release of nodes
+// separating at v^t under the grid criterion (issue 21): -41.8% / -28.7% (MUSL, grid / particle gap) and
+// -40.6% / -27.7% (USF); before that release -24.3% / -25.4% and -36.6% / -27.7%. Asserted: the energy only
+// decreases (the contact correction adds none) and by less than 45%.
 TEST(TwoDisksContact, Apic) {
   for (const std::string scheme : {"musl", "usf"}) {
     const DiskRun grid = run_disks(scheme + ", velocity_transfer: apic", "linear", "grid");
@@ -164,7 +165,7 @@ TEST(TwoDisksContact, Apic) {
       EXPECT_LT(r->momentum, 1e-12) << scheme;          // measured <= 4.5e-14
       EXPECT_LT(r->final_change, 0) << scheme;
       EXPECT_NEAR(r->worst, -r->final_change, 1e-3) << scheme;  // never above E0: the largest change is the loss
-      EXPECT_GT(r->final_change, -0.4) << scheme;
+      EXPECT_GT(r->final_change, -0.45) << scheme;
     }
   }
 }
