@@ -10,6 +10,22 @@
 
 namespace mpm::test {
 
+/// The two elastic disks of review §6.1.2 with the contact module: @SCHEME@ (may carry more solver keys, e.g.
+/// "musl, velocity_transfer: apic"), @SHAPE@, @ONSET@, @MU@ (friction), @NORMALS@.
+inline const std::string two_disks_scene = R"(
+dimension: 2
+grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}
+materials:
+  elastic: {model: linear_elastic, density: 1000, youngs_modulus: 1000, poisson_ratio: 0.3}
+bodies:
+  - {name: lower_left, material: elastic, shape: {type: disk, center: [0.2, 0.2], radius: 0.2},
+     particles_per_cell: 2, velocity: [0.1, 0.1]}
+  - {name: upper_right, material: elastic, shape: {type: disk, center: [0.8, 0.8], radius: 0.2},
+     particles_per_cell: 2, velocity: [-0.1, -0.1]}
+solver: {scheme: @SCHEME@, shape_function: @SHAPE@, dt: 0.001, end_time: 3.5}
+contact: {onset: @ONSET@, friction: @MU@, normals: @NORMALS@}
+)";
+
 template <int Dim>
 contact::MultiVelocityContact<Dim>* contact_module(Simulation<Dim>& sim) {
   for (const auto& m : sim.modules())

@@ -33,21 +33,6 @@ solver: {scheme: @SCHEME@, shape_function: linear, dt: 0.015, end_time: 1.8}
 contact: {onset: @ONSET@}
 )";
 
-// The two elastic disks of review §6.1.2 (tests/contact/test_two_disks_contact.cpp), frictionless.
-const std::string disks = R"(
-dimension: 2
-grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}
-materials:
-  elastic: {model: linear_elastic, density: 1000, youngs_modulus: 1000, poisson_ratio: 0.3}
-bodies:
-  - {name: lower_left, material: elastic, shape: {type: disk, center: [0.2, 0.2], radius: 0.2},
-     particles_per_cell: 2, velocity: [0.1, 0.1]}
-  - {name: upper_right, material: elastic, shape: {type: disk, center: [0.8, 0.8], radius: 0.2},
-     particles_per_cell: 2, velocity: [-0.1, -0.1]}
-solver: {scheme: @SCHEME@, shape_function: linear, dt: 0.001, end_time: 3.5}
-contact: {onset: @ONSET@}
-)";
-
 // Two elastic spheres (3D form of the two disks): radius 0.2 m, 0.1 m apart, closing at 0.2 m/s (exact contact at
 // t = 0.5 s); at 1.5 s they have rebounded.
 const std::string spheres = R"(
@@ -164,7 +149,9 @@ TEST(ContactEnergy, CylindersNeverGainEnergy) {
 TEST(ContactEnergy, DisksNeverGainEnergy) {
   for (const std::string scheme : {"musl", "usl", "usf"})
     for (const std::string onset : {"grid", "particle_gap"}) {
-      const EnergyRun r = run<2>(fill(disks, {{"SCHEME", scheme}, {"ONSET", onset}}));
+      const EnergyRun r = run<2>(
+          fill(two_disks_scene,
+               {{"SCHEME", scheme}, {"SHAPE", "linear"}, {"ONSET", onset}, {"MU", "0"}, {"NORMALS", "mass_gradient"}}));
       print("elastic disks, " + scheme + ", " + onset, r);
       EXPECT_LT(r.rise, 0.005) << scheme << " " << onset;  // largest: +0.025% (USL, before contact)
       EXPECT_GT(r.onset, 0);

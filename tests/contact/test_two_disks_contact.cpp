@@ -11,19 +11,7 @@
 namespace mpm::test {
 namespace {
 
-const std::string disks = R"(
-dimension: 2
-grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}
-materials:
-  elastic: {model: linear_elastic, density: 1000, youngs_modulus: 1000, poisson_ratio: 0.3}
-bodies:
-  - {name: lower_left, material: elastic, shape: {type: disk, center: [0.2, 0.2], radius: 0.2},
-     particles_per_cell: 2, velocity: [0.1, 0.1]}
-  - {name: upper_right, material: elastic, shape: {type: disk, center: [0.8, 0.8], radius: 0.2},
-     particles_per_cell: 2, velocity: [-0.1, -0.1]}
-solver: {scheme: @SCHEME@, shape_function: @SHAPE@, dt: 0.001, end_time: 3.5}
-contact: {onset: @ONSET@, friction: @MU@, normals: @NORMALS@}
-)";
+const std::string& disks = two_disks_scene;
 
 struct DiskRun {
   double onset = -1, worst = 0, rise = 0, final_change = 0, momentum = 0, separation_speed = 0;
