@@ -1,8 +1,9 @@
 // Latency and bandwidth between two ranks (issue 18 §6: the link figures of the cost model, docs/distributed.md).
 // Rank 0 sends a message of n bytes to rank 1, which sends it back; half the mean round trip is the one-way time.
 //   mpirun --oversubscribe -np 2 build/bench/bench_pingpong [--repeat N]
-// Prints, per size, the one-way time and the bandwidth; the fit t(n) = latency + n / bandwidth of the sizes
-// 8 B .. 16 MB (least squares on the one-way times) is what the model takes.
+// Prints, per size, the one-way time and the bandwidth, then the model's t(n) = latency + n / bandwidth: the
+// latency is the one-way time of 8 B, the bandwidth that of the largest message less the latency (a least-squares
+// fit over all sizes is dominated by the large messages and can give a negative latency).
 #include <mpi.h>
 
 #include <cstdio>
@@ -24,8 +25,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::vector<char> buffer(16 << 20);
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int points = 0;
+  double latency = 0, largest = 0, largest_time = 0;
   if (rank == 0) std::printf("%12s %14s %14s\n", "bytes", "one-way (us)", "MB/s");
   for (std::size_t n = 8; n <= buffer.size(); n *= 4) {
     const int rounds = n >= (1u << 20) ? std::max(5, repeat / 20) : repeat;
@@ -43,18 +43,14 @@ int main(int argc, char** argv) {
     const double one_way = (MPI_Wtime() - start) / rounds / 2;
     if (rank == 0) {
       std::printf("%12zu %14.3f %14.1f\n", n, one_way * 1e6, static_cast<double>(n) / one_way / 1e6);
-      sx += static_cast<double>(n);
-      sy += one_way;
-      sxx += static_cast<double>(n) * static_cast<double>(n);
-      sxy += static_cast<double>(n) * one_way;
-      ++points;
+      if (n == 8) latency = one_way;
+      largest = static_cast<double>(n);
+      largest_time = one_way;
     }
   }
   if (rank == 0) {
-    const double slope = (points * sxy - sx * sy) / (points * sxx - sx * sx);
-    const double latency = (sy - slope * sx) / points;
-    std::printf("fit: latency %.3f us, bandwidth %.1f MB/s (t = latency + bytes / bandwidth)\n", latency * 1e6,
-                1e-6 / slope);
+    std::printf("model: latency %.3f us (8 B), bandwidth %.1f MB/s (%.0f B; t = latency + bytes / bandwidth)\n",
+                latency * 1e6, largest / (largest_time - latency) / 1e6, largest);
   }
   MPI_Finalize();
   return 0;
