@@ -189,20 +189,27 @@ TEST(ThermalContact, LargeConductanceTendsToPerfectContact) {
   EXPECT_LT(previous, 0.02 * (T_hot - T_cold));
 }
 
+/// Two equal short bars of the bars template: L = 0.1 m, h = 0.005 m, rho c = 1e4 J/(m^3 K), k = 10 W/(m K).
+template <int Dim>
+std::unique_ptr<Simulation<Dim>> short_bars(const std::string& scene, const std::string& end,
+                                            const std::string& contact) {
+  return simulation_from_yaml<Dim>(fill(scene, {{"EXTENT", "0.2"},
+                                                {"L", "0.1"},
+                                                {"H", "0.005"},
+                                                {"RHO", "10"},
+                                                {"C", "1000"},
+                                                {"K_HOT", "10"},
+                                                {"K_COLD", "10"},
+                                                {"END", end},
+                                                {"CONTACT", contact}}));
+}
+
 /// Two equal short bars (L = 0.1 m, rho c = 1e4 J/(m^3 K), k = 10 W/(m K)) with h = 5 W/(m^2 K): Bi = 2hL/k = 0.1,
 /// lumped time constant rho c L / (2h) = 100 s; run to t = 100 s.
 template <int Dim>
 void finite_conductance(const std::string& scene, const std::string& contact, double h) {
   const double L = 0.1, rho_c = 1e4, k = 10;
-  auto sim = simulation_from_yaml<Dim>(fill(scene, {{"EXTENT", "0.2"},
-                                                    {"L", "0.1"},
-                                                    {"H", "0.005"},
-                                                    {"RHO", "10"},
-                                                    {"C", "1000"},
-                                                    {"K_HOT", "10"},
-                                                    {"K_COLD", "10"},
-                                                    {"END", "100"},
-                                                    {"CONTACT", contact}}));
+  auto sim = short_bars<Dim>(scene, "100", contact);
   auto* conduction = conduction_module(*sim);
   ASSERT_NE(conduction, nullptr);
   const double heat0 = sim->energy().thermal;
@@ -237,15 +244,7 @@ TEST(ThermalContact, FiniteConductanceMatchesTheTwoSlabSolution2D) {
 
 // h = 0: an insulated interface; each bar keeps its heat (its mean temperature) exactly.
 TEST(ThermalContact, ZeroConductanceInsulates) {
-  auto sim = simulation_from_yaml<1>(fill(bars_1d, {{"EXTENT", "0.2"},
-                                                    {"L", "0.1"},
-                                                    {"H", "0.005"},
-                                                    {"RHO", "10"},
-                                                    {"C", "1000"},
-                                                    {"K_HOT", "10"},
-                                                    {"K_COLD", "10"},
-                                                    {"END", "5"},
-                                                    {"CONTACT", "contact: {thermal_conductance: 0}"}}));
+  auto sim = short_bars<1>(bars_1d, "5", "contact: {thermal_conductance: 0}");
   sim->run();
   const double hot = mean_temperature(sim->bodies()[0]), cold = mean_temperature(sim->bodies()[1]);
   std::printf("[ measured ] h = 0: mean temperatures %.12f K and %.12f K after %.1f s\n", hot, cold, sim->time());
