@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -14,6 +15,7 @@
 #include <memory>
 #include <new>
 #include <optional>
+#include <string>
 
 #include "mpm/app/checkpoint_command.hpp"
 #include "mpm/app/diff_command.hpp"
@@ -30,6 +32,9 @@
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
+#ifdef MPM_WITH_MPI
+#include "mpm/distributed/mpi_communicator.hpp"
+#endif
 
 namespace {
 
@@ -50,6 +55,9 @@ std::string check_end_time(const std::string& text) {
     return "expected a positive end time in seconds, got '" + text + "'";
   return "";
 }
+
+/// "rank R: ", the prefix of a message that one rank of a distributed run prints alone.
+std::string fmt_rank(int rank) { return "rank " + std::to_string(rank) + ": "; }
 
 }  // namespace
 
@@ -160,14 +168,39 @@ int main(int argc, char** argv) {
     return status == 0 ? exit_ok : exit_bad_input;
   }
 
-  // Under mpirun/srun with more than one process: refused on every process, explained by the first (issue 18).
+  // Under mpirun/srun with more than one process: `mpm run` is a distributed run (issue 18) when MPI is built in;
+  // anything else is refused on every process, explained by the first.
+  std::shared_ptr<mpm::Communicator> world;
   if (const auto launch = parallel_launch([](const char* name) { return std::getenv(name); })) {
+#ifdef MPM_WITH_MPI
+    if (!run_cmd->parsed()) {
+      if (launch->rank == 0)
+        std::cerr << "error: only `mpm run` runs on several processes (" << launch->variable << "=" << launch->size
+                  << "); start this command as one process\n";
+      return exit_bad_input;
+    }
+    world = std::make_shared<mpm::distributed::MpiCommunicator>(&argc, &argv);
+#else
     if (launch->rank == 0) std::cerr << "error: " << parallel_launch_refusal(*launch) << '\n';
     return exit_bad_input;
+#endif
+  }
+  const int rank = world ? world->rank() : 0;
+  // A distributed run: --threads is per rank, by default the node's cores shared by its ranks.
+  if (world) {
+    const long cores = std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
+    const long on_node = ranks_on_node([](const char* name) { return std::getenv(name); }).value_or(world->size());
+    if (threads == 0) threads = static_cast<int>(std::max(1L, cores / std::max(1L, on_node)));
+    if (rank == 0 && threads * on_node > cores)
+      std::cerr << "warning: " << on_node << " ranks x " << threads << " threads on a node of " << cores
+                << " cores: the threads compete for the cores (set --threads per rank)\n";
   }
   std::unique_ptr<tbb::global_control> thread_limit;
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  // The log of a distributed run comes from rank 0 (errors thrown on one rank only end the job below).
+  std::ostream null_log(nullptr);
+  std::ostream& log = rank == 0 ? std::cerr : null_log;
   if (particles_cmd->parsed()) return particles_command(particles, std::cout, std::cerr);
   if (diff_cmd->parsed()) {
     diff.a = diff_a;
@@ -194,33 +227,37 @@ int main(int argc, char** argv) {
     }
     RunOptions options;
     if (!output_dir.empty()) options.output_directory = output_dir;
-    options.progress = isatty(STDERR_FILENO);
+    options.progress = rank == 0 && isatty(STDERR_FILENO);
+    options.communicator = world;
     options.profile = profile;
     if (steps_opt->count() > 0) options.steps = steps;
     if (end_time_opt->count() > 0) options.end_time = end_time;
     if (!restart.empty()) options.restart = restart;
-    const RunSummary summary = run_scene(scene, options, std::cerr);
+    const RunSummary summary = run_scene(scene, options, log);
     return summary.stopped_by_signal != 0 ? 128 + summary.stopped_by_signal : exit_ok;
-  } catch (const mpm::SceneError& e) {
-    std::cerr << "error: " << e.what() << missing_module_note(e, missing_modules()) << '\n';
+  } catch (const mpm::SceneError& e) {  // every rank reads the same scene: one message
+    log << "error: " << e.what() << missing_module_note(e, missing_modules()) << '\n';
     return exit_bad_input;
   } catch (const RankCountError& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    log << "error: " << e.what() << '\n';
     return exit_bad_input;
   } catch (const RestartError& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    log << "error: " << e.what() << '\n';
     return exit_bad_input;
   } catch (const mpm::checkpoint::CheckpointError& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    log << "error: " << e.what() << '\n';
     return exit_bad_input;
-  } catch (const mpm::StabilityError& e) {
-    std::cerr << "error: " << e.what() << "\nThe last good state was written to the output.\n";
+  } catch (const mpm::StabilityError& e) {  // collective: the report is the same on every rank
+    log << "error: " << e.what() << "\nThe last good state was written to the output.\n";
     return exit_unstable;
   } catch (const std::bad_alloc&) {
-    std::cerr << "error: " << out_of_memory_message() << '\n';
+    std::cerr << (world ? fmt_rank(rank) : "") << "error: " << out_of_memory_message() << '\n';
+    if (world) world->abort(exit_runtime_error);
     return exit_runtime_error;
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    // On one rank only, perhaps: the others would wait for it in a collective, so the job ends here.
+    std::cerr << (world ? fmt_rank(rank) : "") << "error: " << e.what() << '\n';
+    if (world) world->abort(exit_runtime_error);
     return exit_runtime_error;
   }
 }

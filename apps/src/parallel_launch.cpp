@@ -42,11 +42,17 @@ std::optional<ParallelLaunch> parallel_launch(const std::function<const char*(co
   return std::nullopt;
 }
 
+std::optional<long> ranks_on_node(const std::function<const char*(const char*)>& environment) {
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS", "SLURM_NTASKS_PER_NODE"})
+    if (const std::optional<long> n = whole_number(environment(name)); n && *n >= 1) return n;
+  return std::nullopt;
+}
+
 std::string parallel_launch_refusal(const ParallelLaunch& launch) {
   return fmt::format(
-      "mpm was started as {} processes ({}={}), but it was built without MPI: a scene runs in one process "
-      "(distributed runs are not implemented yet), and {} copies would each compute the whole scene and "
-      "overwrite each other's output. Start one process and give it the cores: mpm run SCENE --threads N",
+      "mpm was started as {} processes ({}={}), but it was built without MPI: a scene runs in one process, "
+      "and {} copies would each compute the whole scene and overwrite each other's output (rebuild with "
+      "libopenmpi-dev installed for distributed runs). Start one process and give it the cores: mpm run SCENE --threads N",
       launch.size, launch.variable, launch.size, launch.size);
 }
 

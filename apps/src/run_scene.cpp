@@ -4,6 +4,7 @@
 #include <fmt/ostream.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <ostream>
@@ -133,6 +134,26 @@ std::vector<std::string> overrides(const RunOptions& options) {
   return lines;
 }
 
+/// The simulation distributed over the ranks (Simulation::distribute), or RankCountError (exit status 2 on every
+/// rank) for what a distributed run does not take yet.
+template <int Dim>
+void distribute(const SceneDescription& scene, const RunOptions& options, Simulation<Dim>& sim) {
+  const int ranks = options.communicator->size();
+  auto refuse = [&](const std::string& what) {
+    throw RankCountError(fmt::format("{}: {} does not run on several ranks yet (issue 18); start one process", scene.file,
+                                     what));
+  };
+  if (!scene.output.histories.empty()) refuse("output.histories (their sums are not reduced over the ranks)");
+  if (scene.output.checkpoint.interval || scene.output.checkpoint.wall_interval || options.restart)
+    refuse("a checkpoint or a restart");
+  if (scene.output.grid) refuse("output.grid (the grid is not gathered from the ranks)");
+  try {
+    sim.distribute(options.communicator);
+  } catch (const std::invalid_argument& e) {
+    throw RankCountError(fmt::format("{}: {} ({} ranks)", scene.file, e.what(), ranks));
+  }
+}
+
 template <int Dim>
 RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std::ostream& log) {
   SceneDescription scene = scene_in;  // modules writing their own files (contact forces) follow -o too
@@ -147,6 +168,9 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   }
   const StopSignals stop_signals;  // SIGINT, SIGTERM, SIGUSR1: stop after the current step
   auto sim = build_simulation<Dim>(scene);
+  Communicator* const comm = options.communicator && options.communicator->size() > 1 ? options.communicator.get()
+                                                                                       : nullptr;
+  if (comm) distribute(scene, options, *sim);
   RunSummary summary;
   auto built_histories = build_histories<Dim>(scene, *sim, summary.warnings);  // output.histories
   if (std::string w = step_warning(estimate_steps<Dim>(scene, *sim)); !w.empty())
@@ -175,6 +199,11 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     step_log = std::make_unique<io::CsvLog>(writer.directory() / std::string(file), sim->scheme().step_log_columns());
   io::write_view_script(writer.directory() / "view.py", view_script_for(scene));
   summary.particles = static_cast<std::size_t>(sim->particle_count());
+  if (comm) {  // every rank's
+    std::array<std::int64_t, 1> count{static_cast<std::int64_t>(summary.particles)};
+    comm->sum(count);
+    summary.particles = static_cast<std::size_t>(count[0]);
+  }
   for (const auto& b : sim->bodies())
     summary.bytes_per_particle = std::max(summary.bytes_per_particle, b.particles.bytes_per_particle());
   RunRecord record;
@@ -265,7 +294,8 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     if (s.step() % 50 == 0) check_state(s);
     if (checkpoints.due(s.time())) write_checkpoint(s);
     debug_raise_at_step(s.step());
-    if (StopSignals::requested() != 0) throw StopRequested{};
+    // A signal reaches the ranks at different steps: all stop after the step where any one received it.
+    if (comm ? comm->any(StopSignals::requested() != 0) : StopSignals::requested() != 0) throw StopRequested{};
     if (!options.progress) return;
     const auto now = Clock::now();
     if (now - last_print < std::chrono::milliseconds(500)) return;
@@ -285,7 +315,10 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     writer.write(*sim);  // the simulation was rolled back to the last good step
     histories.write(*sim);
     if (options.progress) log << '\n';
-    if (e.report().particle >= 0) record_flight(*sim, e.report(), sentinel, scene, options, writer.directory(), log);
+    if (e.report().particle >= 0 && comm)
+      fmt::print(log, "flight recorder: failure/ is not written by a distributed run yet; rerun in one process\n");
+    else if (e.report().particle >= 0)
+      record_flight(*sim, e.report(), sentinel, scene, options, writer.directory(), log);
     throw;
   } catch (const StopRequested&) {
     // The checkpoint first, then the last frame: a restart replaces that frame (it is after the checkpoint).

@@ -102,8 +102,10 @@ bool GridBoundary<Dim>::does_work() const {
 }
 
 template <int Dim>
-Real GridBoundary<Dim>::work(const std::vector<NodeRecord<Dim>>& node, const std::vector<NodeVelocity<Dim>>& velocity,
-                             const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt) const {
+ExactSum GridBoundary<Dim>::work(const std::vector<NodeRecord<Dim>>& node,
+                                 const std::vector<NodeVelocity<Dim>>& velocity, const Vec<Dim>& gravity,
+                                 Real mass_cutoff, Real t, Real dt, std::pair<Index, Index> owned) const {
+  auto mine = [&](Index n) { return n >= owned.first && n < owned.second; };
   ExactSum w;
   for (const auto& k : constraints_) {
     if (!k.value) continue;  // v = 0: no work
@@ -112,16 +114,16 @@ Real GridBoundary<Dim>::work(const std::vector<NodeRecord<Dim>>& node, const std
     const Real a = ((*k.value)(0, 0, 0, t + dt) - (*k.value)(0, 0, 0, t)) / dt;
     const int c = k.component;
     for (Index n : k.nodes)
-      if (const NodeRecord<Dim>& r = node[n]; r.mass > mass_cutoff)
+      if (const NodeRecord<Dim>& r = node[n]; r.mass > mass_cutoff && mine(n))
         w += (r.mass * a - (r.force[c] + r.mass * gravity[c])) * v * dt;
   }
   for (const auto& k : tractions_) {
     const Real value = (*k.value)(0, 0, 0, t);
     for (std::size_t j = 0; j < k.nodes.size(); ++j)
-      if (const Index n = k.nodes[j]; node[n].mass > 0)
+      if (const Index n = k.nodes[j]; node[n].mass > 0 && mine(n))
         w += value * k.area[j] * 0.5 * (velocity[n].mapped[k.component] + velocity[n].updated[k.component]) * dt;
   }
-  return w.value();
+  return w;
 }
 
 template class GridBoundary<1>;

@@ -39,7 +39,7 @@ namespace {
 
 /// sum over the bodies of m_p b_p . v_p, or 0 when no body carries the field "body_force".
 template <int Dim>
-Real body_force_power(const std::vector<Body<Dim>>& bodies) {
+Real body_force_power(const std::vector<Body<Dim>>& bodies, Communicator* comm) {
   ExactSum power;
   for (const auto& b : bodies) {
     const auto& p = b.particles;
@@ -47,6 +47,7 @@ Real body_force_power(const std::vector<Body<Dim>>& bodies) {
     const auto& force = p.field(keys::body_force<Dim>);
     for (Index i = 0; i < p.size(); ++i) power += p.mass[i] * Vec<Dim>(force[i]).dot(Vec<Dim>(p.v[i]));
   }
+  if (comm) comm->sum(std::span<ExactSum>(&power, 1));  // a distributed run: every rank's particles
   return power.value();
 }
 
@@ -58,19 +59,22 @@ template <int Dim>
 EnergyBalance EnergySentinel<Dim>::audit(const StepContext<Dim>& ctx) const {
   EnergySums sums;
   for (const auto& b : ctx.bodies) add_body_energy(b, ctx.settings.gravity, ctx.hooks.all(), sums);
+  if (ctx.comm) sums.reduce(*ctx.comm);
   return sums.value();
 }
 
 template <int Dim>
 void EnergySentinel<Dim>::before_step(StepContext<Dim>& ctx) {
-  body_force_start_ = 0.5 * ctx.dt * body_force_power(ctx.bodies);
+  body_force_start_ = 0.5 * ctx.dt * body_force_power(ctx.bodies, ctx.comm);
 }
 
 template <int Dim>
 void EnergySentinel<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) {
   if (stage != GridStage::updated) return;  // the nodal forces of the step are final here in every scheme
-  work_ += ctx.boundary.work(ctx.grid.node, ctx.grid.velocity, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time,
-                             ctx.dt);
+  ExactSum work = ctx.boundary.work(ctx.grid.node, ctx.grid.velocity, ctx.settings.gravity, ctx.settings.mass_cutoff,
+                                    ctx.time, ctx.dt, ctx.owned_nodes);
+  if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(&work, 1));  // each rank summed the nodes it owns
+  work_ += work.value();
 }
 
 template <int Dim>
@@ -85,7 +89,7 @@ void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
                                   : partner.provider->partner_velocity(partner.index, ctx.time + 0.5 * ctx.dt);
     work_ += force.dot(velocity) * ctx.dt;
   }
-  work_ += body_force_start_ + 0.5 * ctx.dt * body_force_power(ctx.bodies);
+  work_ += body_force_start_ + 0.5 * ctx.dt * body_force_power(ctx.bodies, ctx.comm);
   if (ctx.step % interval_ != 0) return;
   const EnergyBalance e = audit(ctx);
   const Real balance = (e.total() - initial_.total()) - work_;

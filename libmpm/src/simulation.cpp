@@ -38,6 +38,7 @@ template <int Dim>
 void Simulation<Dim>::particles_changed() {
   wave_speed_ = WaveSpeedBound<Dim>{};
   for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
+  if (comm_) reduce_wave_speed(wave_speed_, *comm_);
   take_snapshot();
 }
 
@@ -107,8 +108,12 @@ Real Simulation<Dim>::time_step_toward(Real target_time) const {
 template <int Dim>
 void Simulation<Dim>::take_step(Real dt, bool guard) {
   if (scheme_->reorders_particles() && settings_.sort_interval > 0 && step_ % settings_.sort_interval == 0)
-    for (auto& b : bodies_) b.particles.gather(order_by_cell(b.particles, grid_.geometry));
+    for (auto& b : bodies_) {
+      b.particles.gather(order_by_cell(b.particles, grid_.geometry));
+      if (comm_) set_scatter_keys(b.particles, grid_.geometry);
+    }
   StepContext<Dim> ctx{grid_, bodies_, settings_.transfer, boundary_, hooks_};
+  attach(ctx);
   ctx.time = time_;
   ctx.dt = dt;
   ctx.step = step_ + 1;
@@ -116,10 +121,16 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   hooks_.before_step(ctx);
   scheme_->advance(ctx);
   hooks_.end_of_step(ctx);
-  if (guard && ctx.guard_tripped.load()) {
+  bool tripped = ctx.guard_tripped.load();
+  if (comm_) {  // the roll-back is collective: every rank replays the same steps
+    tripped = comm_->any(tripped);
+    reduce_wave_speed(ctx.wave_speed, *comm_);
+  }
+  if (guard && tripped) {
     failure_ = std::make_unique<Snapshot>(snapshot_);  // for the flight recorder (replay_failure)
     failure_->dts_since.push_back(dt);
     StabilityReport report = diagnose(dt);
+    if (comm_) share_report(report);
     report.step = step_ + 1;
     report.time = time_;
     roll_back_to_previous_step();
@@ -128,6 +139,10 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   wave_speed_ = ctx.wave_speed;
   time_ += dt;
   ++step_;
+  if (comm_) {
+    migrate();
+    if (settings_.rebalance_interval > 0 && step_ % settings_.rebalance_interval == 0) rebalance();
+  }
 }
 
 template <int Dim>
@@ -171,6 +186,7 @@ void Simulation<Dim>::take_snapshot() {
   snapshot_.step = step_;
   snapshot_.wave_speed = wave_speed_;
   snapshot_.dts_since.clear();
+  snapshot_.first_slab = halo_ ? halo_->first_slab() : std::vector<int>{};
   snapshot_.modules = StateArchive();
   for (const auto& m : hooks_.all()) m->save_state(snapshot_.modules, module_prefix(*m));
 }
@@ -184,6 +200,7 @@ void Simulation<Dim>::roll_back_to_previous_step() {
   time_ = snapshot_.time;
   step_ = snapshot_.step;
   wave_speed_ = snapshot_.wave_speed;
+  if (halo_) use_slabs(snapshot_.first_slab);
   for (const auto& m : hooks_.all()) m->restore_state(snapshot_.modules, module_prefix(*m));
   for (Real dt : replay) take_step(dt);
   take_snapshot();
@@ -197,6 +214,7 @@ bool Simulation<Dim>::replay_failure(const std::function<void(const Simulation&)
   time_ = start.time;
   step_ = start.step;
   wave_speed_ = start.wave_speed;
+  if (halo_) use_slabs(start.first_slab);
   for (const auto& m : hooks_.all()) m->restore_state(start.modules, module_prefix(*m));
   if (after_step) after_step(*this);
   for (std::size_t k = 0; k < start.dts_since.size(); ++k) {
@@ -253,6 +271,7 @@ template <int Dim>
 EnergyBalance Simulation<Dim>::energy() const {
   EnergySums e;
   for (const auto& b : bodies_) add_body_energy(b, settings_.transfer.gravity, hooks_.all(), e);
+  if (comm_) e.reduce(*comm_);
   return e.value();
 }
 
@@ -260,6 +279,7 @@ template <int Dim>
 EnergyBalance Simulation<Dim>::body_energy(const Body<Dim>& body) const {
   EnergySums e;
   add_body_energy(body, settings_.transfer.gravity, hooks_.all(), e);
+  if (comm_) e.reduce(*comm_);
   return e.value();
 }
 

@@ -1,6 +1,7 @@
-// `mpm` started under a parallel launcher (apps/include/mpm/app/parallel_launch.hpp): refused with exit 2 on every
-// process before anything is read or written, explained once (by the first process); a single process, and a
-// Slurm batch script's SLURM_NTASKS alone, run as usual. The last test starts it under OpenMPI's real mpirun.
+// `mpm` started under a parallel launcher (apps/include/mpm/app/parallel_launch.hpp). A build without MPI refuses
+// with exit 2 on every process before anything is read or written, explained once (by the first process); a build
+// with MPI runs `mpm run` distributed and refuses the other commands likewise. A single process, and a Slurm batch
+// script's SLURM_NTASKS alone, run as usual. The last test starts it under OpenMPI's real mpirun.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -53,6 +54,79 @@ TEST(ParallelLaunch, OneProcessOrNoLauncherIsNotALaunch) {
   EXPECT_FALSE(launch_of({{"PMI_SIZE", "4x"}}));
 }
 
+TEST(ParallelLaunch, RanksOnTheNodeAreRead) {
+  auto on_node = [](const std::map<std::string, std::string>& environment) {
+    return mpm::app::ranks_on_node([&](const char* name) -> const char* {
+      const auto it = environment.find(name);
+      return it == environment.end() ? nullptr : it->second.c_str();
+    });
+  };
+  EXPECT_EQ(on_node({{"OMPI_COMM_WORLD_LOCAL_SIZE", "3"}}), 3);
+  EXPECT_EQ(on_node({{"SLURM_NTASKS_PER_NODE", "16"}}), 16);
+  EXPECT_FALSE(on_node({{"OMPI_COMM_WORLD_LOCAL_SIZE", "x"}}));
+  EXPECT_FALSE(on_node({}));
+}
+
+#ifdef MPM_WITH_MPI
+// With MPI only `mpm run` runs distributed; the other commands are refused on every process, explained once. (A
+// `mpm run` under a launcher's variables without the launcher would start MPI alone: tested under mpirun below.)
+TEST(ParallelLaunch, OnlyRunRunsOnSeveralProcesses) {
+  const auto dir = scratch("parallel_launch");
+  auto r = mpm("check " + scene, dir, "OMPI_COMM_WORLD_SIZE=4 OMPI_COMM_WORLD_RANK=0");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("only `mpm run` runs on several processes (OMPI_COMM_WORLD_SIZE=4)"), std::string::npos)
+      << r.err;
+  r = mpm("check " + scene, dir, "OMPI_COMM_WORLD_SIZE=4 OMPI_COMM_WORLD_RANK=2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "");
+  r = mpm("check " + scene, dir, "SLURM_NTASKS=4 OMPI_COMM_WORLD_SIZE=1");
+  EXPECT_EQ(r.status, 0) << r.err;
+  fs::remove_all(dir);
+}
+
+/// mpirun -np `np` mpm ARGS, as root; returns the exit status (124: mpirun did not end within 120 s).
+int mpirun(int np, const std::string& args, const fs::path& dir) {
+  const std::string cmd = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 mpirun --oversubscribe -np " +
+                          std::to_string(np) + " " + std::string(MPM_EXECUTABLE) + " " + args + " > " +
+                          (dir / "stdout").string() + " 2> " + (dir / "stderr").string() + " < /dev/null";
+  const int raw = std::system(cmd.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+TEST(ParallelLaunch, UnderMpirunTheRunIsDistributedAndLogsOnce) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  const auto dir = scratch("parallel_launch_mpirun");
+  const fs::path out = dir / "out";
+  EXPECT_EQ(mpirun(2, "run " + scene + " --steps 30 --threads 1 -o " + out.string(), dir), 0)
+      << cli::slurp(dir / "stderr");
+  const std::string err = cli::slurp(dir / "stderr");
+  const auto done = err.find("done: 30 steps");
+  EXPECT_NE(done, std::string::npos) << err;
+  EXPECT_EQ(err.find("done:", done + 1), std::string::npos) << "logged by more than one rank:\n" << err;
+  EXPECT_NE(err.find("1264 particles"), std::string::npos) << err;  // every rank's, as in one process
+  EXPECT_TRUE(fs::exists(out / "energy.csv"));
+  fs::remove_all(dir);
+}
+
+/// What a distributed run does not take yet is refused on every rank with exit 2, said once, before writing.
+TEST(ParallelLaunch, UnderMpirunWhatCannotBeDistributedIsRefusedOnce) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  const auto dir = scratch("parallel_launch_refused");
+  const fs::path out = dir / "out";
+  const std::string tlmpm = (fs::path(MPM_SOURCE_DIR) / "examples" / "03_tlmpm_column" / "scene.yaml").string();
+  EXPECT_EQ(mpirun(2, "run " + tlmpm + " --steps 3 -o " + out.string(), dir), 2);
+  std::string err = cli::slurp(dir / "stderr");
+  const auto first = err.find("does not run on several ranks yet");
+  EXPECT_NE(first, std::string::npos) << err;
+  EXPECT_EQ(err.find("does not run on several ranks yet", first + 1), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(out / "energy.csv"));
+  // More ranks than slabs: the two-disk grid has 10 slabs of 2 cells along y.
+  EXPECT_EQ(mpirun(11, "run " + scene + " --steps 3 --threads 1 -o " + out.string(), dir), 2);
+  err = cli::slurp(dir / "stderr");
+  EXPECT_NE(err.find("11 ranks for 10 slabs"), std::string::npos) << err;
+  fs::remove_all(dir);
+}
+#else
 TEST(ParallelLaunch, EveryProcessExitsWithTwoAndTheFirstSaysWhy) {
   const auto dir = scratch("parallel_launch");
   const fs::path out = dir / "out";
@@ -95,5 +169,6 @@ TEST(ParallelLaunch, UnderOpenMpisMpirunNoProcessRuns) {
   EXPECT_FALSE(fs::exists(out));
   fs::remove_all(dir);
 }
+#endif
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "mpm/exact_sum.hpp"
 #include "mpm/grid.hpp"
 #include "mpm/scene.hpp"
 
@@ -58,9 +59,11 @@ class GridBoundary {
   /// (energy_sentinel.hpp): a velocity condition R v dt, with R its force of reactions() and v the prescribed
   /// velocity at t + dt/2; a traction f_I . v dt with f_I = t(t) A_I and v the mean of the node's velocity at t
   /// and at t + dt (`velocity[n].mapped` and `.updated`: the nodal kinetic energy changes by exactly that work).
-  /// A fixed or slip face does none. `node` as for reactions(); every node term is summed exactly.
-  Real work(const std::vector<NodeRecord<Dim>>& node, const std::vector<NodeVelocity<Dim>>& velocity,
-            const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt) const;
+  /// A fixed or slip face does none. `node` as for reactions(); every node term is summed exactly, over the nodes
+  /// of `owned` only (a distributed run's rank, StepContext::owned_nodes; the ranks' sums are then merged).
+  ExactSum work(const std::vector<NodeRecord<Dim>>& node, const std::vector<NodeVelocity<Dim>>& velocity,
+                const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt,
+                std::pair<Index, Index> owned = {0, std::numeric_limits<Index>::max()}) const;
 
  private:
   struct Constraint {

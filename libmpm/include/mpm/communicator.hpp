@@ -6,7 +6,10 @@
 /// independent of the number of ranks and of the order they combine in: sums are ExactSum (the bits of one sum
 /// over every rank's terms), bounds are max/min (exact in floating point), flags a logical or.
 
+#include <cstddef>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "mpm/exact_sum.hpp"
 
@@ -25,6 +28,26 @@ class Communicator {
   virtual void min(std::span<double> values) = 0;
   /// True on every rank when `flag` is true on any (the stability guard's roll-back is collective).
   virtual bool any(bool flag) = 0;
+  /// values[i] becomes its sum over the ranks (integers: exact in any order).
+  virtual void sum(std::span<std::int64_t> values) = 0;
+
+  /// A point-to-point message of a halo exchange, whose size both sides know.
+  struct Outgoing {
+    int peer;
+    std::span<const std::byte> bytes;
+  };
+  struct Incoming {
+    int peer;
+    std::span<std::byte> bytes;
+  };
+  /// Sends every `sends[k].bytes` to its peer and fills every `receives[k].bytes` from its peer; returns when all
+  /// have arrived. Two messages between the same pair in one call go in the order given.
+  virtual void exchange(std::span<const Outgoing> sends, std::span<const Incoming> receives) = 0;
+  /// Every rank gives a buffer for every rank (`out[q]` for rank q, its own included); returns the buffers the
+  /// ranks gave this one (`in[q]` from rank q). The migration of particles.
+  virtual std::vector<std::vector<std::byte>> all_to_all(std::vector<std::vector<std::byte>> out) = 0;
+  /// `bytes` of rank `root`, on every rank.
+  virtual void broadcast(std::vector<std::byte>& bytes, int root) = 0;
   virtual void barrier() = 0;
   /// Ends every process of the job with `status`: an internal error on one rank must not leave the others
   /// waiting in a collective.
@@ -40,6 +63,10 @@ class SerialCommunicator final : public Communicator {
   void max(std::span<double>) override {}
   void min(std::span<double>) override {}
   bool any(bool flag) override { return flag; }
+  void sum(std::span<std::int64_t>) override {}
+  void exchange(std::span<const Outgoing> sends, std::span<const Incoming> receives) override;
+  std::vector<std::vector<std::byte>> all_to_all(std::vector<std::vector<std::byte>> out) override { return out; }
+  void broadcast(std::vector<std::byte>&, int) override {}
   void barrier() override {}
   [[noreturn]] void abort(int status) override;
 };

@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "mpm/communicator.hpp"
 #include "mpm/exact_sum.hpp"
 #include "mpm/types.hpp"
 
@@ -36,6 +37,19 @@ struct EnergySums {
     thermal.merge(o.thermal);
     mass.merge(o.mass);
     for (int d = 0; d < 3; ++d) momentum[d].merge(o.momentum[d]);
+  }
+  /// Every rank's sums merged (a distributed run): the bits of one sum over all ranks' particles.
+  void reduce(Communicator& comm) {
+    std::array<ExactSum, 9> all{kinetic, strain, gravity, plastic_work, thermal, mass,
+                                momentum[0], momentum[1], momentum[2]};
+    comm.sum(all);
+    kinetic = all[0];
+    strain = all[1];
+    gravity = all[2];
+    plastic_work = all[3];
+    thermal = all[4];
+    mass = all[5];
+    for (int d = 0; d < 3; ++d) momentum[d] = all[6 + d];
   }
   EnergyBalance value() const {
     EnergyBalance e;

@@ -47,6 +47,9 @@ class Module {
   virtual void end_of_step(StepContext<Dim>&) {}
   /// Before any transfer of the step (e.g. to set the particle field "body_force" for time t).
   virtual void before_step(StepContext<Dim>&) {}
+  /// Whether the module keeps its results independent of the rank count in a distributed run (its scatters
+  /// exchange ghost nodes, its sums are reduced through StepContext::comm); Simulation::distribute refuses the others.
+  virtual bool runs_distributed() const { return false; }
   /// The largest stable time step this module allows (s); infinity when it imposes none.
   virtual Real stable_time_step(const std::vector<Body<Dim>>&) const { return std::numeric_limits<Real>::infinity(); }
   /// What stable_time_step() bounds, for the log ("diffusion bound h^2 rho c / (2 dim k)").

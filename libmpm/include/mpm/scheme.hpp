@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "mpm/module.hpp"
@@ -32,6 +33,10 @@ class Scheme {
   virtual bool reorders_particles() const { return true; }
   /// False when particle positions are not used by the transfers (TLMPM: they may leave the grid).
   virtual bool positions_must_stay_in_grid() const { return true; }
+  /// Whether the scheme runs on several ranks (its scatters exchange ghost nodes, slab_halo.hpp).
+  virtual bool runs_distributed() const { return false; }
+  /// Node layers a slab of cells reaches below its first cell and above its last (slab_halo.hpp).
+  virtual std::pair<int, int> slab_reach() const { return {slab_cells(), slab_cells()}; }
   /// The scheme's own table of one row per step (the implicit scheme's solver.csv, written by `mpm run` beside
   /// energy.csv): its file name, or empty when it keeps none; its columns; the row of the last step taken.
   virtual std::string_view step_log_file() const { return {}; }
@@ -46,6 +51,7 @@ class ShapedScheme : public Scheme<Dim> {
   std::string_view shape_function() const override { return Shape::name; }
   int slab_cells() const override { return Shape::slab_cells; }
   int min_cells() const override { return Shape::min_cells; }
+  std::pair<int, int> slab_reach() const override { return {Shape::slab_reach_below, Shape::slab_reach_above}; }
 };
 
 /// A scheme of scheme_names() ("usl", "musl", "usf", "tlmpm") with a shape function of the table

@@ -4,15 +4,18 @@
 /// control (review eqs 2.71-2.73) and the stability guard. Build one with build_simulation() from a
 /// scene, or by hand in tests.
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "mpm/communicator.hpp"
 #include "mpm/energy.hpp"
 #include "mpm/module.hpp"
 #include "mpm/scheme.hpp"
+#include "mpm/slab_halo.hpp"
 #include "mpm/stability_error.hpp"
 #include "mpm/state_archive.hpp"
 #include "mpm/step_profile.hpp"
@@ -27,6 +30,9 @@ struct SimulationSettings {
   Real end_time = 0;             ///< s
   int snapshot_interval = 20;    ///< steps between snapshots kept for the stability guard
   int sort_interval = 20;        ///< steps between reorderings of the particles by cell
+  /// Distributed run: steps between checks of the balance; when the most loaded rank's cost exceeds the mean by
+  /// more than 10%, the slabs are dealt anew (`mpm run --rebalance-every`; 0: never).
+  int rebalance_interval = 50;
 };
 
 template <int Dim>
@@ -41,6 +47,26 @@ class Simulation {
     hooks_.add(std::move(module));
   }
   const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
+
+  /// Makes this process one rank of a distributed run (issue 18, docs/distributed.md §4): every rank built the
+  /// same simulation from the scene; each keeps the particles of its run of slabs, and from now on its scatters
+  /// exchange ghost nodes, its particles migrate to the rank owning their slab after every step, and its time
+  /// step, guard, energy() and body_energy() are reduced over the ranks, so that every result has the bits of a
+  /// one-process run. Call before the first step, on every rank. A communicator of one rank changes nothing.
+  /// Throws std::invalid_argument (on every rank alike) for what cannot run distributed yet: a scheme or module
+  /// that has no ghost exchange, or more ranks than slabs.
+  void distribute(std::shared_ptr<Communicator> comm);
+  /// The run's other ranks, or null in one process.
+  Communicator* communicator() const { return comm_.get(); }
+  /// The distributed run's slab ownership, or null.
+  const SlabHalo* halo() const { return halo_.get(); }
+  /// Reassigns the slabs to the ranks (every rank the same `first_slab`, SlabHalo) and migrates the particles.
+  /// Results do not depend on it (the tests reassign at random every step).
+  void reassign_slabs(std::vector<int> first_slab);
+  /// Steps between balance checks of a distributed run (SimulationSettings::rebalance_interval; 0: never).
+  void set_rebalance_interval(int steps) { settings_.rebalance_interval = steps; }
+  /// The slab runs that balance the particles of all ranks (a collective call).
+  std::vector<int> balanced_slabs() const;
 
   /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), of the viscous
   /// materials (h^2 / (2 Dim nu)) and of the modules.
@@ -83,7 +109,10 @@ class Simulation {
   const std::vector<Body<Dim>>& bodies() const { return bodies_; }
   std::vector<Body<Dim>>& bodies() { return bodies_; }
   const Scheme<Dim>& scheme() const { return *scheme_; }
+  /// The particles of this process (of this rank in a distributed run).
   Index particle_count() const;
+  /// The conservation audit of all bodies; in a distributed run a collective call whose result, the same on every
+  /// rank, has the bits of the one-process audit.
   EnergyBalance energy() const;
   /// The audit of one body (energy() is the sum over the bodies, accumulated in the same order).
   EnergyBalance body_energy(const Body<Dim>& body) const;
@@ -117,12 +146,26 @@ class Simulation {
     WaveSpeedBound<Dim> wave_speed;
     std::vector<Real> dts_since;  ///< time steps taken after the snapshot, to replay them exactly
     StateArchive modules;         ///< the modules' state (Module::save_state)
+    std::vector<int> first_slab;  ///< distributed run: the slabs' owners then (SlabHalo)
   };
   /// One step; with `guard` false a tripped guard is ignored (replay_failure()'s last step).
   void take_step(Real dt, bool guard = true);
   void take_snapshot();
   StabilityReport diagnose(Real dt) const;
   void roll_back_to_previous_step();
+  /// Distributed run: sends every particle outside this rank's slabs to their owner and takes in what the others
+  /// send, keeping the storage ordered by the scatter key (simulation_distributed.cpp).
+  void migrate();
+  /// Distributed run: the cost of every slab (its particles on all ranks, plus its nodes); a collective call.
+  std::vector<double> slab_costs() const;
+  /// Distributed run: deals the slabs anew when the most loaded rank exceeds the mean by more than 10%.
+  void rebalance();
+  /// Distributed run: the halo of the slab assignment `first_slab` (a restored snapshot's), without migrating.
+  void use_slabs(const std::vector<int>& first_slab);
+  /// Distributed run: the failing particle's report, from the lowest rank that found one.
+  void share_report(StabilityReport& report) const;
+  /// The step context's view of the distribution.
+  void attach(StepContext<Dim>& ctx) const;
 
   Grid<Dim> grid_;
   std::vector<Body<Dim>> bodies_;
@@ -140,6 +183,27 @@ class Simulation {
   std::unique_ptr<Snapshot> failure_;
   bool profiling_ = false;
   StepProfile profile_;
+  std::shared_ptr<Communicator> comm_;  ///< null in one process
+  std::unique_ptr<SlabHalo> halo_;
 };
+
+/// The wave-speed bound of every rank's particles (a distributed run): max over ranks, exact.
+template <int Dim>
+void reduce_wave_speed(WaveSpeedBound<Dim>& bound, Communicator& comm) {
+  std::array<double, Dim + 1> v{};
+  for (int d = 0; d < Dim; ++d) v[d] = bound.max_speed[d];
+  v[Dim] = bound.finite ? 0 : 1;
+  comm.max(v);
+  for (int d = 0; d < Dim; ++d) bound.max_speed[d] = v[d];
+  bound.finite = v[Dim] == 0;
+}
+
+/// Sets the field scatter_key_field of every particle to its scatter key (cell, id) (after a sort by it).
+template <int Dim>
+void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g);
+
+/// The particle field a distributed run keeps its storage ordered by: the scatter key (slab_binning.hpp) of the last
+/// sort, or the particle's place in the initial storage before the first.
+inline constexpr std::string_view scatter_key_field = "scatter_key";
 
 }  // namespace mpm

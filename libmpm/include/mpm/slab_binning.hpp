@@ -15,10 +15,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "mpm/particle_set.hpp"
+#include "mpm/slab_halo.hpp"
 
 namespace mpm {
 
@@ -30,6 +33,8 @@ struct SlabBins {
   Index outside = -1;          ///< first particle found outside the grid box (or non-finite), -1 if none
   std::vector<int> slab_of;    ///< scratch: slab of each particle (kept to avoid reallocating every step)
   std::vector<Index> cursor;   ///< scratch
+  /// Distributed run: the ghost-node exchange after each colour round (slab_halo.hpp); null in one process.
+  const SlabHalo* halo = nullptr;
 };
 
 /// The linear index of the cell holding x (first axis fastest, so that the cells of a slab of the last axis
@@ -80,9 +85,10 @@ void bin_by_slab(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab
   for (Index i = 0; i < n; ++i) bins.order[bins.cursor[slab[i]]++] = i;
 }
 
-/// Calls body(indices, count) for every slab, even slabs in parallel first, then odd slabs.
+/// Calls body(indices, count) for every slab, even slabs in parallel first, then odd slabs. `written`: the nodal
+/// arrays the body adds to; in a distributed run their ghost nodes are exchanged after each colour (slab_halo.hpp).
 template <class Body>
-void for_each_slab_coloured(const SlabBins& bins, Body&& body) {
+void for_each_slab_coloured(const SlabBins& bins, std::initializer_list<HaloArray> written, Body&& body) {
   for (int colour = 0; colour < 2; ++colour) {
     const int n = (bins.slab_count - colour + 1) / 2;
     tbb::parallel_for(0, n, [&](int k) {
@@ -90,7 +96,15 @@ void for_each_slab_coloured(const SlabBins& bins, Body&& body) {
       const Index begin = bins.offsets[s], end = bins.offsets[s + 1];
       if (end > begin) body(bins.order.data() + begin, end - begin);
     });
+    if (bins.halo) bins.halo->exchange(colour, std::span<const HaloArray>(written.begin(), written.size()));
   }
+}
+
+/// A scatter whose arrays have no halo yet (the modules that a distributed run refuses, Simulation::distribute).
+template <class Body>
+void for_each_slab_coloured(const SlabBins& bins, Body&& body) {
+  if (bins.halo) throw std::logic_error("a scatter without ghost-node exchange ran in a distributed run");
+  for_each_slab_coloured(bins, {}, std::forward<Body>(body));
 }
 
 /// Permutation that sorts particles by (cell, id), the scatter key: after it the storage order, and so the

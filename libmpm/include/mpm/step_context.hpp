@@ -3,10 +3,13 @@
 /// Everything one time step reads and writes, handed to the scheme and to the modules' phases.
 
 #include <atomic>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include "mpm/body.hpp"
 #include "mpm/boundary_conditions.hpp"
+#include "mpm/communicator.hpp"
 #include "mpm/step_profile.hpp"
 
 namespace mpm {
@@ -43,6 +46,11 @@ struct StepContext {
   /// Phase timings (step_profile.hpp) when the run is profiled; null otherwise, and then the kernels'
   /// PhaseTimers read no clock.
   StepProfile* profile = nullptr;
+  /// A distributed run's other ranks (Simulation::distribute), null in one process: a module that sums over
+  /// particles or nodes reduces through it (owned nodes only: `owned_nodes`).
+  Communicator* comm = nullptr;
+  /// The nodes this rank owns, [first, end): every node in one process.
+  std::pair<Index, Index> owned_nodes{0, std::numeric_limits<Index>::max()};
 };
 
 }  // namespace mpm

@@ -1,8 +1,8 @@
 #pragma once
 /// \file parallel_launch.hpp
-/// A start as one of several processes of a parallel launcher (mpirun, mpiexec, srun). This build has no
-/// distributed engine yet (issue 18): N copies of the same run would each compute the whole scene and overwrite
-/// each other's output. `mpm` refuses such a start (exit 2) before reading anything; the first process says why.
+/// A start as one of several processes of a parallel launcher (mpirun, mpiexec, srun). A build with MPI runs
+/// `mpm run` distributed over them (issue 18); a build without would run N copies of the whole scene that overwrite
+/// each other's output, so it refuses such a start (exit 2) before reading anything; the first process says why.
 
 #include <functional>
 #include <optional>
@@ -21,6 +21,10 @@ struct ParallelLaunch {
 /// not SLURM_NTASKS, which a batch script also holds when it starts one process). Nothing when the size is
 /// absent, not a whole number, or 1.
 std::optional<ParallelLaunch> parallel_launch(const std::function<const char*(const char*)>& environment);
+
+/// The processes the launcher started on this node (OMPI_COMM_WORLD_LOCAL_SIZE, MPI_LOCALNRANKS,
+/// SLURM_NTASKS_PER_NODE), when it says: the default threads of a rank share the node's cores among them.
+std::optional<long> ranks_on_node(const std::function<const char*(const char*)>& environment);
 
 /// The refusal: the count, the variable, what to do instead.
 std::string parallel_launch_refusal(const ParallelLaunch& launch);

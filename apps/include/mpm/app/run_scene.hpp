@@ -4,10 +4,12 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "mpm/communicator.hpp"
 #include "mpm/scene.hpp"
 #include "mpm/step_profile.hpp"
 
@@ -32,6 +34,10 @@ struct RunOptions {
   std::vector<std::string> overrides;
   /// Continue this checkpoint, or the newest valid one of this directory (`--restart`; run_checkpoints.hpp).
   std::optional<std::filesystem::path> restart;
+  /// The ranks of a distributed run (`mpirun -np N mpm run`, issue 18), null in one process: the simulation is
+  /// distributed over them (Simulation::distribute), and what cannot run on several ranks yet is refused
+  /// (RankCountError, exit status 2, on every rank alike).
+  std::shared_ptr<Communicator> communicator;
 };
 
 struct RunSummary {

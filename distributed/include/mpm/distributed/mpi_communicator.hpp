@@ -27,6 +27,10 @@ class MpiCommunicator final : public Communicator {
   void max(std::span<double> values) override;
   void min(std::span<double> values) override;
   bool any(bool flag) override;
+  void sum(std::span<std::int64_t> values) override;
+  void exchange(std::span<const Outgoing> sends, std::span<const Incoming> receives) override;
+  std::vector<std::vector<std::byte>> all_to_all(std::vector<std::vector<std::byte>> out) override;
+  void broadcast(std::vector<std::byte>& bytes, int root) override;
   void barrier() override;
   [[noreturn]] void abort(int status) override;
 

@@ -15,6 +15,7 @@ template <int Dim, class Shape, class Coords = CartesianCoordinates>
 class Musl final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "musl"; }
+  bool runs_distributed() const override { return true; }
 
   void advance(StepContext<Dim>& ctx) override {
     kernels::map_and_update_grid<Dim, Shape, Coords>(ctx);
@@ -51,7 +52,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     const NodeVelocity<Dim>* vel = grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction;
     MatU<Dim>* affine = kernels::affine_of(p);
-    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+    for_each_slab_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {

@@ -111,7 +111,7 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
   const VecU<Dim>* body_force = Force ? body_force_of(p) : nullptr;
   const MatU<Dim>* affine = MassMomentum ? affine_of(body.particles) : nullptr;
   const Real* hoop_stretch = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
-  for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+  for_each_slab_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
     axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
     for (Index k = 0; k < count; ++k) {

@@ -17,6 +17,7 @@ template <int Dim, class Shape, class Coords = CartesianCoordinates>
 class Usf final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "usf"; }
+  bool runs_distributed() const override { return true; }
 
   void advance(StepContext<Dim>& ctx) override {
     auto& grid = ctx.grid;

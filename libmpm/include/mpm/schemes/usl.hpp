@@ -13,6 +13,7 @@ template <int Dim, class Shape, class Coords = CartesianCoordinates>
 class Usl final : public ShapedScheme<Dim, Shape> {
  public:
   std::string_view name() const override { return "usl"; }
+  bool runs_distributed() const override { return true; }
 
   void advance(StepContext<Dim>& ctx) override {
     kernels::map_and_update_grid<Dim, Shape, Coords>(ctx);

@@ -1,0 +1,79 @@
+#pragma once
+/// \file slab_halo.hpp
+/// The ghost-node protocol of a distributed run (issue 18, docs/distributed.md §4). Ranks own contiguous runs of
+/// the slabs the threaded scatter already uses (slab_binning.hpp): slab s holds the cells [sT, (s+1)T) of the last
+/// axis and its particles reach the node layers [sT - B, (s+1)T - 1 + A] (the shape function's slab_reach_below and
+/// slab_reach_above, B + A <= T). A scatter runs even slabs, then odd ones; a node's contributions therefore come
+/// from at most two slabs, in the order (even slab, odd slab), and inside a slab in the storage order, on one rank
+/// as on many.
+///
+/// **Copy, never add.** Where the slabs S - 1 and S belong to two ranks, both hold the node layers
+/// [ST - B, ST - 1 + A] (the overlap of the two slabs' reach; no other slab of either colour reaches them).
+/// After the round of the colour of one of the two slabs, its owner sends the overlap layers to the other rank,
+/// which replaces its copy by them; the other slab then adds its contributions in the next round, and its owner
+/// sends the totals back. So both sides hold, bit for bit, the serial sums, with the serial order of terms; the
+/// grid update, boundary conditions and the transfer back need no further message. Because the last axis varies
+/// slowest in the node numbering (grid.hpp), the overlap is one contiguous range of nodes per array.
+
+#include <cstddef>
+#include <initializer_list>
+#include <span>
+#include <vector>
+
+#include "mpm/communicator.hpp"
+#include "mpm/types.hpp"
+
+namespace mpm {
+
+/// A nodal array a scatter writes: `bytes_per_node` bytes per node, node n at base + n * bytes_per_node.
+struct HaloArray {
+  std::byte* base = nullptr;
+  std::size_t bytes_per_node = 0;
+  template <class T>
+  static HaloArray of(std::vector<T>& nodes) {
+    return {reinterpret_cast<std::byte*>(nodes.data()), sizeof(T)};
+  }
+};
+
+/// Which rank owns which slabs, and the exchange after a colour round. Built by the distributed simulation
+/// (Simulation::distribute); a serial run has none (SlabBins::halo is null).
+class SlabHalo {
+ public:
+  /// `first_slab[r]` .. `first_slab[r + 1]` - 1: the slabs of rank r (every rank at least one).
+  SlabHalo(Communicator& comm, std::vector<int> first_slab, int slab_cells, int reach_below, int reach_above,
+           int node_layers, Index nodes_per_layer);
+
+  Communicator& communicator() const { return *comm_; }
+  int rank() const { return comm_->rank(); }
+  int ranks() const { return comm_->size(); }
+  int slab_count() const { return first_slab_.back(); }
+  const std::vector<int>& first_slab() const { return first_slab_; }
+  /// The rank owning slab s.
+  int owner_of_slab(int slab) const;
+  /// The node layers this rank owns ([first, last)): a node layer belongs to the slab whose cells start at or below
+  /// it (the grid's last layer to the last slab). Sums over nodes (boundary work, reactions) take owned nodes only.
+  std::pair<Index, Index> owned_nodes() const;
+  /// After the scatter of `colour` (0 even slabs, 1 odd): every overlap whose slab of that colour is this rank's is
+  /// sent, every other overlap of this rank received and copied into `arrays`.
+  void exchange(int colour, std::span<const HaloArray> arrays) const;
+  /// Bytes this rank sent in exchanges so far (the halo model's count, docs/distributed.md).
+  std::size_t bytes_sent() const { return bytes_sent_; }
+
+ private:
+  struct Overlap {
+    int peer;         ///< the other rank
+    int colour;       ///< colour of the round after which this rank sends (the other colour: receives)
+    Index first = 0;  ///< nodes [first, end)
+    Index end = 0;
+  };
+  Communicator* comm_;
+  std::vector<int> first_slab_;
+  int slab_cells_;
+  int node_layers_;
+  Index nodes_per_layer_;
+  std::vector<Overlap> overlaps_;  ///< this rank's (at most two)
+  mutable std::vector<std::vector<std::byte>> send_, receive_;
+  mutable std::size_t bytes_sent_ = 0;
+};
+
+}  // namespace mpm

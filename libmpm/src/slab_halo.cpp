@@ -1,0 +1,93 @@
+#include "mpm/slab_halo.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace mpm {
+
+SlabHalo::SlabHalo(Communicator& comm, std::vector<int> first_slab, int slab_cells, int reach_below, int reach_above,
+                   int node_layers, Index nodes_per_layer)
+    : comm_(&comm),
+      first_slab_(std::move(first_slab)),
+      slab_cells_(slab_cells),
+      node_layers_(node_layers),
+      nodes_per_layer_(nodes_per_layer) {
+  const int n = comm.size(), me = comm.rank();
+  if (static_cast<int>(first_slab_.size()) != n + 1) throw std::invalid_argument("SlabHalo: one slab range per rank");
+  for (int r = 0; r < n; ++r)
+    if (first_slab_[r + 1] <= first_slab_[r])
+      throw std::invalid_argument("SlabHalo: rank " + std::to_string(r) + " owns no slab");
+  // The boundary between ranks r and r + 1 is the face of slab S = first_slab[r + 1]; the overlap of the reach of
+  // the slabs S - 1 and S is the node layers [ST - B, ST - 1 + A].
+  for (int r = 0; r + 1 < n; ++r) {
+    if (me != r && me != r + 1) continue;
+    const int S = first_slab_[r + 1];
+    const Index lo = std::max(0, S * slab_cells - reach_below);
+    const Index hi = std::min(node_layers - 1, S * slab_cells - 1 + reach_above);
+    if (lo > hi) continue;
+    Overlap o;
+    o.peer = me == r ? r + 1 : r;
+    const int lower_colour = (S - 1) % 2;  // the colour of slab S - 1, rank r's; slab S has the other
+    o.colour = me == r ? lower_colour : 1 - lower_colour;
+    o.first = lo * nodes_per_layer;
+    o.end = (hi + 1) * nodes_per_layer;
+    overlaps_.push_back(o);
+  }
+  send_.resize(overlaps_.size());
+  receive_.resize(overlaps_.size());
+}
+
+int SlabHalo::owner_of_slab(int slab) const {
+  const auto it = std::upper_bound(first_slab_.begin(), first_slab_.end(), slab);
+  return static_cast<int>(it - first_slab_.begin()) - 1;
+}
+
+std::pair<Index, Index> SlabHalo::owned_nodes() const {
+  const int me = rank();
+  const Index first = static_cast<Index>(first_slab_[me]) * slab_cells_;
+  const Index last_layer =
+      me + 1 == ranks() ? node_layers_ : std::min<Index>(node_layers_, first_slab_[me + 1] * Index{slab_cells_});
+  return {first * nodes_per_layer_, last_layer * nodes_per_layer_};
+}
+
+void SlabHalo::exchange(int colour, std::span<const HaloArray> arrays) const {
+  std::size_t per_node = 0;
+  for (const HaloArray& a : arrays) per_node += a.bytes_per_node;
+  std::vector<Communicator::Outgoing> sends;
+  std::vector<Communicator::Incoming> receives;
+  for (std::size_t k = 0; k < overlaps_.size(); ++k) {
+    const Overlap& o = overlaps_[k];
+    const auto nodes = static_cast<std::size_t>(o.end - o.first);
+    if (o.colour == colour) {
+      auto& buffer = send_[k];
+      buffer.resize(nodes * per_node);
+      std::byte* at = buffer.data();
+      for (const HaloArray& a : arrays) {
+        const std::size_t bytes = nodes * a.bytes_per_node;
+        std::memcpy(at, a.base + static_cast<std::size_t>(o.first) * a.bytes_per_node, bytes);
+        at += bytes;
+      }
+      sends.push_back({o.peer, buffer});
+      bytes_sent_ += buffer.size();
+    } else {
+      receive_[k].resize(nodes * per_node);
+      receives.push_back({o.peer, receive_[k]});
+    }
+  }
+  comm_->exchange(sends, receives);
+  for (std::size_t k = 0; k < overlaps_.size(); ++k) {
+    const Overlap& o = overlaps_[k];
+    if (o.colour == colour) continue;
+    const auto nodes = static_cast<std::size_t>(o.end - o.first);
+    const std::byte* at = receive_[k].data();
+    for (const HaloArray& a : arrays) {
+      const std::size_t bytes = nodes * a.bytes_per_node;
+      std::memcpy(a.base + static_cast<std::size_t>(o.first) * a.bytes_per_node, at, bytes);
+      at += bytes;
+    }
+  }
+}
+
+}  // namespace mpm
