@@ -135,6 +135,7 @@ namespace {
 /// What a .pvtu declares of the pieces' arrays: names, components, component names (not the values).
 std::vector<io::FieldArray> array_layout(const std::vector<io::FieldArray>& fields) {
   std::vector<io::FieldArray> layout;
+  layout.reserve(fields.size());
   for (const auto& f : fields) layout.push_back({f.name, f.components, {}, f.component_names});
   return layout;
 }
