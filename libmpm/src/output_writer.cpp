@@ -6,20 +6,31 @@
 #include <stdexcept>
 
 #include "mpm/due_time.hpp"
+#include "mpm/io/collective_write.hpp"
+#include "mpm/io/pvtu_writer.hpp"
 #include "mpm/particle_domain_mesh.hpp"
 
 namespace mpm {
 
 template <int Dim>
 OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string prefix, std::vector<std::string> fields,
-                                bool grid, Real interval, const StateArchive* restart)
+                                bool grid, Real interval, const StateArchive* restart, Communicator* comm)
     : directory_(std::move(directory)),
       prefix_(std::move(prefix)),
       fields_(std::move(fields)),
       grid_(grid),
       interval_(interval),
-      particles_pvd_(directory_ / (prefix_ + ".pvd")) {
-  std::filesystem::create_directories(directory_);
+      particles_pvd_(directory_ / (prefix_ + ".pvd")),
+      comm_(comm) {
+  if (distributed()) {  // the same arguments on every rank: every rank refuses alike, no reduction needed
+    if (grid_)
+      throw std::invalid_argument(fmt::format(
+          "output.grid: the grid is not written in a distributed run yet ({} ranks); leave output.grid off or "
+          "run on one process",
+          comm_->size()));
+    if (restart)
+      throw std::invalid_argument("OutputWriter: a distributed run cannot continue a checkpoint's output yet");
+  }
   // `domains` is not a point field: the particle domains go to a cell file of their own per frame.
   if (const auto it = std::find(fields_.begin(), fields_.end(), "domains"); it != fields_.end()) {
     fields_.erase(it);
@@ -32,11 +43,16 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
       "total_energy", "momentum_x",    "momentum_y",     "momentum_z",    "mass",
       "plastic_work", "thermal_energy"};
   if (restart) {
+    std::filesystem::create_directories(directory_);
     energy_ =
         std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns, io::load_mark(*restart, "output/energy"));
     restore_state(*restart);
   } else {
-    energy_ = std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns);
+    io::write_collectively(comm_, "creating the output directory '" + directory_.string() + "'", [&] {
+      std::filesystem::create_directories(directory_);
+      if (!distributed() || comm_->rank() == 0)  // the values are global: one table, from rank 0
+        energy_ = std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns);
+    });
   }
 }
 
@@ -70,9 +86,27 @@ bool OutputWriter<Dim>::write_if_due(const Simulation<Dim>& sim) {
 template <int Dim>
 void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
   if (sim.time() == last_written_) return;
+  const io::FieldData data = frame_field_data(sim);
+  if (distributed())
+    write_pieces(sim, data);
+  else
+    write_files(sim, data);
+  last_written_ = sim.time();
+  ++frame_;
+  if (interval_ > 0)
+    next_time_ = next_due_time(next_time_, interval_, sim.time() + 1e-9 * std::max<Real>(1, sim.settings().end_time));
+}
+
+template <int Dim>
+io::FieldData OutputWriter<Dim>::frame_field_data(const Simulation<Dim>& sim) const {
   io::FieldData data = field_data_;  // self-describing files: the run's description, the time and the step
   data.numbers.emplace_back("TIME", sim.time());
   data.numbers.emplace_back("step", static_cast<double>(sim.step()));
+  return data;
+}
+
+template <int Dim>
+void OutputWriter<Dim>::write_files(const Simulation<Dim>& sim, const io::FieldData& data) {
   const std::string name = fmt::format("{}_{:06d}.vtu", prefix_, frame_);
   io::PointCloud cloud = particle_cloud(sim);
   cloud.field_data = data;
@@ -88,37 +122,104 @@ void OutputWriter<Dim>::write(const Simulation<Dim>& sim) {
     domains_pvd_->write();
   }
   if (grid_) {
-    const auto& g = sim.grid();
-    io::ImageGrid image;
-    for (int d = 0; d < Dim; ++d) {
-      image.origin[d] = g.geometry.origin[d];
-      image.spacing[d] = g.geometry.h[d];
-      image.nodes[d] = g.geometry.nodes[d];
-    }
-    io::FieldArray mass{"mass", 1, {}}, velocity{"velocity", 3, {}}, force{"force", 3, {}};
-    for (Index n = 0; n < g.size(); ++n) {
-      mass.values.push_back(g.node[n].mass);
-      append_padded<Dim>(velocity.values, g.velocity[n].mapped);
-      append_padded<Dim>(force.values, g.node[n].force);
-    }
-    if (g.geometry.coordinates == Coordinates::axisymmetric)
-      velocity.component_names = force.component_names = io::cylindrical_component_names(3);
-    image.fields = {mass, velocity, force};
-    image.field_data = data;
-    for (const auto& [name, values] : g.node_fields)  // modules' nodal fields (thermal: temperature)
-      if (static_cast<Index>(values.size()) == g.size()) image.fields.push_back({name, 1, values});
     const std::string grid_name = fmt::format("{}_grid_{:06d}.vti", prefix_, frame_);
-    io::write_vti(directory_ / grid_name, image);
+    io::write_vti(directory_ / grid_name, grid_image(sim, data));
     grid_pvd_->add(sim.time(), directory_ / grid_name);
     grid_pvd_->write();
   }
+  energy_->append(energy_row(sim));
+}
+
+namespace {
+
+/// What a .pvtu declares of the pieces' arrays: names, components, component names (not the values).
+std::vector<io::FieldArray> array_layout(const std::vector<io::FieldArray>& fields) {
+  std::vector<io::FieldArray> layout;
+  layout.reserve(fields.size());
+  for (const auto& f : fields) layout.push_back({f.name, f.components, {}, f.component_names});
+  return layout;
+}
+
+}  // namespace
+
+// Two collective phases, so that a .pvtu and a .pvd entry exist only once every piece does: (1) every rank writes
+// its pieces; (2) rank 0 writes the .pvtu files, the .pvd files and the energy row. A failure on any rank in
+// either phase makes every rank throw (write_collectively).
+template <int Dim>
+void OutputWriter<Dim>::write_pieces(const Simulation<Dim>& sim, const io::FieldData& data) {
+  const std::vector<double> energy = energy_row(sim);  // on every rank: a distributed energy() is a reduction
+  const int rank = comm_->rank();
+  const auto particles_pvtu = directory_ / fmt::format("{}_{:06d}.pvtu", prefix_, frame_);
+  const auto domains_pvtu = directory_ / fmt::format("{}_domains_{:06d}.pvtu", prefix_, frame_);
+  io::PvtuSummary particles, domains;
+  io::write_collectively(comm_, fmt::format("output frame {} ({})", frame_, particles_pvtu.string()), [&] {
+    io::PointCloud cloud = particle_cloud(sim);
+    cloud.field_data = data;
+    const auto piece = io::pvtu_piece_path(particles_pvtu, rank);
+    std::filesystem::create_directories(piece.parent_path());
+    io::write_vtu(piece, cloud);
+    particles.point_fields = array_layout(cloud.fields);
+    if (domains_pvd_) {
+      io::CellMesh mesh = particle_domain_mesh(sim.bodies());
+      mesh.field_data = data;
+      const auto domains_piece = io::pvtu_piece_path(domains_pvtu, rank);
+      std::filesystem::create_directories(domains_piece.parent_path());
+      io::write_cells_vtu(domains_piece, mesh);
+      domains.cell_fields = array_layout(mesh.cell_fields);
+    }
+  });
+  io::write_collectively(comm_, fmt::format("output frame {} (the .pvtu, .pvd and energy.csv)", frame_), [&] {
+    if (rank != 0) return;
+    for (int r = 0; r < comm_->size(); ++r) {
+      particles.pieces.push_back(io::pvtu_piece_path(particles_pvtu, r));
+      domains.pieces.push_back(io::pvtu_piece_path(domains_pvtu, r));
+    }
+    particles.field_data = domains.field_data = data;
+    io::write_pvtu(particles_pvtu, particles);
+    particles_pvd_.add(sim.time(), particles_pvtu);
+    particles_pvd_.write();
+    if (domains_pvd_) {
+      io::write_pvtu(domains_pvtu, domains);
+      domains_pvd_->add(sim.time(), domains_pvtu);
+      domains_pvd_->write();
+    }
+    energy_->append(energy);
+  });
+}
+
+template <int Dim>
+io::ImageGrid OutputWriter<Dim>::grid_image(const Simulation<Dim>& sim, const io::FieldData& data) const {
+  const auto& g = sim.grid();
+  io::ImageGrid image;
+  for (int d = 0; d < Dim; ++d) {
+    image.origin[d] = g.geometry.origin[d];
+    image.spacing[d] = g.geometry.h[d];
+    image.nodes[d] = g.geometry.nodes[d];
+  }
+  io::FieldArray mass{"mass", 1, {}}, velocity{"velocity", 3, {}}, force{"force", 3, {}};
+  for (Index n = 0; n < g.size(); ++n) {
+    mass.values.push_back(g.node[n].mass);
+    append_padded<Dim>(velocity.values, g.velocity[n].mapped);
+    append_padded<Dim>(force.values, g.node[n].force);
+  }
+  if (g.geometry.coordinates == Coordinates::axisymmetric)
+    velocity.component_names = force.component_names = io::cylindrical_component_names(3);
+  image.fields = {mass, velocity, force};
+  image.field_data = data;
+  for (const auto& [name, values] : g.node_fields)  // modules' nodal fields (thermal: temperature)
+    if (static_cast<Index>(values.size()) == g.size()) image.fields.push_back({name, 1, values});
+  return image;
+}
+
+template <int Dim>
+std::vector<double> OutputWriter<Dim>::energy_row(const Simulation<Dim>& sim) const {
   const EnergyBalance e = sim.energy();
-  energy_->append({sim.time(), static_cast<double>(sim.step()), e.kinetic, e.strain, e.gravity, e.total(),
-                   e.momentum[0], e.momentum[1], e.momentum[2], e.mass, e.plastic_work, e.thermal});
-  last_written_ = sim.time();
-  ++frame_;
-  if (interval_ > 0)
-    next_time_ = next_due_time(next_time_, interval_, sim.time() + 1e-9 * std::max<Real>(1, sim.settings().end_time));
+  return {sim.time(),     static_cast<double>(sim.step()),
+          e.kinetic,      e.strain,
+          e.gravity,      e.total(),
+          e.momentum[0],  e.momentum[1],
+          e.momentum[2],  e.mass,
+          e.plastic_work, e.thermal};
 }
 
 template class OutputWriter<1>;

@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <sstream>
+#include <stdexcept>
 
 #include "mpm/output_writer.hpp"
 
@@ -52,6 +53,8 @@ int frame_number(const std::string& name, const std::string& prefix) {
 
 template <int Dim>
 void OutputWriter<Dim>::save_state(StateArchive& archive) const {
+  if (distributed())
+    throw std::logic_error("OutputWriter::save_state: a distributed run's output is not checkpointed yet");
   archive.put_integer("output/frame", frame_);
   archive.put_number("output/interval", interval_);
   archive.put_number("output/next_time", next_time_);

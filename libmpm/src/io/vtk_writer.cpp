@@ -63,12 +63,8 @@ vtkSmartPointer<vtkDoubleArray> to_vtk(const FieldArray& f) {
   a->SetNumberOfComponents(f.components);
   a->SetNumberOfTuples(static_cast<vtkIdType>(f.values.size() / static_cast<std::size_t>(f.components)));
   std::copy(f.values.begin(), f.values.end(), a->GetPointer(0));
-  if (static_cast<int>(f.component_names.size()) == f.components) {
-    for (int c = 0; c < f.components; ++c) a->SetComponentName(c, f.component_names[c].c_str());
-  } else if (f.components == 6) {
-    static const char* const names[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
-    for (int c = 0; c < 6; ++c) a->SetComponentName(c, names[c]);
-  }
+  const std::vector<std::string> names = written_component_names(f);
+  for (std::size_t c = 0; c < names.size(); ++c) a->SetComponentName(static_cast<vtkIdType>(c), names[c].c_str());
   return a;
 }
 
@@ -199,6 +195,12 @@ void write_vti(const std::filesystem::path& path, const ImageGrid& grid) {
   vtkNew<vtkXMLImageDataWriter> writer;
   writer->SetInputData(image);
   write_xml(where, path, writer.Get());
+}
+
+std::vector<std::string> written_component_names(const FieldArray& field) {
+  if (static_cast<int>(field.component_names.size()) == field.components) return field.component_names;
+  if (field.components == 6) return {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
+  return {};
 }
 
 std::vector<std::string> cylindrical_component_names(int components) {

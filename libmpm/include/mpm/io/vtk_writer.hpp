@@ -24,6 +24,10 @@ struct FieldArray {
   std::vector<std::string> component_names = {};
 };
 
+/// The component names a written file gives `field`: its component_names when there is one per component, else
+/// XX YY ZZ XY YZ XZ for 6 components, else none (VTK's defaults). The .pvtu summary repeats them (pvtu_writer.hpp).
+std::vector<std::string> written_component_names(const FieldArray& field);
+
 /// The components of a 3-vector (r z theta), a symmetric tensor (rr zz thetatheta rz ztheta rtheta) or a 3x3
 /// tensor by rows (rr rz rtheta zr zz ztheta thetar thetaz thetatheta) in the cylindrical axes of an axisymmetric
 /// run (x = r, y = z, out of plane = theta); empty for other component counts.
