@@ -190,14 +190,15 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
       fmt::print(log, "restart: removed {} later checkpoint(s) of the interrupted run from {}\n", removed,
                  checkpoints.directory().string());
   }
-  OutputWriter<Dim> writer(directory, o.prefix, o.fields, o.grid, o.interval, restart ? &restart->archive : nullptr);
+  OutputWriter<Dim> writer(directory, o.prefix, o.fields, o.grid, o.interval, restart ? &restart->archive : nullptr,
+                           comm);  // a distributed run: a piece per rank and a .pvtu per frame
   HistoryWriter<Dim> histories(writer.directory(), std::move(built_histories), restart ? &restart->archive : nullptr);
   writer.set_field_data(run_field_data(scene, overrides(options)));  // self-describing files
   // The scheme's own per-step table (the implicit scheme's solver.csv), one row per step. A restart starts it anew.
   std::unique_ptr<io::CsvLog> step_log;
   if (const std::string_view file = sim->scheme().step_log_file(); !file.empty())
     step_log = std::make_unique<io::CsvLog>(writer.directory() / std::string(file), sim->scheme().step_log_columns());
-  io::write_view_script(writer.directory() / "view.py", view_script_for(scene));
+  if (!comm || comm->rank() == 0) io::write_view_script(writer.directory() / "view.py", view_script_for(scene));
   summary.particles = static_cast<std::size_t>(sim->particle_count());
   if (comm) {  // every rank's
     std::array<std::int64_t, 1> count{static_cast<std::int64_t>(summary.particles)};
