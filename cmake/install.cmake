@@ -58,5 +58,5 @@ if(MPM_BUILD_TESTS)
     -DPYTHON_DIR=${MPM_PYTHON_INSTALL_DIR} -DVERSION=${PROJECT_VERSION} -DCXX=${CMAKE_CXX_COMPILER}
     -P ${PROJECT_SOURCE_DIR}/tests/install/check_install.cmake)
   # label install: not in `ctest -L unit` (the sanitizer build of `scripts/setup.sh sanitize` builds no package)
-  set_tests_properties(install_tree PROPERTIES LABELS install TIMEOUT 300)
+  set_tests_properties(install_tree PROPERTIES LABELS install TIMEOUT 300 COST 16)  # COST: tests/test_costs.cmake
 endif()
