@@ -78,7 +78,6 @@ TEST(Apic, SpinningDiskKeepsAngularMomentum) {
   EXPECT_LT(e.momentum.norm(), 1e-10 * e.mass);  // linear momentum stays zero
 }
 
-
 template <class Shape>
 int st_index(const Stencil<2, Shape>& st, Index n) {
   for (int a = 0; a < st.count; ++a)
@@ -118,8 +117,8 @@ void check_light_node(Real half_length, Real reduction) {
   const Mat<2> with_rule = kernels::affine_matrix_of_trial(st, node.data(), 1.0, v_p, velocity);
   const Mat<2> without = kernels::affine_matrix(st, velocity);
   const Real error_with = (with_rule - A).norm(), error_without = (without - A).norm();
-  std::printf("[ measured ] light node, phi_I = %.3g: |C - A| = %.3g with the rule, %.3g without\n", st.w[far], error_with,
-              error_without);
+  std::printf("[ measured ] light node, phi_I = %.3g: |C - A| = %.3g with the rule, %.3g without\n", st.w[far],
+              error_with, error_without);
   EXPECT_LT(error_with, reduction * error_without);
 }
 
