@@ -21,11 +21,12 @@ constexpr std::array<EnergyHint, 8> rows{{
      [](const HintContext& c) { return c.transfer == VelocityTransfer::apic && is_linear(c); },
      "APIC with linear hats runs on free surfaces with MUSL and USF (the re-map takes C_p from the trial "
      "velocities, a nearly empty node enters C_p without its gradient); with USL a particle next to a nearly "
-     "empty node inverts F as with FLIP: use `scheme: musl` or `usf`. APIC itself loses energy (grid-scale "
-     "modes), it does not gain it",
-     "the dam break (examples/12) with APIC and hats, to 1.7 s: energy change -4.85% (MUSL), -5.02% (USF), no "
-     "density warning; USL inverts a particle at 0.065 s, FLIP with USL at 0.066 s; before the fix MUSL inverted "
-     "at 0.093 s, USF at 0.068 s (physics/fluids/README.md, Limits)"},
+     "empty node inverts F as with FLIP: use `scheme: musl` or `usf`. APIC itself loses energy (the non-affine "
+     "modes, at every transfer), it does not gain it",
+     "the dam break (examples/12) with APIC and hats, to 1.7 s: energy change -4.85% (MUSL), -5.02% (USF), never "
+     "above E0; at 35/140/280 cells instead of 70 (MUSL): -13.4%/-2.80%/-3.23%, density warnings only at the wall "
+     "impact; USL inverts a particle at 0.065 s, FLIP with USL at 0.066 s; before the fix MUSL inverted at 0.093 s, "
+     "USF at 0.068 s (physics/fluids/README.md, Limits)"},
     {"USL (any shape function)", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.scheme == SchemeKind::usl; },
      "USL is the least stable explicit scheme here: use `scheme: musl` (or usf), or a smaller `cfl`",

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "mpm/scene_error.hpp"
+#include "mpm/schemes/transfer_kernels.hpp"
+#include "mpm/shape/linear_hat.hpp"
 #include "scene_fixture.hpp"
 
 namespace mpm {
@@ -75,6 +77,52 @@ TEST(Apic, SpinningDiskKeepsAngularMomentum) {
   const auto e = apic->energy();
   EXPECT_LT(e.momentum.norm(), 1e-10 * e.mass);  // linear momentum stays zero
 }
+
+template <class Shape>
+int st_index(const Stencil<2, Shape>& st, Index n) {
+  for (int a = 0; a < st.count; ++a)
+    if (st.node[a] == n) return a;
+  return -1;
+}
+
+// A nearly empty node in C_p from the trial velocities (kernels::affine_matrix_of_trial; docs/theory.md §2, velocity
+// transfers). The nodes of a particle's stencil carry the affine field v = A x + b, except one far node, lighter than
+// 0.1 m_p, which carries the wild trial velocity dt f_I / m_I of a nearly empty node (here 1e3 m/s). The particle sits
+// 0.1 cell from the node opposite (weight of the light node 0.01). Reference: without the rule (kernels::affine_matrix)
+// C_p = sum v_I (x) grad phi_I takes the wild velocity with the weight grad phi_I = 0.1 / h per axis (|C - A| = 200 1/s
+// measured); with it the error is the light node's share of v_p, phi_I 1e3 m/s, times grad phi_I (measured 2.03 1/s).
+// Bound: a hundredth of the error without the rule, with 1.5 times the measured margin.
+template <class Shape>
+void check_light_node(Real half_length, Real reduction) {
+  const GridGeometry<2> g(Vec<2>(0, 0), Vec<2>(1, 1), {8, 8});
+  Mat<2> A;
+  A << 0.2, -0.1, 0.3, 0.1;
+  const Vec<2> b(0.05, -0.02), x_p(3.1, 3.1);
+  Stencil<2, Shape> st;
+  st.compute(x_p, g, Vec<2>::Constant(half_length));
+  NodeRecord<2> heavy;
+  heavy.mass = 1.0;  // m_p = 1: every node heavy
+  heavy.momentum = heavy.force = Vec<2>::Zero();
+  std::vector<NodeRecord<2>> node(g.node_count(), heavy);
+  int far = 0;  // the stencil node farthest up and right of the particle: the light one
+  for (int a = 1; a < st.count; ++a)
+    if (st.node_offset(a).sum() > st.node_offset(far).sum()) far = a;
+  node[st.node[far]].mass = 0.01;
+  const Vec<2> wild(1e3, -1e3);
+  auto velocity = [&](Index n) {
+    return n == st.node[far] ? wild : Vec<2>(A * (x_p + st.node_offset(st_index(st, n))) + b);
+  };
+  Vec<2> v_p = Vec<2>::Zero();  // the PIC velocity, light node included (as the schemes pass it)
+  for (int a = 0; a < st.count; ++a) v_p += st.w[a] * velocity(st.node[a]);
+  const Mat<2> with_rule = kernels::affine_matrix_of_trial(st, node.data(), 1.0, v_p, velocity);
+  const Mat<2> without = kernels::affine_matrix(st, velocity);
+  const Real error_with = (with_rule - A).norm(), error_without = (without - A).norm();
+  std::printf("[ measured ] light node, phi_I = %.3g: |C - A| = %.3g with the rule, %.3g without\n", st.w[far],
+              error_with, error_without);
+  EXPECT_LT(error_with, reduction * error_without);
+}
+
+TEST(Apic, LightNodeLeavesTrialAffineMatrixLinear) { check_light_node<LinearHat>(0, 0.015); }
 
 TEST(Apic, RefusedWithTlmpm) {
   EXPECT_THROW(
