@@ -76,7 +76,16 @@ int main(int argc, char** argv) {
   auto* run_cmd = cli.add_subcommand("run", "run a scene and write .vtu/.pvd/energy.csv output");
   run_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
   run_cmd->add_option("-o,--output", output_dir, "output directory (overrides output.directory)");
-  run_cmd->add_option("--threads", threads, "number of threads (default: all cores)")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--threads", threads,
+                      "number of threads (default: all cores; under mpirun: per rank, the node's cores shared by its "
+                      "ranks)")
+      ->check(CLI::PositiveNumber);
+  int rebalance_every = 50;
+  run_cmd
+      ->add_option("--rebalance-every", rebalance_every,
+                   "under mpirun: steps between balance checks; the slabs are dealt anew when the most loaded rank "
+                   "exceeds the mean by more than 10% (0: never; results do not depend on it)")
+      ->check(CLI::NonNegativeNumber);
   run_cmd->add_flag("--profile", profile,
                     "time the phases of every step (P2G, grid update, G2P, stress update, output, other) and print "
                     "the breakdown at the end");
@@ -230,6 +239,7 @@ int main(int argc, char** argv) {
     options.progress = rank == 0 && isatty(STDERR_FILENO);
     options.communicator = world;
     options.profile = profile;
+    options.rebalance_every = rebalance_every;
     if (steps_opt->count() > 0) options.steps = steps;
     if (end_time_opt->count() > 0) options.end_time = end_time;
     if (!restart.empty()) options.restart = restart;

@@ -147,6 +147,7 @@ void distribute(const SceneDescription& scene, const RunOptions& options, Simula
   if (scene.output.checkpoint.interval || scene.output.checkpoint.wall_interval || options.restart)
     refuse("a checkpoint or a restart");
   if (scene.output.grid) refuse("output.grid (the grid is not gathered from the ranks)");
+  sim.set_rebalance_interval(options.rebalance_every);
   try {
     sim.distribute(options.communicator);
   } catch (const std::invalid_argument& e) {

@@ -230,6 +230,7 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) const {
   if (!comm_) return;
   ctx.comm = comm_.get();
   ctx.owned_nodes = halo_->owned_nodes();
+  ctx.active_nodes = halo_->reached_nodes();
 }
 
 #define MPM_SIMULATION_DISTRIBUTED(D)                                                  \

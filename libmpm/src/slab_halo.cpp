@@ -1,6 +1,7 @@
 #include "mpm/slab_halo.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -37,6 +38,9 @@ SlabHalo::SlabHalo(Communicator& comm, std::vector<int> first_slab, int slab_cel
   }
   send_.resize(overlaps_.size());
   receive_.resize(overlaps_.size());
+  const Index first_layer = std::max(0, first_slab_[me] * slab_cells - reach_below);
+  const Index end_layer = std::min(node_layers, first_slab_[me + 1] * slab_cells + reach_above);
+  reached_ = {first_layer * nodes_per_layer, end_layer * nodes_per_layer};
 }
 
 int SlabHalo::owner_of_slab(int slab) const {
@@ -53,6 +57,7 @@ std::pair<Index, Index> SlabHalo::owned_nodes() const {
 }
 
 void SlabHalo::exchange(int colour, std::span<const HaloArray> arrays) const {
+  const auto start = std::chrono::steady_clock::now();
   std::size_t per_node = 0;
   for (const HaloArray& a : arrays) per_node += a.bytes_per_node;
   std::vector<Communicator::Outgoing> sends;
@@ -88,6 +93,7 @@ void SlabHalo::exchange(int colour, std::span<const HaloArray> arrays) const {
       at += bytes;
     }
   }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace mpm

@@ -56,8 +56,13 @@ class SlabHalo {
   /// After the scatter of `colour` (0 even slabs, 1 odd): every overlap whose slab of that colour is this rank's is
   /// sent, every other overlap of this rank received and copied into `arrays`.
   void exchange(int colour, std::span<const HaloArray> arrays) const;
+  /// The nodes this rank's particles can reach, [first, end): its slabs' reach. The grid kernels reset and update
+  /// only these (a rank's grid outside them is never read).
+  std::pair<Index, Index> reached_nodes() const { return reached_; }
   /// Bytes this rank sent in exchanges so far (the halo model's count, docs/distributed.md).
   std::size_t bytes_sent() const { return bytes_sent_; }
+  /// Wall seconds spent in exchanges so far (waiting for the other ranks included).
+  double seconds() const { return seconds_; }
 
  private:
   struct Overlap {
@@ -73,7 +78,9 @@ class SlabHalo {
   Index nodes_per_layer_;
   std::vector<Overlap> overlaps_;  ///< this rank's (at most two)
   mutable std::vector<std::vector<std::byte>> send_, receive_;
+  std::pair<Index, Index> reached_;
   mutable std::size_t bytes_sent_ = 0;
+  mutable double seconds_ = 0;
 };
 
 }  // namespace mpm

@@ -51,6 +51,9 @@ struct StepContext {
   Communicator* comm = nullptr;
   /// The nodes this rank owns, [first, end): every node in one process.
   std::pair<Index, Index> owned_nodes{0, std::numeric_limits<Index>::max()};
+  /// The nodes this rank's particles can reach, [first, end) (SlabHalo::reached_nodes): the grid kernels reset and
+  /// update only these. Every node in one process.
+  std::pair<Index, Index> active_nodes{0, std::numeric_limits<Index>::max()};
 };
 
 }  // namespace mpm

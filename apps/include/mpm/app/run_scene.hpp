@@ -38,6 +38,8 @@ struct RunOptions {
   /// distributed over them (Simulation::distribute), and what cannot run on several ranks yet is refused
   /// (RankCountError, exit status 2, on every rank alike).
   std::shared_ptr<Communicator> communicator;
+  /// Distributed run: steps between balance checks (`--rebalance-every`; SimulationSettings::rebalance_interval).
+  int rebalance_every = 50;
 };
 
 struct RunSummary {

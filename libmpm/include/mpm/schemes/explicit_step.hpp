@@ -23,14 +23,14 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
       bin_by_slab(body.particles, g, Shape::slab_cells, body.bins);
       if (body.bins.outside >= 0) ctx.guard_tripped = true;
     }
-    reset_grid(ctx.grid);
+    reset_grid(ctx.grid, ctx.active_nodes);
     reset_own_grids(ctx.bodies);
     for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape, true, true, Coords>(body, ctx.grid);
   }
   PhaseTimer timer(ctx.profile, StepPhase::grid_update);
   if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(ctx.grid.node, ctx.time);
   ctx.hooks.after_p2g(ctx);
-  update_grid_velocity(ctx.grid, ctx.settings, ctx.dt);
+  update_grid_velocity(ctx.grid, ctx.settings, ctx.dt, ctx.active_nodes);
   if (!ctx.boundary.empty()) {
     ctx.boundary.apply(ctx.grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
     ctx.boundary.apply(ctx.grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);

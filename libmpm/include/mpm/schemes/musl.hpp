@@ -21,9 +21,9 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     kernels::map_and_update_grid<Dim, Shape, Coords>(ctx);
     {
       PhaseTimer timer(ctx.profile, StepPhase::p2g);  // the second mapping (with the particle velocity update)
-      clear_momentum(ctx.grid);
+      clear_momentum(ctx.grid, ctx.active_nodes);
       for (auto& body : ctx.bodies)
-        if (body.own_grid) clear_momentum(*body.own_grid);
+        if (body.own_grid) clear_momentum(*body.own_grid, ctx.active_nodes);
       for (auto& body : ctx.bodies) update_velocity_and_remap(body, ctx);
     }
     {
@@ -36,8 +36,8 @@ class Musl final : public ShapedScheme<Dim, Shape> {
   }
 
  private:
-  static void clear_momentum(Grid<Dim>& grid) {
-    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 14), [&](const auto& r) {
+  static void clear_momentum(Grid<Dim>& grid, std::pair<Index, Index> range) {
+    tbb::parallel_for(kernels::node_range(grid, range, 1 << 14), [&](const auto& r) {
       for (Index i = r.begin(); i != r.end(); ++i) grid.node[i].momentum.setZero();
     });
   }
@@ -90,7 +90,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
   static void remapped_velocity(StepContext<Dim>& ctx) {
     auto& grid = ctx.grid;
     const Real cutoff = ctx.settings.mass_cutoff;
-    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+    tbb::parallel_for(kernels::node_range(grid, ctx.active_nodes, 1 << 12), [&](const auto& r) {
       for (Index i = r.begin(); i != r.end(); ++i) {
         const NodeRecord<Dim>& n = grid.node[i];
         if (n.mass > cutoff)

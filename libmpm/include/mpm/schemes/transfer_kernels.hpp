@@ -6,8 +6,11 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <utility>
 #include <type_traits>
 
 #include "mpm/axisymmetric.hpp"
@@ -18,10 +21,16 @@
 
 namespace mpm::kernels {
 
-/// Zeroes mass, momentum and force of every node.
+/// The nodes [first, end) of `range` that exist in `grid` (StepContext::active_nodes: all in one process).
 template <int Dim>
-void reset_grid(Grid<Dim>& grid) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 14), [&](const auto& r) {
+tbb::blocked_range<Index> node_range(const Grid<Dim>& grid, std::pair<Index, Index> range, Index grain) {
+  return {std::min(range.first, grid.size()), std::min(range.second, grid.size()), static_cast<std::size_t>(grain)};
+}
+
+/// Zeroes mass, momentum and force of every node (of `range`: a distributed run's reached nodes).
+template <int Dim>
+void reset_grid(Grid<Dim>& grid, std::pair<Index, Index> range = {0, std::numeric_limits<Index>::max()}) {
+  tbb::parallel_for(node_range(grid, range, 1 << 14), [&](const auto& r) {
     std::memset(static_cast<void*>(grid.node.data() + r.begin()), 0, sizeof(NodeRecord<Dim>) * r.size());
   });
 }
@@ -171,8 +180,9 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
 /// Nodal velocities before and after the momentum update (eqs 2.49-2.50 with the cut-off 2.63):
 /// mapped = (mv)/m, updated = (mv + dt (f + m g))/m. Nodes lighter than the cut-off get zero.
 template <int Dim>
-void update_grid_velocity(Grid<Dim>& grid, const TransferSettings<Dim>& s, Real dt) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
+void update_grid_velocity(Grid<Dim>& grid, const TransferSettings<Dim>& s, Real dt,
+                          std::pair<Index, Index> range = {0, std::numeric_limits<Index>::max()}) {
+  tbb::parallel_for(node_range(grid, range, 1 << 12), [&](const auto& r) {
     for (Index i = r.begin(); i != r.end(); ++i) {
       const NodeRecord<Dim>& n = grid.node[i];
       NodeVelocity<Dim>& v = grid.velocity[i];

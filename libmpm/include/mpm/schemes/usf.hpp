@@ -27,13 +27,13 @@ class Usf final : public ShapedScheme<Dim, Shape> {
         bin_by_slab(body.particles, grid.geometry, Shape::slab_cells, body.bins);
         if (body.bins.outside >= 0) ctx.guard_tripped = true;
       }
-      kernels::reset_grid(grid);
+      kernels::reset_grid(grid, ctx.active_nodes);
       kernels::reset_own_grids(ctx.bodies);
       for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, true, false, Coords>(body, grid);
     }
     {
       PhaseTimer timer(ctx.profile, StepPhase::grid_update);
-      kernels::update_grid_velocity(grid, ctx.settings, ctx.dt);  // mapped = v^t (the force is still zero)
+      kernels::update_grid_velocity(grid, ctx.settings, ctx.dt, ctx.active_nodes);  // mapped = v^t (force still 0)
       if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
       ctx.hooks.grid_velocity(ctx, GridStage::mapped);
     }
