@@ -1,4 +1,4 @@
-// Distributed runs give the bits of one process (issue 18, docs/distributed.md §4). Started by ctest under
+// Distributed runs give the bits of one process (issue 18, docs/distributed.md §5). Started by ctest under
 // `mpirun -np K` (K = 2..4) with `--threads T`: every rank builds the same scene, the ranks run it distributed
 // (Simulation::distribute), rank 0 also runs it alone; after every step the energy audit (the values energy.csv
 // prints) and the time must be byte-equal, and at the end every particle of every body (all its fields, found by
