@@ -76,9 +76,10 @@ int main(int argc, char** argv) {
   auto* run_cmd = cli.add_subcommand("run", "run a scene and write .vtu/.pvd/energy.csv output");
   run_cmd->add_option("scene", scene_file, "scene file (YAML)")->required();
   run_cmd->add_option("-o,--output", output_dir, "output directory (overrides output.directory)");
-  run_cmd->add_option("--threads", threads,
-                      "number of threads (default: all cores; under mpirun: per rank, the node's cores shared by its "
-                      "ranks)")
+  run_cmd
+      ->add_option("--threads", threads,
+                   "number of threads (default: all cores; under mpirun: per rank, the node's cores shared by its "
+                   "ranks)")
       ->check(CLI::PositiveNumber);
   int rebalance_every = 50;
   run_cmd

@@ -52,7 +52,8 @@ std::string parallel_launch_refusal(const ParallelLaunch& launch) {
   return fmt::format(
       "mpm was started as {} processes ({}={}), but it was built without MPI: a scene runs in one process, "
       "and {} copies would each compute the whole scene and overwrite each other's output (rebuild with "
-      "libopenmpi-dev installed for distributed runs). Start one process and give it the cores: mpm run SCENE --threads N",
+      "libopenmpi-dev installed for distributed runs). Start one process and give it the cores: mpm run SCENE "
+      "--threads N",
       launch.size, launch.variable, launch.size, launch.size);
 }
 

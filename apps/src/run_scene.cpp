@@ -140,8 +140,8 @@ template <int Dim>
 void distribute(const SceneDescription& scene, const RunOptions& options, Simulation<Dim>& sim) {
   const int ranks = options.communicator->size();
   auto refuse = [&](const std::string& what) {
-    throw RankCountError(fmt::format("{}: {} does not run on several ranks yet (issue 18); start one process", scene.file,
-                                     what));
+    throw RankCountError(
+        fmt::format("{}: {} does not run on several ranks yet (issue 18); start one process", scene.file, what));
   };
   if (!scene.output.histories.empty()) refuse("output.histories (their sums are not reduced over the ranks)");
   if (scene.output.checkpoint.interval || scene.output.checkpoint.wall_interval || options.restart)
@@ -169,8 +169,8 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   }
   const StopSignals stop_signals;  // SIGINT, SIGTERM, SIGUSR1: stop after the current step
   auto sim = build_simulation<Dim>(scene);
-  Communicator* const comm = options.communicator && options.communicator->size() > 1 ? options.communicator.get()
-                                                                                       : nullptr;
+  Communicator* const comm =
+      options.communicator && options.communicator->size() > 1 ? options.communicator.get() : nullptr;
   if (comm) distribute(scene, options, *sim);
   RunSummary summary;
   auto built_histories = build_histories<Dim>(scene, *sim, summary.warnings);  // output.histories
@@ -296,6 +296,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     if (s.step() % 50 == 0) check_state(s);
     if (checkpoints.due(s.time())) write_checkpoint(s);
     debug_raise_at_step(s.step());
+    debug_fail_at_step(comm ? comm->rank() : 0, s.step());
     // A signal reaches the ranks at different steps: all stop after the step where any one received it.
     if (comm ? comm->any(StopSignals::requested() != 0) : StopSignals::requested() != 0) throw StopRequested{};
     if (!options.progress) return;

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 namespace mpm::app {
@@ -67,6 +68,19 @@ const char* signal_name(int signal) {
     default:
       return "a signal";
   }
+}
+
+}  // namespace mpm::app
+
+namespace mpm::app {
+
+void debug_fail_at_step(int rank, long long step) {
+  static const char* spec = std::getenv("MPM_DEBUG_FAIL_AT_STEP");
+  if (!spec) return;
+  const char* colon = std::strchr(spec, ':');
+  if (!colon || std::atoi(spec) != rank || std::atoll(colon + 1) != step) return;
+  throw std::runtime_error("debug failure of rank " + std::to_string(rank) + " after step " + std::to_string(step) +
+                           " (MPM_DEBUG_FAIL_AT_STEP)");
 }
 
 }  // namespace mpm::app

@@ -89,8 +89,7 @@ void MpiCommunicator::exchange(std::span<const Outgoing> sends, std::span<const 
   for (const Incoming& in : receives)
     MPI_Irecv(in.bytes.data(), message_size(in.bytes.size()), MPI_BYTE, in.peer, halo_tag, comm_, &requests[k++]);
   for (const Outgoing& out : sends)
-    MPI_Isend(out.bytes.data(), message_size(out.bytes.size()), MPI_BYTE, out.peer, halo_tag, comm_,
-              &requests[k++]);
+    MPI_Isend(out.bytes.data(), message_size(out.bytes.size()), MPI_BYTE, out.peer, halo_tag, comm_, &requests[k++]);
   MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }
 

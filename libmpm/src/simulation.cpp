@@ -141,8 +141,12 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   ++step_;
   if (comm_) {
     PhaseTimer timer(ctx.profile, StepPhase::migrate);
-    migrate();
-    if (settings_.rebalance_interval > 0 && step_ % settings_.rebalance_interval == 0) rebalance();
+    // TLMPM's particles belong to the rank of their reference position: they never migrate, its balance never
+    // decays.
+    if (scheme_->reorders_particles()) {
+      migrate();
+      if (settings_.rebalance_interval > 0 && step_ % settings_.rebalance_interval == 0) rebalance();
+    }
   }
 }
 
@@ -207,7 +211,10 @@ void Simulation<Dim>::roll_back_to_previous_step() {
   time_ = snapshot_.time;
   step_ = snapshot_.step;
   wave_speed_ = snapshot_.wave_speed;
-  if (halo_) use_slabs(snapshot_.first_slab);
+  if (halo_) {  // the slabs' owners of the snapshot's time; a scheme's per-particle caches follow the particles
+    use_slabs(snapshot_.first_slab);
+    scheme_->particles_redistributed(bodies_, grid_);
+  }
   for (const auto& m : hooks_.all()) m->restore_state(snapshot_.modules, module_prefix(*m));
   for (Real dt : replay) take_step(dt);
   take_snapshot();
@@ -221,7 +228,10 @@ bool Simulation<Dim>::replay_failure(const std::function<void(const Simulation&)
   time_ = start.time;
   step_ = start.step;
   wave_speed_ = start.wave_speed;
-  if (halo_) use_slabs(start.first_slab);
+  if (halo_) {
+    use_slabs(start.first_slab);
+    scheme_->particles_redistributed(bodies_, grid_);
+  }
   for (const auto& m : hooks_.all()) m->restore_state(start.modules, module_prefix(*m));
   if (after_step) after_step(*this);
   for (std::size_t k = 0; k < start.dts_since.size(); ++k) {

@@ -29,19 +29,11 @@ int slab_of(const VecU<Dim>& x, const GridGeometry<Dim>& g, int slab_cells) {
   return cell / slab_cells;
 }
 
-/// Contiguous runs of slabs, one per rank, each at least one slab, cutting the cost prefix at equal shares.
-std::vector<int> cut_slabs(const std::vector<double>& cost, int ranks) {
-  const int slabs = static_cast<int>(cost.size());
-  std::vector<double> prefix(slabs + 1, 0);
-  for (int s = 0; s < slabs; ++s) prefix[s + 1] = prefix[s] + cost[s];
-  std::vector<int> first(ranks + 1, 0);
-  first[ranks] = slabs;
-  for (int r = 1; r < ranks; ++r) {
-    const double target = prefix[slabs] * r / ranks;
-    int s = static_cast<int>(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
-    first[r] = std::clamp(s, first[r - 1] + 1, slabs - (ranks - r));
-  }
-  return first;
+/// The positions particles are assigned to ranks by: the scheme's (TLMPM: reference) or the current ones.
+template <int Dim>
+const VecU<Dim>* owner_positions(const Scheme<Dim>& scheme, const ParticleSet<Dim>& p) {
+  const VecU<Dim>* x = scheme.ownership_positions(p);
+  return x ? x : p.x.data();
 }
 
 }  // namespace
@@ -52,8 +44,8 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
   if (step_ != 0 || comm_) throw std::logic_error("Simulation::distribute: call once, before the first step");
   if (!scheme_->runs_distributed())
     throw std::invalid_argument(fmt::format(
-        "scheme '{}' does not run on several ranks yet (distributed runs take usl, musl and usf, issue 18); run it "
-        "in one process",
+        "scheme '{}' does not run on several ranks yet (distributed runs take usl, musl, usf and tlmpm, issue 18); "
+        "run it in one process",
         scheme_->name()));
   for (const auto& m : hooks_.all())
     if (!m->runs_distributed())
@@ -82,11 +74,13 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
   const int me = comm_->rank();
   for (auto& b : bodies_) {
     auto& p = b.particles;
+    const VecU<Dim>* x = owner_positions(*scheme_, p);
     std::vector<Index> keep;
     for (Index i = 0; i < p.size(); ++i)
-      if (halo_->owner_of_slab(slab_of<Dim>(p.x[i], g, T)) == me) keep.push_back(i);
+      if (halo_->owner_of_slab(slab_of<Dim>(x[i], g, T)) == me) keep.push_back(i);
     p.gather(keep);
   }
+  scheme_->particles_redistributed(bodies_, grid_);
   take_snapshot();
 }
 
@@ -96,13 +90,13 @@ std::vector<double> Simulation<Dim>::slab_costs() const {
   const int T = scheme_->slab_cells();
   const int slabs = (g.cells(Dim - 1) + T - 1) / T;
   std::vector<std::int64_t> count(slabs, 0);
-  for (const auto& b : bodies_)
-    for (Index i = 0; i < b.particles.size(); ++i) ++count[slab_of<Dim>(b.particles.x[i], g, T)];
+  for (const auto& b : bodies_) {
+    const VecU<Dim>* x = owner_positions(*scheme_, b.particles);
+    for (Index i = 0; i < b.particles.size(); ++i) ++count[slab_of<Dim>(x[i], g, T)];
+  }
   if (halo_) comm_->sum(count);  // before distribute() every rank holds every particle
-  // Cost of a slab: its particles, plus its nodes at a tenth of a particle (the grid update and reset).
   std::vector<double> cost(slabs);
-  const double nodes = static_cast<double>(g.stride[Dim - 1]) * T;
-  for (int s = 0; s < slabs; ++s) cost[s] = static_cast<double>(count[s]) + 0.1 * nodes;
+  for (int s = 0; s < slabs; ++s) cost[s] = slab_cost(count[s], g.stride[Dim - 1], T);
   return cost;
 }
 
@@ -131,6 +125,7 @@ void Simulation<Dim>::rebalance() {
 template <int Dim>
 void Simulation<Dim>::use_slabs(const std::vector<int>& first_slab) {
   if (first_slab == halo_->first_slab()) return;
+  halo_bytes_before_ += halo_->bytes_sent();
   const auto [below, above] = scheme_->slab_reach();
   const auto& g = grid_.geometry;
   halo_ = std::make_unique<SlabHalo>(*comm_, first_slab, scheme_->slab_cells(), below, above, g.nodes[Dim - 1],
@@ -142,21 +137,23 @@ template <int Dim>
 void Simulation<Dim>::reassign_slabs(std::vector<int> first_slab) {
   if (!halo_) return;
   use_slabs(first_slab);
-  migrate();
+  if (migrate()) scheme_->particles_redistributed(bodies_, grid_);
 }
 
 template <int Dim>
-void Simulation<Dim>::migrate() {
+bool Simulation<Dim>::migrate() {
   const auto& g = grid_.geometry;
   const int T = scheme_->slab_cells();
   const int me = comm_->rank(), ranks = comm_->size();
+  bool moved = false;
   for (auto& b : bodies_) {
     auto& p = b.particles;
+    const VecU<Dim>* x = owner_positions(*scheme_, p);
     std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(ranks));
     std::vector<Index> keep;
     keep.reserve(static_cast<std::size_t>(p.size()));
     for (Index i = 0; i < p.size(); ++i) {
-      const int owner = halo_->owner_of_slab(slab_of<Dim>(p.x[i], g, T));
+      const int owner = halo_->owner_of_slab(slab_of<Dim>(x[i], g, T));
       (owner == me ? keep : leaving[static_cast<std::size_t>(owner)]).push_back(i);
     }
     std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(ranks));
@@ -179,6 +176,7 @@ void Simulation<Dim>::migrate() {
       std::memcpy(&count, buffer.data(), sizeof count);
       p.append_packed(std::span<const std::byte>(buffer).subspan(sizeof count), count);
     }
+    moved = moved || left || p.size() != kept;
     if (p.size() == kept) continue;
     // The kept particles are in key order; the arrivals (from several ranks) are sorted and merged in.
     const auto& key = p.template field<std::uint64_t>(scatter_key_field);
@@ -196,6 +194,7 @@ void Simulation<Dim>::migrate() {
     }
     p.gather(order);
   }
+  return comm_->any(moved);
 }
 
 template <int Dim>
@@ -233,16 +232,16 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) const {
   ctx.active_nodes = halo_->reached_nodes();
 }
 
-#define MPM_SIMULATION_DISTRIBUTED(D)                                                  \
-  template void set_scatter_keys<D>(ParticleSet<D>&, const GridGeometry<D>&);          \
-  template void Simulation<D>::distribute(std::shared_ptr<Communicator>);              \
-  template std::vector<int> Simulation<D>::balanced_slabs() const;                     \
-  template void Simulation<D>::reassign_slabs(std::vector<int>);                       \
-  template void Simulation<D>::migrate();                                              \
-  template std::vector<double> Simulation<D>::slab_costs() const;                      \
-  template void Simulation<D>::rebalance();                                            \
-  template void Simulation<D>::use_slabs(const std::vector<int>&);                     \
-  template void Simulation<D>::share_report(StabilityReport&) const;                   \
+#define MPM_SIMULATION_DISTRIBUTED(D)                                         \
+  template void set_scatter_keys<D>(ParticleSet<D>&, const GridGeometry<D>&); \
+  template void Simulation<D>::distribute(std::shared_ptr<Communicator>);     \
+  template std::vector<int> Simulation<D>::balanced_slabs() const;            \
+  template void Simulation<D>::reassign_slabs(std::vector<int>);              \
+  template bool Simulation<D>::migrate();                                     \
+  template std::vector<double> Simulation<D>::slab_costs() const;             \
+  template void Simulation<D>::rebalance();                                   \
+  template void Simulation<D>::use_slabs(const std::vector<int>&);            \
+  template void Simulation<D>::share_report(StabilityReport&) const;          \
   template void Simulation<D>::attach(StepContext<D>&) const;
 MPM_SIMULATION_DISTRIBUTED(1)
 MPM_SIMULATION_DISTRIBUTED(2)

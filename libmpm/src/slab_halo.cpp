@@ -8,6 +8,21 @@
 
 namespace mpm {
 
+std::vector<int> cut_slabs(const std::vector<double>& cost, int ranks) {
+  const int slabs = static_cast<int>(cost.size());
+  if (ranks < 1 || ranks > slabs) throw std::invalid_argument("cut_slabs: between 1 and one rank per slab");
+  std::vector<double> prefix(slabs + 1, 0);
+  for (int s = 0; s < slabs; ++s) prefix[s + 1] = prefix[s] + cost[s];
+  std::vector<int> first(ranks + 1, 0);
+  first[ranks] = slabs;
+  for (int r = 1; r < ranks; ++r) {
+    const double target = prefix[slabs] * r / ranks;
+    const int s = static_cast<int>(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
+    first[r] = std::clamp(s, first[r - 1] + 1, slabs - (ranks - r));
+  }
+  return first;
+}
+
 SlabHalo::SlabHalo(Communicator& comm, std::vector<int> first_slab, int slab_cells, int reach_below, int reach_above,
                    int node_layers, Index nodes_per_layer)
     : comm_(&comm),

@@ -47,4 +47,19 @@ inline Result mpm(const std::string& args, const fs::path& dir, const std::strin
   return r;
 }
 
+/// A 2D elastic block, 0.3 m square in a unit box of 0.05 m cells, moving at `velocity` (e.g. "[20, 0]": it leaves the
+/// grid through +x within 0.02 s, the stability guard's case), with the solver keys `solver`.
+inline std::string block_scene(const std::string& solver, const std::string& velocity) {
+  return "dimension: 2\n"
+         "grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}\n"
+         "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e4, poisson_ratio: 0.3}}\n"
+         "bodies: [{name: block, material: m, shape: {type: box, min: [0.3, 0.3], max: [0.6, 0.6]}, velocity: " +
+         velocity +
+         "}]\n"
+         "solver: {" +
+         solver +
+         "}\n"
+         "output: {interval: 0.05, fields: [velocity, stress, displacement, von_mises_stress]}\n";
+}
+
 }  // namespace cli

@@ -28,6 +28,22 @@ TEST(CheckRanks, PrintsTheTilesRanksAndHalo) {
   fs::remove_all(dir);
 }
 
+// What `mpirun -np 3 mpm run` does today: 4 slabs of 5 cells (cubic B-splines) along y; the halo model of the two
+// rank boundaries: 5 node layers (2 below, 3 above the face) x 21 nodes x 40 B, 2 messages, 1 scatter (USL), 2 bodies.
+TEST(CheckRanks, PrintsTheSlabsMpirunUses) {
+  const auto dir = scratch("check_ranks_slabs");
+  auto r = mpm("check " + (data / "good_scene_2d.yaml").string() + " --ranks 3", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("mpirun today: 4 slabs of 5 cells along y (at most 4 ranks)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("halo: 33.6 kB per step (1 scatter(s) x 2 bodies x 2 messages per rank boundary)"),
+            std::string::npos)
+      << r.out;
+  r = mpm("check " + (data / "good_scene_2d.yaml").string() + " --ranks 5", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("`mpirun -np 5` would be refused (at most 4 ranks)"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
 TEST(CheckRanks, MoreRanksThanTilesIsRefused) {
   const auto dir = scratch("check_ranks_many");
   const auto r = mpm("check " + (data / "good_scene_2d.yaml").string() + " --ranks 10", dir);

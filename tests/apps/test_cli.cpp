@@ -22,6 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using cli::block_scene;
 using cli::mpm;
 using cli::scratch;
 using cli::slurp;
@@ -161,19 +162,6 @@ TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
     ++checked;
   }
   EXPECT_GE(checked, 50);
-}
-
-std::string block_scene(const std::string& solver, const std::string& velocity) {
-  return "dimension: 2\n"
-         "grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}\n"
-         "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e4, poisson_ratio: 0.3}}\n"
-         "bodies: [{name: block, material: m, shape: {type: box, min: [0.3, 0.3], max: [0.6, 0.6]}, velocity: " +
-         velocity +
-         "}]\n"
-         "solver: {" +
-         solver +
-         "}\n"
-         "output: {interval: 0.05, fields: [velocity, stress, displacement, von_mises_stress]}\n";
 }
 
 TEST(Cli, UnstableFixedTimeStepIsRefusedWithTheBound) {

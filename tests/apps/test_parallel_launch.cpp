@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -85,8 +86,10 @@ TEST(ParallelLaunch, OnlyRunRunsOnSeveralProcesses) {
 }
 
 /// mpirun -np `np` mpm ARGS, as root; returns the exit status (124: mpirun did not end within 120 s).
-int mpirun(int np, const std::string& args, const fs::path& dir) {
-  const std::string cmd = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 mpirun --oversubscribe -np " +
+int mpirun(int np, const std::string& args, const fs::path& dir, const std::string& environment = "") {
+  const std::string cmd = environment +
+                          " OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 mpirun "
+                          "--oversubscribe -np " +
                           std::to_string(np) + " " + std::string(MPM_EXECUTABLE) + " " + args + " > " +
                           (dir / "stdout").string() + " 2> " + (dir / "stderr").string() + " < /dev/null";
   const int raw = std::system(cmd.c_str());
@@ -113,17 +116,52 @@ TEST(ParallelLaunch, UnderMpirunWhatCannotBeDistributedIsRefusedOnce) {
   if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
   const auto dir = scratch("parallel_launch_refused");
   const fs::path out = dir / "out";
-  const std::string tlmpm = (fs::path(MPM_SOURCE_DIR) / "examples" / "03_tlmpm_column" / "scene.yaml").string();
-  EXPECT_EQ(mpirun(2, "run " + tlmpm + " --steps 3 -o " + out.string(), dir), 2);
+  // The Taylor anvil's histories (their sums are not reduced over the ranks yet).
+  const std::string anvil = (fs::path(MPM_SOURCE_DIR) / "examples" / "05_taylor_anvil" / "musl.yaml").string();
+  EXPECT_EQ(mpirun(2, "run " + anvil + " --steps 3 -o " + out.string(), dir), 2);
   std::string err = cli::slurp(dir / "stderr");
   const auto first = err.find("does not run on several ranks yet");
   EXPECT_NE(first, std::string::npos) << err;
+  EXPECT_NE(err.find("output.histories"), std::string::npos) << err;
   EXPECT_EQ(err.find("does not run on several ranks yet", first + 1), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out / "energy.csv"));
   // More ranks than slabs: the two-disk grid has 10 slabs of 2 cells along y.
   EXPECT_EQ(mpirun(11, "run " + scene + " --steps 3 --threads 1 -o " + out.string(), dir), 2);
   err = cli::slurp(dir / "stderr");
   EXPECT_NE(err.find("11 ranks for 10 slabs"), std::string::npos) << err;
+  fs::remove_all(dir);
+}
+
+/// The stability guard trips on the rank holding the block (thrown out of the grid through +x): every rank rolls
+/// back together and exits 3 with the same report, said once, and the last good frame is complete.
+TEST(ParallelLaunch, UnderMpirunTheGuardStopsEveryRankWithOneReport) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  const auto dir = scratch("parallel_launch_guard");
+  std::ofstream(dir / "scene.yaml") << cli::block_scene("cfl: 0.5, end_time: 1", "[20, 0]");
+  const fs::path out = dir / "out";
+  EXPECT_EQ(mpirun(3, "run " + (dir / "scene.yaml").string() + " --threads 1 -o " + out.string(), dir), 3)
+      << cli::slurp(dir / "stderr");
+  const std::string err = cli::slurp(dir / "stderr");
+  const auto report = err.find("body 'block', particle ");
+  EXPECT_NE(report, std::string::npos) << err;
+  EXPECT_EQ(err.find("stability guard:", report + 1), std::string::npos) << "said more than once:\n" << err;
+  const std::string pvd = cli::slurp(out / "particles.pvd");
+  EXPECT_NE(pvd.find("particles_000001.pvtu"), std::string::npos) << pvd;  // frame 1: the last good state
+  for (int r = 0; r < 3; ++r)
+    EXPECT_TRUE(fs::exists(out / "particles_000001" / ("particles_000001_" + std::to_string(r) + ".vtu"))) << r;
+  fs::remove_all(dir);
+}
+
+/// An internal error on one rank (the hidden MPM_DEBUG_FAIL_AT_STEP=R:S) ends the whole job, never a hang.
+TEST(ParallelLaunch, UnderMpirunAnErrorOnOneRankEndsTheJob) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  const auto dir = scratch("parallel_launch_abort");
+  const int status =
+      mpirun(3, "run " + scene + " --threads 1 -o " + (dir / "out").string(), dir, "MPM_DEBUG_FAIL_AT_STEP=1:5");
+  EXPECT_NE(status, 0);
+  EXPECT_NE(status, 124) << "the job hung";
+  const std::string err = cli::slurp(dir / "stderr");
+  EXPECT_NE(err.find("rank 1: error: debug failure of rank 1 after step 5"), std::string::npos) << err;
   fs::remove_all(dir);
 }
 #else

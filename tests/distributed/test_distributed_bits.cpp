@@ -85,8 +85,8 @@ void unpack_bodies(const mpm::Simulation<Dim>& sim, const std::vector<std::strin
 template <int Dim>
 std::string audit_bytes(const mpm::Simulation<Dim>& sim) {
   const mpm::EnergyBalance e = sim.energy();
-  const double values[] = {sim.time(), e.kinetic, e.strain, e.gravity, e.plastic_work, e.thermal,
-                           e.momentum[0], e.momentum[1], e.momentum[2], e.mass};
+  const double values[] = {sim.time(), e.kinetic,     e.strain,      e.gravity,     e.plastic_work,
+                           e.thermal,  e.momentum[0], e.momentum[1], e.momentum[2], e.mass};
   return std::string(reinterpret_cast<const char*>(values), sizeof values);
 }
 
@@ -122,7 +122,12 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
   const std::vector<int> first_slabs = sim->halo()->first_slab();
   std::mt19937 rng(42);  // the same draws on every rank
   bool ok = true;
-  std::size_t halo_bytes = 0;
+  std::size_t halo_bytes = 0, model_bytes = 0;
+  // The halo model (SlabHalo::model_bytes_per_scatter): per step, body and scatter, one message per rank boundary.
+  const int scatters = c.scheme == mpm::SchemeKind::usl ? 1 : 2;
+  auto model_step = [&] {
+    return sim->bodies().size() * scatters * sim->halo()->model_bytes_per_scatter(sizeof(mpm::NodeRecord<Dim>));
+  };
   for (int s = 0; s < c.steps; ++s) {
     if (reassign) {
       const int slabs = sim->halo()->slab_count(), ranks = comm->size();
@@ -134,9 +139,9 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
       std::vector<int> first{0};
       first.insert(first.end(), cuts.begin(), cuts.end());
       first.push_back(slabs);
-      halo_bytes += sim->halo()->bytes_sent();
       sim->reassign_slabs(first);
     }
+    model_bytes += model_step();
     sim->advance(sim->next_time_step());
     const std::string audit = audit_bytes(*sim);
     if (rank == 0 && audit != serial_audit[static_cast<std::size_t>(s)]) {
@@ -144,7 +149,11 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
       ok = false;
     }
   }
-  halo_bytes += sim->halo()->bytes_sent();
+  halo_bytes = sim->halo_bytes_sent();
+  if (halo_bytes != model_bytes) {
+    fmt::print("{}: rank {} sent {} halo bytes, the model counts {}\n", c.name, rank, halo_bytes, model_bytes);
+    ok = false;
+  }
   std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(comm->size()));
   out[0] = pack_bodies(*sim, fields);
   const auto in = comm->all_to_all(std::move(out));
@@ -153,8 +162,8 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
     for (const auto& buffer : in) unpack_bodies(*sim, fields, buffer, distributed);
     for (std::size_t b = 0; b < serial.size(); ++b) {
       if (distributed[b].size() != serial[b].size()) {
-        fmt::print("{}: body {} has {} particles on the ranks, {} in one process\n", c.name, b,
-                   distributed[b].size(), serial[b].size());
+        fmt::print("{}: body {} has {} particles on the ranks, {} in one process\n", c.name, b, distributed[b].size(),
+                   serial[b].size());
         ok = false;
         continue;
       }
@@ -168,15 +177,16 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
         ok = false;
       }
     }
-    fmt::print("{} ({} ranks{}{}): {} steps, {} particles, {} fields each, halo {} B sent by rank 0: {}\n", c.name,
-               comm->size(), reassign ? ", slabs dealt at random every step" : "",
-               sim->halo()->first_slab() != first_slabs ? ", rebalanced" : "", c.steps,
-               [&] {
-                 std::size_t n = 0;
-                 for (const auto& m : serial) n += m.size();
-                 return n;
-               }(),
-               fields.size(), halo_bytes, ok ? "identical bits" : "DIFFERENT");
+    fmt::print(
+        "{} ({} ranks{}{}): {} steps, {} particles, {} fields each, halo {} B sent by rank 0 (= model): {}\n", c.name,
+        comm->size(), reassign ? ", slabs dealt at random every step" : "",
+        sim->halo()->first_slab() != first_slabs ? ", rebalanced" : "", c.steps,
+        [&] {
+          std::size_t n = 0;
+          for (const auto& m : serial) n += m.size();
+          return n;
+        }(),
+        fields.size(), halo_bytes, ok ? "identical bits" : "DIFFERENT");
   }
   return comm->any(!ok) == false;
 }
@@ -203,6 +213,9 @@ int main(int argc, char** argv) {
       {"2D USF quadratic (two disks)", "02_two_disks/scene.yaml", 2, 40, SchemeKind::usf, "quadratic_bspline"},
       {"2D MUSL linear FLIP (dam break, fluid)", "12_dam_break/scene.yaml", 2, 40, SchemeKind::musl, "linear"},
       {"2D USL GIMP (dam break, fluid)", "12_dam_break/scene.yaml", 2, 30, SchemeKind::usl, "gimp"},
+      {"2D TLMPM cubic B-spline (two disks)", "02_two_disks/scene.yaml", 2, 40, SchemeKind::tlmpm, "cubic_bspline"},
+      {"3D TLMPM linear (Johnson-Cook Taylor anvil)", "05_taylor_anvil/musl.yaml", 3, 20, SchemeKind::tlmpm, "linear",
+       VelocityTransfer::flip, 2},
       {"3D USL GIMP (Johnson-Cook Taylor anvil)", "05_taylor_anvil/musl.yaml", 3, 20, SchemeKind::usl, "gimp",
        VelocityTransfer::flip, 2},
       {"3D MUSL linear (Johnson-Cook Taylor anvil, rebalanced every 5 steps)", "05_taylor_anvil/musl.yaml", 3, 30,

@@ -254,7 +254,8 @@ void check_slab_thickness(int cells) {
   // The slab's declared reach (the halo of a distributed run, slab_halo.hpp) holds every node it reached.
   for (int s = 0; s < slabs; ++s) {
     if (hi[s] < 0) continue;
-    EXPECT_GE(lo[s], s * Shape::slab_cells - Shape::slab_reach_below) << Shape::name << ", " << cells << " cells, slab " << s;
+    EXPECT_GE(lo[s], s * Shape::slab_cells - Shape::slab_reach_below)
+        << Shape::name << ", " << cells << " cells, slab " << s;
     EXPECT_LE(hi[s], (s + 1) * Shape::slab_cells - 1 + Shape::slab_reach_above)
         << Shape::name << ", " << cells << " cells, slab " << s;
   }

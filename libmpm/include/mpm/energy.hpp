@@ -40,8 +40,8 @@ struct EnergySums {
   }
   /// Every rank's sums merged (a distributed run): the bits of one sum over all ranks' particles.
   void reduce(Communicator& comm) {
-    std::array<ExactSum, 9> all{kinetic, strain, gravity, plastic_work, thermal, mass,
-                                momentum[0], momentum[1], momentum[2]};
+    std::array<ExactSum, 9> all{kinetic, strain,      gravity,     plastic_work, thermal,
+                                mass,    momentum[0], momentum[1], momentum[2]};
     comm.sum(all);
     kinetic = all[0];
     strain = all[1];

@@ -29,6 +29,12 @@ class Scheme {
   /// Called once with the initial state, before the first step and the first snapshot (TLMPM caches
   /// its reference weights here).
   virtual void initialize(std::vector<Body<Dim>>&, Grid<Dim>&) {}
+  /// A distributed run moved particles between ranks outside the steps (Simulation::distribute, a new slab
+  /// assignment): a scheme that caches per-particle data rebuilds it (TLMPM's stencils and bins).
+  virtual void particles_redistributed(std::vector<Body<Dim>>&, Grid<Dim>&) {}
+  /// The positions a distributed run assigns particles to ranks by: the current ones (null), or TLMPM's reference
+  /// positions (its particles never migrate with their motion).
+  virtual const VecU<Dim>* ownership_positions(const ParticleSet<Dim>&) const { return nullptr; }
   /// False when the scheme keeps per-particle data in particle order (TLMPM): no periodic sorting.
   virtual bool reorders_particles() const { return true; }
   /// False when particle positions are not used by the transfers (TLMPM: they may leave the grid).

@@ -63,6 +63,8 @@ class Simulation {
   /// Reassigns the slabs to the ranks (every rank the same `first_slab`, SlabHalo) and migrates the particles.
   /// Results do not depend on it (the tests reassign at random every step).
   void reassign_slabs(std::vector<int> first_slab);
+  /// Bytes of ghost nodes this rank has sent (every slab assignment's), for the halo model's test.
+  std::size_t halo_bytes_sent() const { return halo_bytes_before_ + (halo_ ? halo_->bytes_sent() : 0); }
   /// Steps between balance checks of a distributed run (SimulationSettings::rebalance_interval; 0: never).
   void set_rebalance_interval(int steps) { settings_.rebalance_interval = steps; }
   /// The slab runs that balance the particles of all ranks (a collective call).
@@ -155,7 +157,8 @@ class Simulation {
   void roll_back_to_previous_step();
   /// Distributed run: sends every particle outside this rank's slabs to their owner and takes in what the others
   /// send, keeping the storage ordered by the scatter key (simulation_distributed.cpp).
-  void migrate();
+  /// Returns whether a particle moved on any rank (a collective call).
+  bool migrate();
   /// Distributed run: the cost of every slab (its particles on all ranks, plus its nodes); a collective call.
   std::vector<double> slab_costs() const;
   /// Distributed run: deals the slabs anew when the most loaded rank exceeds the mean by more than 10%.
@@ -185,6 +188,7 @@ class Simulation {
   StepProfile profile_;
   std::shared_ptr<Communicator> comm_;  ///< null in one process
   std::unique_ptr<SlabHalo> halo_;
+  std::size_t halo_bytes_before_ = 0;  ///< sent by the halos of earlier slab assignments
 };
 
 /// The wave-speed bound of every rank's particles (a distributed run): max over ranks, exact.

@@ -16,6 +16,7 @@
 /// slowest in the node numbering (grid.hpp), the overlap is one contiguous range of nodes per array.
 
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <span>
 #include <vector>
@@ -34,6 +35,15 @@ struct HaloArray {
     return {reinterpret_cast<std::byte*>(nodes.data()), sizeof(T)};
   }
 };
+
+/// Contiguous runs of slabs, one per rank and at least one slab each, cut where the prefix of the slabs' `cost`
+/// crosses r/ranks of the total: `first_slab` of SlabHalo (ranks <= cost.size()).
+std::vector<int> cut_slabs(const std::vector<double>& cost, int ranks);
+
+/// The cost of a slab: its particles, plus its nodes at a tenth of a particle (the grid update and reset).
+inline double slab_cost(std::int64_t particles, Index nodes_per_layer, int slab_cells) {
+  return static_cast<double>(particles) + 0.1 * static_cast<double>(nodes_per_layer) * slab_cells;
+}
 
 /// Which rank owns which slabs, and the exchange after a colour round. Built by the distributed simulation
 /// (Simulation::distribute); a serial run has none (SlabBins::halo is null).
@@ -61,6 +71,13 @@ class SlabHalo {
   std::pair<Index, Index> reached_nodes() const { return reached_; }
   /// Bytes this rank sent in exchanges so far (the halo model's count, docs/distributed.md).
   std::size_t bytes_sent() const { return bytes_sent_; }
+  /// The halo model: bytes this rank sends per scatter of arrays of `bytes_per_node` (one message per rank boundary,
+  /// its overlap's nodes; docs/distributed.md §5.2). A step sends it once per body and scatter (USL 1, MUSL and USF 2).
+  std::size_t model_bytes_per_scatter(std::size_t bytes_per_node) const {
+    std::size_t b = 0;
+    for (const Overlap& o : overlaps_) b += static_cast<std::size_t>(o.end - o.first) * bytes_per_node;
+    return b;
+  }
   /// Wall seconds spent in exchanges so far (waiting for the other ranks included).
   double seconds() const { return seconds_; }
 

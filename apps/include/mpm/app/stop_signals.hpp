@@ -23,6 +23,10 @@ class StopSignals {
 /// (tests/apps/test_restart.cpp).
 void debug_raise_at_step(long long step);
 
+/// Hidden debug option of distributed runs (issue 18 §4): with MPM_DEBUG_FAIL_AT_STEP=R:S in the environment, rank R
+/// throws an internal error after step S, which must end the whole job (MPI_Abort), never leave it hanging.
+void debug_fail_at_step(int rank, long long step);
+
 /// "SIGTERM" for 15, ...
 const char* signal_name(int signal);
 

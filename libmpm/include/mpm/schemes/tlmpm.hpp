@@ -20,6 +20,8 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <array>
+
 #include "mpm/field_keys.hpp"
 #include "mpm/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
@@ -37,23 +39,43 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
   /// Sorts each body by reference cell once, bins it by slab, caches phi_I(X_p) and grad_0 phi_I(X_p),
   /// and computes the constant nodal mass.
   void initialize(std::vector<Body<Dim>>& bodies, Grid<Dim>& grid) override {
-    stencils_.assign(bodies.size(), {});
     nodal_mass_.assign(grid.size(), 0);
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       auto& p = bodies[b].particles;
       p.gather(order_by_cell(p, grid.geometry));
       auto& X = p.add_field(keys::reference_position<Dim>, VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) X[i] = p.x[i];
-      bin_by_slab(p, grid.geometry, Shape::slab_cells, bodies[b].bins);
+    }
+    particles_redistributed(bodies, grid);
+    // The constant nodal mass, summed in storage order over every particle: a distributed run computes it before
+    // its ranks keep their own particles, so every rank holds the one-process sums.
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const auto& p = bodies[b].particles;
+      for (Index i = 0; i < p.size(); ++i)
+        for_each_node(stencils_[b][i], grid.geometry,
+                      [&](Index n, Real w, const Vec<Dim>&) { nodal_mass_[n] += w * p.mass[i]; });
+    }
+  }
+
+  /// Bins the particles by the slab of their reference position and caches their stencils (again after a
+  /// distributed run moved particles between ranks: they migrate by reference position, never by motion).
+  void particles_redistributed(std::vector<Body<Dim>>& bodies, Grid<Dim>& grid) override {
+    stencils_.assign(bodies.size(), {});
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      auto& p = bodies[b].particles;
+      const auto& X = p.field(keys::reference_position<Dim>);
+      ParticleSet<Dim> reference;  // binned by X: bin_by_slab reads positions
+      reference.x = X;
+      bin_by_slab(reference, grid.geometry, Shape::slab_cells, bodies[b].bins);
       auto& cache = stencils_[b];
       cache.resize(p.size());
       const ParticleDomain<Dim, Shape> domain(p);
-      for (Index i = 0; i < p.size(); ++i) {
-        cache[i].compute(X[i], grid.geometry, domain(i));
-        for_each_node(cache[i], grid.geometry,
-                      [&](Index n, Real w, const Vec<Dim>&) { nodal_mass_[n] += w * p.mass[i]; });
-      }
+      for (Index i = 0; i < p.size(); ++i) cache[i].compute(X[i], grid.geometry, domain(i));
     }
+  }
+  bool runs_distributed() const override { return true; }
+  const VecU<Dim>* ownership_positions(const ParticleSet<Dim>& p) const override {
+    return p.field(keys::reference_position<Dim>).data();
   }
 
   void advance(StepContext<Dim>& ctx) override {
@@ -109,6 +131,18 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     });
     Vec<Dim> scale2 = Vec<Dim>::Zero();
     for (const auto& r : row_norm2) scale2 = scale2.cwiseMax(r);
+    if (ctx.comm) {  // a distributed run: the scale and the speeds of all ranks, as one process takes them
+      std::array<double, 2 * Dim> v{};
+      for (int d = 0; d < Dim; ++d) {
+        v[d] = scale2[d];
+        v[Dim + d] = ctx.wave_speed.max_speed[d];
+      }
+      ctx.comm->max(v);
+      for (int d = 0; d < Dim; ++d) {
+        scale2[d] = v[d];
+        ctx.wave_speed.max_speed[d] = v[Dim + d];
+      }
+    }
     const Vec<Dim> scale = scale2.cwiseSqrt();
     ctx.wave_speed.max_speed = ctx.wave_speed.max_speed.cwiseProduct(scale);
   }
@@ -141,7 +175,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     NodeRecord<Dim>* node = grid.node.data();
     const VecU<Dim>* body_force = kernels::body_force_of(p);
     const Real* hoop_stretch = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
-    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+    for_each_slab_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
         // First Piola-Kirchhoff stress P = J sigma F^-T = sigma cof(F) (review Table 4), times V0.
@@ -170,7 +204,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     NodeRecord<Dim>* node = ctx.grid.node.data();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction;
-    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+    for_each_slab_coloured(body.bins, {HaloArray::of(ctx.grid.node)}, [&](const Index* index, Index count) {
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
         const auto& st = cache[i];

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <utility>
 #include <type_traits>
+#include <utility>
 
 #include "mpm/axisymmetric.hpp"
 #include "mpm/field_keys.hpp"
