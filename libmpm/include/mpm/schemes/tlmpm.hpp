@@ -132,7 +132,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     Vec<Dim> scale2 = Vec<Dim>::Zero();
     for (const auto& r : row_norm2) scale2 = scale2.cwiseMax(r);
     if (ctx.comm) {  // a distributed run: the scale and the speeds of all ranks, as one process takes them
-      std::array<double, 2 * Dim> v{};
+      std::array<double, std::size_t{2} * Dim> v{};
       for (int d = 0; d < Dim; ++d) {
         v[d] = scale2[d];
         v[Dim + d] = ctx.wave_speed.max_speed[d];
