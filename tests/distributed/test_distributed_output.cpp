@@ -20,6 +20,7 @@
 #include "mpm/distributed/mpi_communicator.hpp"
 #include "mpm/io/pvtu_writer.hpp"
 #include "mpm/output_writer.hpp"
+#include "run_on_every_rank.hpp"
 #include "scene_fixture.hpp"
 
 namespace {
@@ -171,12 +172,5 @@ int main(int argc, char** argv) {
   root = argv[1];
   if (communicator.rank() == 0) fs::create_directories(root);
   communicator.barrier();
-  if (communicator.rank() != 0) {  // one rank prints the report; every rank's verdict counts
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  const bool failed = RUN_ALL_TESTS() != 0;
-  const bool any_failed = communicator.any(failed);
-  if (failed) std::fprintf(stderr, "rank %d of %d: a test failed\n", communicator.rank(), communicator.size());
-  return any_failed ? 1 : 0;
+  return mpm::test::run_on_every_rank(communicator);
 }

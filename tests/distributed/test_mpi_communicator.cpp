@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mpm/distributed/mpi_communicator.hpp"
+#include "run_on_every_rank.hpp"
 
 namespace {
 
@@ -97,12 +98,5 @@ int main(int argc, char** argv) {
   mpm::distributed::MpiCommunicator communicator(&argc, &argv);
   world = &communicator;
   ::testing::InitGoogleTest(&argc, argv);
-  if (communicator.rank() != 0) {  // one rank prints the report; every rank's verdict counts
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  const bool failed = RUN_ALL_TESTS() != 0;
-  const bool any_failed = communicator.any(failed);
-  if (failed) std::fprintf(stderr, "rank %d of %d: a test failed\n", communicator.rank(), communicator.size());
-  return any_failed ? 1 : 0;
+  return mpm::test::run_on_every_rank(communicator);
 }
