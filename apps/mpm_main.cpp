@@ -87,9 +87,11 @@ int main(int argc, char** argv) {
                    "under mpirun: steps between balance checks; the slabs are dealt anew when the most loaded rank "
                    "exceeds the mean by more than 10% (0: never; results do not depend on it)")
       ->check(CLI::NonNegativeNumber);
-  run_cmd->add_flag("--profile", profile,
-                    "time the phases of every step (P2G, grid update, G2P, stress update, output, other) and print "
-                    "the breakdown at the end");
+  run_cmd->add_flag(
+      "--profile", profile,
+      "time the phases of every step (P2G, grid update, G2P, stress update, halo, migrate, output, other) "
+      "and print "
+      "the breakdown at the end");
   auto* steps_opt = run_cmd
                         ->add_option("--steps", steps,
                                      "stop after N steps (N >= 1), or at the end time if sooner: to try a scene "
