@@ -47,13 +47,15 @@ std::string read_scene_text(const SceneDescription& scene) {
   return text.str();
 }
 
-RunCheckpoints::RunCheckpoints(const SceneDescription& scene, std::string scene_text, fs::path directory)
+RunCheckpoints::RunCheckpoints(const SceneDescription& scene, std::string scene_text, fs::path directory,
+                               bool writes_files)
     : settings_(scene.output.checkpoint),
       scene_file_(scene.file),
       scene_text_(std::move(scene_text)),
       directory_(std::move(directory)),
-      last_wall_(Clock::now()) {
-  if (settings_.enabled) check_writable(directory_, settings_);
+      last_wall_(Clock::now()),
+      writes_files_(writes_files) {
+  if (settings_.enabled && writes_files_) check_writable(directory_, settings_);
   if (settings_.interval) next_time_ = *settings_.interval;
 }
 
@@ -72,6 +74,7 @@ fs::path RunCheckpoints::write(StateArchive& archive, long long step, double tim
   archive.put_text("run/scene_text", scene_text_);
   archive.put_text("run/scene_hash", checkpoint::checksum_hex(scene_text_));
   archive.put_number("run/checkpoint_next_time", next_time_);
+  if (!writes_files_) return {};
   fs::create_directories(directory_);
   const fs::path file = directory_ / checkpoint::checkpoint_name(step);
   checkpoint::write_checkpoint(file, archive);
@@ -90,6 +93,7 @@ int RunCheckpoints::restore(const StateArchive& archive) {
   } else if (settings_.interval) {
     next_time_ = archive.number("simulation/time") + *settings_.interval;
   }
+  if (!writes_files_) return 0;
   const long long step = archive.integer("simulation/step");
   int removed = 0;
   for (const auto& later : checkpoint::checkpoint_files(directory_))

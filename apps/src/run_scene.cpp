@@ -134,25 +134,19 @@ std::vector<std::string> overrides(const RunOptions& options) {
   return lines;
 }
 
-/// The simulation distributed over the ranks (Simulation::distribute), or RankCountError (exit status 2 on every
-/// rank) for what a distributed run does not take yet.
+/// RankCountError (exit status 2 on every rank) for what a distributed run does not take yet; before anything is
+/// written or restored.
 template <int Dim>
-void distribute(const SceneDescription& scene, const RunOptions& options, Simulation<Dim>& sim) {
+void refuse_what_cannot_be_distributed(const SceneDescription& scene, const RunOptions& options,
+                                       const Simulation<Dim>& sim) {
   const int ranks = options.communicator->size();
-  auto refuse = [&](const std::string& what) {
-    throw RankCountError(
-        fmt::format("{}: {} does not run on several ranks yet (issue 18); start one process", scene.file, what));
-  };
-  if (!scene.output.histories.empty()) refuse("output.histories (their sums are not reduced over the ranks)");
-  if (scene.output.checkpoint.interval || scene.output.checkpoint.wall_interval || options.restart)
-    refuse("a checkpoint or a restart");
-  if (scene.output.grid) refuse("output.grid (the grid is not gathered from the ranks)");
-  sim.set_rebalance_interval(options.rebalance_every);
-  try {
-    sim.distribute(options.communicator);
-  } catch (const std::invalid_argument& e) {
-    throw RankCountError(fmt::format("{}: {} ({} ranks)", scene.file, e.what(), ranks));
-  }
+  if (scene.output.grid)
+    throw RankCountError(fmt::format(
+        "{}: output.grid (the grid is not gathered from the ranks) does not run on several ranks yet (issue 18); "
+        "start one process",
+        scene.file));
+  if (const std::string why = sim.why_not_distributed(ranks); !why.empty())
+    throw RankCountError(fmt::format("{}: {} ({} ranks)", scene.file, why, ranks));
 }
 
 template <int Dim>
@@ -171,9 +165,13 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   auto sim = build_simulation<Dim>(scene);
   Communicator* const comm =
       options.communicator && options.communicator->size() > 1 ? options.communicator.get() : nullptr;
-  if (comm) distribute(scene, options, *sim);
   RunSummary summary;
-  auto built_histories = build_histories<Dim>(scene, *sim, summary.warnings);  // output.histories
+  // output.histories (their modules join the run; built before distribute(): the checks at t = 0 see every particle)
+  auto built_histories = build_histories<Dim>(scene, *sim, summary.warnings);
+  if (comm) {
+    refuse_what_cannot_be_distributed(scene, options, *sim);
+    for (const auto& m : sim->modules()) m->set_writes_files(comm->rank() == 0);  // before a restart's restore
+  }
   if (std::string w = step_warning(estimate_steps<Dim>(scene, *sim)); !w.empty())
     summary.warnings.insert(summary.warnings.begin(), std::move(w));  // a time step collapsed by a typo
   for (const auto& w : summary.warnings) fmt::print(log, "warning: {}\n", w);
@@ -182,7 +180,8 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   const std::string scene_text = read_scene_text(scene);
   RunCheckpoints checkpoints(
       scene, scene_text,
-      o.checkpoint.directory.empty() ? directory / "checkpoints" : std::filesystem::path(o.checkpoint.directory));
+      o.checkpoint.directory.empty() ? directory / "checkpoints" : std::filesystem::path(o.checkpoint.directory),
+      !comm || comm->rank() == 0);  // a distributed run's checkpoint: the one-process one, written by rank 0
   std::optional<RestartPoint> restart;
   if (options.restart) {
     restart = find_restart_point(*options.restart, scene, scene_text, log);
@@ -191,9 +190,14 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
       fmt::print(log, "restart: removed {} later checkpoint(s) of the interrupted run from {}\n", removed,
                  checkpoints.directory().string());
   }
+  if (comm) {  // after a restart's restore: the restored one-process state is what the ranks share out
+    sim->set_rebalance_interval(options.rebalance_every);
+    sim->distribute(options.communicator);
+  }
   OutputWriter<Dim> writer(directory, o.prefix, o.fields, o.grid, o.interval, restart ? &restart->archive : nullptr,
                            comm);  // a distributed run: a piece per rank and a .pvtu per frame
-  HistoryWriter<Dim> histories(writer.directory(), std::move(built_histories), restart ? &restart->archive : nullptr);
+  HistoryWriter<Dim> histories(writer.directory(), std::move(built_histories), restart ? &restart->archive : nullptr,
+                               !comm || comm->rank() == 0);  // every rank samples (collective sums), rank 0 writes
   writer.set_field_data(run_field_data(scene, overrides(options)));  // self-describing files
   // The scheme's own per-step table (the implicit scheme's solver.csv), one row per step. A restart starts it anew.
   std::unique_ptr<io::CsvLog> step_log;
@@ -260,6 +264,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     record.save(archive);
     last_checkpoint = checkpoints.write(archive, s.step(), s.time());
     last_checkpoint_step = s.step();
+    if (last_checkpoint->empty()) return;  // a distributed run's other ranks (rank 0 writes it)
     if (options.progress) log << '\n';
     fmt::print(log, "checkpoint: {} (step {}, t = {:.9g} s; {:.3g} MB in {:.3g} s)\n", last_checkpoint->string(),
                s.step(), s.time(), 1e-6 * static_cast<double>(std::filesystem::file_size(*last_checkpoint)),
@@ -294,7 +299,8 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     write(s, false);
     check_energy(s);
     if (s.step() % 50 == 0) check_state(s);
-    if (checkpoints.due(s.time())) write_checkpoint(s);
+    // (a wall-clock interval expires at different steps on the ranks: all write when any is due)
+    if (comm ? comm->any(checkpoints.due(s.time())) : checkpoints.due(s.time())) write_checkpoint(s);
     debug_raise_at_step(s.step());
     debug_fail_at_step(comm ? comm->rank() : 0, s.step());
     // A signal reaches the ranks at different steps: all stop after the step where any one received it.

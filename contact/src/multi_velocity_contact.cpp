@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -167,9 +168,12 @@ Vec<Dim> MultiVelocityContact<Dim>::plane_velocity(int k, Real t) const {
 
 template <int Dim>
 void MultiVelocityContact<Dim>::after_p2g(StepContext<Dim>& ctx) {
-  // The shared grid holds the sum of the bodies' fields (for grid output and any reader of the system).
+  // The shared grid holds the sum of the bodies' fields (for grid output and any reader of the system), on the
+  // nodes this rank's particles reach (all in one process).
   auto& shared = ctx.grid;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, shared.size(), 1 << 12), [&](const auto& r) {
+  const Index first = std::min(ctx.active_nodes.first, shared.size()),
+              end = std::min(ctx.active_nodes.second, shared.size());
+  tbb::parallel_for(tbb::blocked_range<Index>(first, end, 1 << 12), [&](const auto& r) {
     for (Index i = r.begin(); i != r.end(); ++i) {
       NodeRecord<Dim>& s = shared.node[i];
       for (int k = 0; k < body_count_; ++k) {
@@ -189,8 +193,10 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
   const Real cutoff = ctx.settings.mass_cutoff;
   for (const Index I : candidates_) is_candidate_[I] = 0;
   candidates_.clear();
+  // The nodes this rank's particles reach (all in one process): a body has no mass anywhere else.
   const Index nodes = g.node_count();
-  for (Index I = 0; I < nodes; ++I) {
+  const Index first = std::min(ctx.active_nodes.first, nodes), end = std::min(ctx.active_nodes.second, nodes);
+  for (Index I = first; I < end; ++I) {
     int present = 0, deformable = 0;
     for (int k = 0; k < body_count_; ++k)
       if (body_grids_[k].node[I].mass > cutoff) {
@@ -348,6 +354,7 @@ void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVel
       member, record, ctx.settings.mass_cutoff, ctx.dt, body_count_ + static_cast<int>(settings_.planes.size()), {}};
   pass.plane_velocity.resize(settings_.planes.size());
   pass.geometry = &ctx.grid.geometry;
+  pass.owned = ctx.owned_nodes;
   for (std::size_t P = 0; P < pass.plane_velocity.size(); ++P)
     pass.plane_velocity[P] = plane_velocity(static_cast<int>(P), t);
   if (record) step_sums_.assign(step_force_.size(), {});
@@ -370,8 +377,9 @@ void MultiVelocityContact<Dim>::correct(StepContext<Dim>& ctx, VecU<Dim> NodeVel
         corrected = correct_bodies(pass, I, present, rigid, v_cm);
     }
     if (flag & behind_plane) corrected = correct_planes(pass, I, ctx.grid.geometry, present) || corrected;
-    corrected_nodes += corrected;
+    corrected_nodes += corrected && pass.owns(I);
   }
+  corrected_nodes = reduce_step(ctx.comm, corrected_nodes, record);
   if (!record) return;
   for (std::size_t s = 0; s < step_force_.size(); ++s) {
     for (int d = 0; d < Dim; ++d) step_force_[s][d] = step_sums_[s].force[d].value();
@@ -400,13 +408,14 @@ bool MultiVelocityContact<Dim>::apply_correction(const CorrectionPass& pass, Ind
     return false;
   if (!correct_velocity<Dim>(v, v_cm, n, mu)) return false;
   nv.*pass.member = v;
+  if (!pass.owns(I)) return true;  // another rank sums this node's force and work
   const Real m = body_grids_[k].node[I].mass;
   if (!pass.record) {  // the re-mapped velocity: only the strain rate sees the change
-    work_.remapped -= pass.dt * Vec<Dim>(body_grids_[k].node[I].force).dot(v - before);
+    remapped_work_ += -pass.dt * Vec<Dim>(body_grids_[k].node[I].force).dot(v - before);
     return true;
   }
   const Vec<Dim> impulse = m * (v - before);
-  work_.start_velocity += impulse.dot(Vec<Dim>(nv.mapped) - (rigid_partner ? partner_start : Vec<Dim>::Zero()));
+  start_work_ += impulse.dot(Vec<Dim>(nv.mapped) - (rigid_partner ? partner_start : Vec<Dim>::Zero()));
   const Vec<Dim> f = impulse / pass.dt;
   StepSums& sums = step_sums_[k * pass.slots + other];
   for (int d = 0; d < Dim; ++d) sums.force[d] += f[d];
@@ -490,6 +499,38 @@ bool MultiVelocityContact<Dim>::correct_planes(const CorrectionPass& pass, Index
 }
 
 template <int Dim>
+Index MultiVelocityContact<Dim>::reduce_step(Communicator* comm, Index corrected_nodes, bool record) {
+  if (comm) {
+    // one message: the pass's two works, then (recording) every slot's force, moment and normal sums
+    std::vector<ExactSum> sums{remapped_work_, start_work_};
+    if (record)
+      for (const StepSums& s : step_sums_) {
+        sums.insert(sums.end(), s.force.begin(), s.force.end());
+        sums.insert(sums.end(), s.moment.begin(), s.moment.end());
+        sums.push_back(s.normal);
+      }
+    comm->sum(sums);
+    remapped_work_ = sums[0];
+    start_work_ = sums[1];
+    std::size_t at = 2;
+    if (record)
+      for (StepSums& s : step_sums_) {
+        for (auto& f : s.force) f = sums[at++];
+        for (auto& m : s.moment) m = sums[at++];
+        s.normal = sums[at++];
+      }
+    std::int64_t count[] = {static_cast<std::int64_t>(corrected_nodes)};
+    comm->sum(count);
+    corrected_nodes = static_cast<Index>(count[0]);
+  }
+  work_.remapped += remapped_work_.value();
+  work_.start_velocity += start_work_.value();
+  remapped_work_ = {};
+  start_work_ = {};
+  return corrected_nodes;
+}
+
+template <int Dim>
 void MultiVelocityContact<Dim>::log_forces(const CorrectionPass& pass, Index corrected_nodes, Real t) {
   contact_nodes_last_ = corrected_nodes;
   if (corrected_nodes > 0 && onset_time_ < 0) onset_time_ = t;
@@ -549,7 +590,7 @@ void MultiVelocityContact<Dim>::end_of_step(StepContext<Dim>& ctx) {
 
 template <int Dim>
 void MultiVelocityContact<Dim>::write_forces(Real time) {
-  if (!csv_.is_open()) {  // opened at the first row: building a simulation (mpm check) writes nothing
+  if (!csv_.is_open() && writes_files_) {  // opened at the first row: building a simulation (mpm check) writes nothing
     const std::filesystem::path file(settings_.force_file);
     if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
     csv_.open(file);
@@ -569,6 +610,7 @@ void MultiVelocityContact<Dim>::write_forces(Real time) {
     const Vec<Dim> f = impulse / span;
     const Real fn = normal / span;
     const Real ft = std::sqrt(std::max<Real>(0, f.squaredNorm() - fn * fn));
+    if (!writes_files_) return;  // rank 0 of a distributed run writes the rows (every rank holds the same sums)
     csv_ << time << ',' << body << ',' << other << ',' << fn << ',' << ft;
     for (int d = 0; d < Dim; ++d) csv_ << ',' << f[d];
     csv_ << '\n';
@@ -593,7 +635,7 @@ void MultiVelocityContact<Dim>::write_forces(Real time) {
     const bool rigid = o >= body_count_ || rigid_of_[o] >= 0;
     if (rigid) row(name_of(o), "all", reaction[o], touched[o] ? reaction_n[o] : 0);
   }
-  csv_.flush();
+  if (writes_files_) csv_.flush();
 }
 
 template <int Dim>
@@ -651,7 +693,7 @@ void MultiVelocityContact<Dim>::restore_state(const StateArchive& archive, const
     f.tangential = values[Dim + 1];
     last_forces_.push_back(f);
   }
-  if (settings_.force_file.empty()) return;
+  if (settings_.force_file.empty() || !writes_files_) return;
   const io::FileMark mark = io::load_mark(archive, prefix + "force_file");
   if (csv_.is_open()) csv_.close();
   io::continue_file(mark, settings_.force_file);

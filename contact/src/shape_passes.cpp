@@ -24,8 +24,8 @@ class Passes final : public ShapePasses<Dim> {
   void mass_gradient(const Body<Dim>& body, const GridGeometry<Dim>& g, std::vector<VecU<Dim>>& out) const override {
     const auto& p = body.particles;
     VecU<Dim>* n = out.data();
-    // Same slab colouring as the P2G scatter: race-free and deterministic.
-    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+    // Same slab colouring as the P2G scatter: race-free and deterministic (ghost nodes exchanged when distributed).
+    for_each_slab_coloured(body.bins, {HaloArray::of(out)}, [&](const Index* index, Index count) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {
@@ -43,7 +43,8 @@ class Passes final : public ShapePasses<Dim> {
     const auto& p = body.particles;
     Real* e = out.data();
     const Real* hoop = axisym::hoop_stretch_of(p);
-    for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+    // a maximum, not a sum: the copy-not-add exchange keeps it the serial one all the same
+    for_each_slab_coloured(body.bins, {HaloArray::of(out)}, [&](const Index* index, Index count) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {

@@ -79,15 +79,13 @@ void EnergySentinel<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStage stag
 
 template <int Dim>
 void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
-  // The rigid partners' work of the step: F . V dt (a rigid body's particles all move with its velocity).
+  // The rigid partners' work of the step: F . V dt. A plane's velocity at the middle of the step; a rigid body's
+  // at its end, the velocity the contact module has just given its particles (asked of the module, not read from
+  // a particle: in a distributed run a rank may hold none of them). The force is the same on every rank.
   for (const auto& partner : partners_) {
     const Vec<Dim> force = partner.provider->last_reaction(partner.index).force;
-    const auto& rigid =
-        partner.body >= 0 ? ctx.bodies[static_cast<std::size_t>(partner.body)].particles : ctx.bodies.front().particles;
-    const Vec<Dim> velocity = partner.body >= 0 && rigid.size() > 0
-                                  ? Vec<Dim>(rigid.v[0])
-                                  : partner.provider->partner_velocity(partner.index, ctx.time + 0.5 * ctx.dt);
-    work_ += force.dot(velocity) * ctx.dt;
+    const Real t = partner.body >= 0 ? ctx.time + ctx.dt : ctx.time + 0.5 * ctx.dt;
+    work_ += force.dot(partner.provider->partner_velocity(partner.index, t)) * ctx.dt;
   }
   work_ += body_force_start_ + 0.5 * ctx.dt * body_force_power(ctx.bodies, ctx.comm);
   if (ctx.step % interval_ != 0) return;

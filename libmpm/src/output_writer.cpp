@@ -28,8 +28,6 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
           "output.grid: the grid is not written in a distributed run yet ({} ranks); leave output.grid off or "
           "run on one process",
           comm_->size()));
-    if (restart)
-      throw std::invalid_argument("OutputWriter: a distributed run cannot continue a checkpoint's output yet");
   }
   // `domains` is not a point field: the particle domains go to a cell file of their own per frame.
   if (const auto it = std::find(fields_.begin(), fields_.end(), "domains"); it != fields_.end()) {
@@ -43,9 +41,13 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
       "total_energy", "momentum_x",    "momentum_y",     "momentum_z",    "mass",
       "plastic_work", "thermal_energy"};
   if (restart) {
-    std::filesystem::create_directories(directory_);
-    energy_ =
-        std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns, io::load_mark(*restart, "output/energy"));
+    // Rank 0 of a distributed run continues the files; every rank continues the schedule.
+    io::write_collectively(comm_, "continuing the output in '" + directory_.string() + "'", [&] {
+      if (distributed() && comm_->rank() != 0) return;
+      std::filesystem::create_directories(directory_);
+      energy_ =
+          std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns, io::load_mark(*restart, "output/energy"));
+    });
     restore_state(*restart);
   } else {
     io::write_collectively(comm_, "creating the output directory '" + directory_.string() + "'", [&] {

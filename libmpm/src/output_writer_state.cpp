@@ -36,13 +36,16 @@ void restore_frames(const StateArchive& archive, const std::string& name, io::Pv
   pvd.write();
 }
 
-/// N of a frame file PREFIX_NNNNNN.vtu, PREFIX_grid_NNNNNN.vti or PREFIX_domains_NNNNNN.vtu; -1 otherwise.
+/// N of a frame file PREFIX_NNNNNN.vtu, PREFIX_grid_NNNNNN.vti or PREFIX_domains_NNNNNN.vtu, or of a distributed
+/// run's PREFIX_NNNNNN.pvtu and its folder of pieces PREFIX_NNNNNN (and the domains'); -1 otherwise.
 int frame_number(const std::string& name, const std::string& prefix) {
   if (!name.starts_with(prefix + "_")) return -1;
   std::string rest = name.substr(prefix.size() + 1);
   for (const char* kind : {"grid_", "domains_"})
-    if (rest.starts_with(kind) && rest.size() == std::string(kind).size() + 10)
+    if (rest.starts_with(kind) && rest.size() >= std::string(kind).size() + 6)
       rest = rest.substr(std::string(kind).size());
+  if (rest.size() == 11 && rest.ends_with(".pvtu")) rest = rest.substr(0, 6) + ".vtu";
+  if (rest.size() == 6) rest += ".vtu";  // a folder of pieces
   if (rest.size() != 10 || !(rest.ends_with(".vtu") || rest.ends_with(".vti"))) return -1;
   for (int k = 0; k < 6; ++k)
     if (!std::isdigit(static_cast<unsigned char>(rest[k]))) return -1;
@@ -53,12 +56,11 @@ int frame_number(const std::string& name, const std::string& prefix) {
 
 template <int Dim>
 void OutputWriter<Dim>::save_state(StateArchive& archive) const {
-  if (distributed())
-    throw std::logic_error("OutputWriter::save_state: a distributed run's output is not checkpointed yet");
   archive.put_integer("output/frame", frame_);
   archive.put_number("output/interval", interval_);
   archive.put_number("output/next_time", next_time_);
   archive.put_number("output/last_written", last_written_);
+  if (!energy_) return;  // a distributed run's other ranks: rank 0 writes the checkpoint and its files' marks
   io::save_mark(archive, "output/energy", energy_->mark());
   save_frames(archive, "output/particles_pvd", particles_pvd_);
   if (grid_pvd_) save_frames(archive, "output/grid_pvd", *grid_pvd_);
@@ -75,6 +77,7 @@ void OutputWriter<Dim>::restore_state(const StateArchive& archive) {
     if (interval_ > 0)
       while (next_time_ <= last_written_ * (1 + 1e-12)) next_time_ += interval_;
   }
+  if (!energy_) return;  // a distributed run's other ranks: the files are rank 0's
   restore_frames(archive, "output/particles_pvd", particles_pvd_);
   if (grid_pvd_) restore_frames(archive, "output/grid_pvd", *grid_pvd_);
   if (domains_pvd_) restore_frames(archive, "output/domains_pvd", *domains_pvd_);
@@ -83,7 +86,7 @@ void OutputWriter<Dim>::restore_state(const StateArchive& archive) {
   std::vector<std::filesystem::path> stale;
   for (const auto& entry : std::filesystem::directory_iterator(directory_))
     if (frame_number(entry.path().filename().string(), prefix_) >= frame_) stale.push_back(entry.path());
-  for (const auto& file : stale) std::filesystem::remove(file);
+  for (const auto& file : stale) std::filesystem::remove_all(file);
 }
 
 template void OutputWriter<1>::save_state(StateArchive&) const;

@@ -39,34 +39,42 @@ const VecU<Dim>* owner_positions(const Scheme<Dim>& scheme, const ParticleSet<Di
 }  // namespace
 
 template <int Dim>
-void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
-  if (!comm || comm->size() == 1) return;
-  if (step_ != 0 || comm_) throw std::logic_error("Simulation::distribute: call once, before the first step");
+std::string Simulation<Dim>::why_not_distributed(int ranks) const {
   if (!scheme_->runs_distributed())
-    throw std::invalid_argument(fmt::format(
+    return fmt::format(
         "scheme '{}' does not run on several ranks yet (distributed runs take usl, musl, usf and tlmpm, issue 18); "
         "run it in one process",
-        scheme_->name()));
+        scheme_->name());
   for (const auto& m : hooks_.all())
-    if (!m->runs_distributed())
-      throw std::invalid_argument(fmt::format(
-          "module '{}' does not run on several ranks yet (its scatters and sums have no ghost exchange, issue 18); "
-          "run this scene in one process",
-          m->name()));
+    if (const std::string why = m->why_not_distributed(); !why.empty())
+      return fmt::format("module '{}' does not run on several ranks yet ({}); run this scene in one process", m->name(),
+                         why);
   const auto& g = grid_.geometry;
   const int T = scheme_->slab_cells();
   const int slabs = (g.cells(Dim - 1) + T - 1) / T;
-  if (comm->size() > slabs)
-    throw std::invalid_argument(fmt::format(
+  if (ranks > slabs)
+    return fmt::format(
         "{} ranks for {} slabs of {} cells along the grid's last axis: a rank owns at least one slab; start at most "
         "{} ranks",
-        comm->size(), slabs, T, slabs));
+        ranks, slabs, T, slabs);
+  return {};
+}
+
+template <int Dim>
+void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
+  if (!comm || comm->size() == 1) return;
+  // (a restart restores the state of step N first: its storage order is then the one-process order to distribute)
+  if (comm_) throw std::logic_error("Simulation::distribute: call once, before the first step of this process");
+  if (const std::string why = why_not_distributed(comm->size()); !why.empty()) throw std::invalid_argument(why);
+  const auto& g = grid_.geometry;
+  const int T = scheme_->slab_cells();
   for (auto& b : bodies_) {
     // Before the first sort the storage order is the scene's: the key is the place in it.
     auto& key = b.particles.template add_field<std::uint64_t>(scatter_key_field);
     for (Index i = 0; i < b.particles.size(); ++i) key[i] = static_cast<std::uint64_t>(i);
   }
   comm_ = std::move(comm);
+  for (const auto& m : hooks_.all()) m->set_writes_files(comm_->rank() == 0);
   const auto [below, above] = scheme_->slab_reach();
   halo_ = std::make_unique<SlabHalo>(*comm_, balanced_slabs(), T, below, above, g.nodes[Dim - 1], g.stride[Dim - 1]);
   for (auto& b : bodies_) b.bins.halo = halo_.get();
@@ -235,6 +243,7 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) const {
 #define MPM_SIMULATION_DISTRIBUTED(D)                                         \
   template void set_scatter_keys<D>(ParticleSet<D>&, const GridGeometry<D>&); \
   template void Simulation<D>::distribute(std::shared_ptr<Communicator>);     \
+  template std::string Simulation<D>::why_not_distributed(int) const;         \
   template std::vector<int> Simulation<D>::balanced_slabs() const;            \
   template void Simulation<D>::reassign_slabs(std::vector<int>);              \
   template bool Simulation<D>::migrate();                                     \

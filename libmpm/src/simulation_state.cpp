@@ -4,10 +4,16 @@
 // (the periodic sort by cell reorders them, and a rank owns only some), together with the ids in their
 // storage order. The restore puts them back in that storage order: the scatter visits particles in storage
 // order, and a different order would sum the nodal contributions in another order (other round-off).
+//
+// A distributed run's checkpoint is the one-process run's: rank 0 gathers every rank's particles and merges them
+// by the scatter key, whose order is the one-process storage order (docs/distributed.md §5.3), and leaves the key
+// itself out; a restart on any number of ranks then distributes that state anew.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
+#include <optional>
 
 #include "mpm/simulation.hpp"
 
@@ -51,6 +57,40 @@ ArchivedArray packed_field(const FieldLayout& layout, std::vector<std::byte> byt
 
 }  // namespace
 
+namespace {
+
+/// Rank 0: every rank's particles of `local` in one set, in the order of the scatter key (the one-process storage
+/// order). Other ranks: nothing (they send theirs). A collective call.
+template <int Dim>
+std::optional<ParticleSet<Dim>> gather_on_rank_0(const ParticleSet<Dim>& local, Communicator& comm) {
+  std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(comm.size()));
+  if (comm.rank() != 0) {
+    std::vector<Index> all(static_cast<std::size_t>(local.size()));
+    std::iota(all.begin(), all.end(), Index{0});
+    const auto count = static_cast<std::int64_t>(all.size());
+    out[0].resize(sizeof count);
+    std::memcpy(out[0].data(), &count, sizeof count);
+    local.pack(all, out[0]);
+  }
+  const auto in = comm.all_to_all(std::move(out));
+  if (comm.rank() != 0) return std::nullopt;
+  ParticleSet<Dim> p = local;
+  for (const auto& buffer : in) {
+    if (buffer.empty()) continue;
+    std::int64_t count = 0;
+    std::memcpy(&count, buffer.data(), sizeof count);
+    p.append_packed(std::span<const std::byte>(buffer).subspan(sizeof count), count);
+  }
+  const auto& key = p.template field<std::uint64_t>(scatter_key_field);
+  std::vector<Index> order(static_cast<std::size_t>(p.size()));
+  std::iota(order.begin(), order.end(), Index{0});
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return key[a] < key[b]; });
+  p.gather(order);
+  return p;
+}
+
+}  // namespace
+
 template <int Dim>
 void Simulation<Dim>::save_state(StateArchive& archive) const {
   archive.put_integer("simulation/dimension", Dim);
@@ -60,9 +100,15 @@ void Simulation<Dim>::save_state(StateArchive& archive) const {
   archive.put_integer("simulation/wave_speed_finite", wave_speed_.finite ? 1 : 0);
   const auto prefixes = body_prefixes(bodies_);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const auto& p = bodies_[b].particles;
+    std::optional<ParticleSet<Dim>> gathered;
+    if (comm_) {  // a distributed run: rank 0 saves every rank's particles, the others only take part
+      gathered = gather_on_rank_0(bodies_[b].particles, *comm_);
+      if (!gathered) continue;
+    }
+    const auto& p = gathered ? *gathered : bodies_[b].particles;
     const std::vector<Index> by_id = id_order(p);
     for (const auto& layout : p.field_layout()) {
+      if (layout.name == scatter_key_field) continue;  // a distributed run's own (given anew by distribute())
       if (layout.name == storage_order_entry)
         throw std::logic_error(fmt::format("a particle field may not be named '{}'", storage_order_entry));
       std::vector<std::byte> bytes;

@@ -51,6 +51,9 @@ TEST(Cli, BadCommandLineExitsWithTwo) {
   r = mpm("run " + (data / "good_scene_2d.yaml").string() + " --threads 0", dir);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+  r = mpm("run " + (data / "good_scene_2d.yaml").string() + " --rebalance-every -1", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--rebalance-every"), std::string::npos) << r.err;
   fs::remove_all(dir);
 }
 

@@ -3,7 +3,8 @@
 
   compare_runs.py SERIAL_DIR DISTRIBUTED_DIR
 
-energy.csv must be byte-equal; the .pvd files must list the same frames at the same times; every frame of the
+energy.csv and every other CSV of the serial run (histories, the contact force file) must be byte-equal in the
+distributed run's folder; the .pvd files must list the same frames at the same times; every frame of the
 distributed run (a .pvtu of one piece per rank) must read back, with python3-vtk9, every particle of the serial
 frame (a .vtu) with every point array equal bit for bit once both are sorted by (body, id). Exit status 0 when all
 holds, 1 otherwise (the differences listed).
@@ -44,9 +45,13 @@ def sorted_by_body_and_id(arrays):
 
 def main(serial, distributed):
     failures = []
-    if open(os.path.join(serial, "energy.csv"), "rb").read() != open(os.path.join(distributed, "energy.csv"),
-                                                                     "rb").read():
-        failures.append("energy.csv differs")
+    tables = sorted(f for f in os.listdir(serial) if f.endswith(".csv"))
+    for table in tables:
+        other = os.path.join(distributed, table)
+        if not os.path.exists(other):
+            failures.append(f"{table} is missing")
+        elif open(os.path.join(serial, table), "rb").read() != open(other, "rb").read():
+            failures.append(f"{table} differs")
     a, b = frames(serial), frames(distributed)
     if [t for t, _ in a] != [t for t, _ in b]:
         failures.append(f"the .pvd files list other times: {len(a)} and {len(b)} frames")
@@ -63,7 +68,7 @@ def main(serial, distributed):
     for f in failures[:20]:
         print("DIFFERENT:", f)
     if not failures:
-        print(f"{len(a)} frames of {particles} particles and energy.csv: identical bits")
+        print(f"{len(a)} frames of {particles} particles and {', '.join(tables)}: identical bits")
     return 1 if failures else 0
 
 

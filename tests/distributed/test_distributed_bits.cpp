@@ -8,9 +8,15 @@
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 
+#include <unistd.h>
+
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
 #include <map>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -31,7 +37,29 @@ struct Case {
   mpm::VelocityTransfer transfer = mpm::VelocityTransfer::flip;
   int coarsen = 1;    ///< cells this many times larger than the example's (fewer particles)
   int rebalance = 0;  ///< steps between the balance checks (Simulation::set_rebalance_interval), 0 none
+  /// Changes to the example's text (modules: contact, thermal), applied before it is parsed; none when empty.
+  std::function<std::string(std::string)> edit;
+  /// Whether to compare the contact force CSV (`contact.force_file`, written in the output directory).
+  std::string force_file;
+  /// Whether only the schemes' scatters exchange ghost nodes (the halo model's count is then checked); modules
+  /// add scatters of their own (contact normals, thermal capacities), which the model below does not count.
+  bool halo_model = true;
 };
+
+/// `text` with `from` replaced by `to` (every occurrence; at least one must exist).
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  std::size_t at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error("test scene: '" + from + "' not found");
+  for (; at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+  return text;
+}
+
+std::string file_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
 
 /// id -> every field's bytes (the serial layout's fields, by name), per body.
 using ParticleBytes = std::vector<std::map<std::uint32_t, std::string>>;
@@ -91,8 +119,10 @@ std::string audit_bytes(const mpm::Simulation<Dim>& sim) {
 }
 
 template <int Dim>
-bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunicator>& comm, bool reassign) {
-  mpm::SceneDescription scene = mpm::load_scene(std::string(MPM_SOURCE_DIR) + "/examples/" + c.file);
+bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunicator>& comm, bool reassign,
+              const std::filesystem::path& scratch) {
+  const std::string path = std::string(MPM_SOURCE_DIR) + "/examples/" + c.file;
+  mpm::SceneDescription scene = c.edit ? mpm::parse_scene(c.edit(file_bytes(path)), path) : mpm::load_scene(path);
   scene.solver.scheme = c.scheme;
   scene.solver.shape_function = c.shape;
   scene.solver.velocity_transfer = c.transfer;
@@ -105,7 +135,9 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
   std::vector<std::string> serial_audit;
   ParticleBytes serial;
   std::vector<std::string> fields;
+  const std::filesystem::path serial_output = scratch / "serial", distributed_output = scratch / "distributed";
   {
+    scene.output.directory = serial_output.string();
     auto sim = mpm::app::build_simulation<Dim>(scene);
     for (const auto& l : sim->bodies().front().particles.field_layout()) fields.push_back(l.name);
     if (rank == 0) {
@@ -116,6 +148,7 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
       unpack_bodies(*sim, fields, pack_bodies(*sim, fields), serial);
     }
   }
+  scene.output.directory = distributed_output.string();
   auto sim = mpm::app::build_simulation<Dim>(scene);
   sim->distribute(comm);
   sim->set_rebalance_interval(c.rebalance);
@@ -150,7 +183,7 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
     }
   }
   halo_bytes = sim->halo_bytes_sent();
-  if (halo_bytes != model_bytes) {
+  if (c.halo_model && halo_bytes != model_bytes) {
     fmt::print("{}: rank {} sent {} halo bytes, the model counts {}\n", c.name, rank, halo_bytes, model_bytes);
     ok = false;
   }
@@ -187,6 +220,13 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
           return n;
         }(),
         fields.size(), halo_bytes, ok ? "identical bits" : "DIFFERENT");
+    if (!c.force_file.empty()) {
+      const std::string serial_csv = file_bytes(serial_output / c.force_file);
+      const bool same = !serial_csv.empty() && serial_csv == file_bytes(distributed_output / c.force_file);
+      fmt::print("{}: the force CSV ({} bytes) {}\n", c.name, serial_csv.size(),
+                 same ? "is byte-equal" : "DIFFERS (or is empty)");
+      ok = ok && same;
+    }
   }
   return comm->any(!ok) == false;
 }
@@ -206,6 +246,45 @@ int main(int argc, char** argv) {
   tbb::global_control threads_control(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   using mpm::SchemeKind;
   using mpm::VelocityTransfer;
+  // Love & Sulsky's colliding cylinders, explicit, with frictionless contact and a floor with friction the left
+  // one reaches (issue 18 §5: contact and its force CSV).
+  const auto cylinders_with_contact = [](std::string text) {
+    text = replaced(text, "scheme: implicit", "scheme: musl");
+    text = replaced(text, "  implicit: {newton_rtol: 1.0e-13}\n", "");
+    text = replaced(text, "  dt: 0.015", "  cfl: 0.5");
+    return text +
+           "contact:\n  planes: [{name: floor, point: [0, -1.02], normal: [0, 1], friction: 0.2}]\n"
+           "  force_file: forces.csv\n  force_interval: 0.02\n";
+  };
+  // The ring crushed between rigid platens (friction, particle-gap onset), the platens 100 times faster so that
+  // they touch the ring within the test's steps; no histories (not taken by a distributed run yet).
+  const auto ring_crush_fast = [](std::string text) {
+    text = replaced(text, "\"-5\"]", "\"-500\"]");
+    text = replaced(text, "[\"0\", \"5\"]", "[\"0\", \"500\"]");
+    text = replaced(text, "force_interval: 1.0e-5", "force_interval: 2.0e-7");
+    return text.substr(0, text.find("  histories:"));
+  };
+  const auto without_grid_output = [](std::string text) { return replaced(text, "  grid: true", "  grid: false"); };
+  // A hot block under a cold one, pressed together, with a finite contact conductance: each body has its own
+  // nodal temperatures and heat crosses the interface (eqs TC.1-TC.2).
+  const auto hot_under_cold = [](const std::string&) {
+    return std::string(R"(dimension: 2
+grid: {origin: [0, 0], extent: [0.02, 0.04], cell_size: 0.001}
+materials:
+  hot: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3, specific_heat: 1,
+        thermal_conductivity: 2}
+  cold: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3, specific_heat: 1,
+         thermal_conductivity: 1}
+bodies:
+  - {name: hot, material: hot, shape: {type: box, min: [0.002, 0.002], max: [0.018, 0.02]}, particles_per_cell: 2,
+     velocity: [0, 1]}
+  - {name: cold, material: cold, shape: {type: box, min: [0.002, 0.0205], max: [0.018, 0.038]},
+     particles_per_cell: 2}
+solver: {scheme: musl, shape_function: linear, cfl: 0.5, end_time: 1}
+thermal: {initial_temperature: "y < 0.02 ? 400 : 300"}
+contact: {thermal_conductance: 1.0e3, force_file: forces.csv}
+)");
+  };
   const std::vector<Case> cases = {
       {"2D USL linear FLIP (two disks)", "02_two_disks/scene.yaml", 2, 60, SchemeKind::usl, "linear"},
       {"2D MUSL cubic APIC (two disks)", "02_two_disks/scene.yaml", 2, 40, SchemeKind::musl, "cubic_bspline",
@@ -220,15 +299,62 @@ int main(int argc, char** argv) {
        VelocityTransfer::flip, 2},
       {"3D MUSL linear (Johnson-Cook Taylor anvil, rebalanced every 5 steps)", "05_taylor_anvil/musl.yaml", 3, 30,
        SchemeKind::musl, "linear", VelocityTransfer::flip, 2, 5},
+      {"2D USL CPDI Q4 with tracked corners (two disks)",
+       "02_two_disks/scene.yaml",
+       2,
+       40,
+       SchemeKind::usl,
+       "cpdi_q4",
+       VelocityTransfer::flip,
+       1,
+       0,
+       {},
+       "",
+       true},
+      {"2D MUSL linear, frictionless contact and a floor with friction (colliding cylinders)",
+       "18_colliding_cylinders/scene.yaml", 2, 40, SchemeKind::musl, "linear", VelocityTransfer::flip, 1, 0,
+       cylinders_with_contact, "forces.csv", false},
+      {"2D USL GIMP, rigid platens, friction, particle-gap onset (ring crush)", "09_ring_crush/scene.yaml", 2, 40,
+       SchemeKind::usl, "gimp", VelocityTransfer::flip, 1, 0, ring_crush_fast, "ring_forces.csv", false},
+      {"2D MUSL linear heat conduction, held face temperatures (heat plate)", "10_heat_plate/plate.yaml", 2, 40,
+       SchemeKind::musl, "linear", VelocityTransfer::flip, 1, 0, without_grid_output, "", false},
+      {"3D MUSL linear thermal Taylor anvil (plastic heating, thermal softening)",
+       "11_thermal_taylor/musl.yaml",
+       3,
+       20,
+       SchemeKind::musl,
+       "linear",
+       VelocityTransfer::flip,
+       2,
+       0,
+       {},
+       "",
+       false},
+      {"2D MUSL linear, heat across contact with a finite conductance (hot block under a cold one)",
+       "02_two_disks/scene.yaml", 2, 40, SchemeKind::musl, "linear", VelocityTransfer::flip, 1, 0, hot_under_cold,
+       "forces.csv", false},
   };
+  // Each case's output folders (the force CSVs), in the system's temporary folder under rank 0's process id.
+  std::vector<std::byte> id(sizeof(int));
+  const int pid = static_cast<int>(getpid());
+  std::memcpy(id.data(), &pid, sizeof pid);
+  comm->broadcast(id, 0);
+  int root_pid = 0;
+  std::memcpy(&root_pid, id.data(), sizeof root_pid);
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / fmt::format("mpm_distributed_bits_{}", root_pid);
   bool ok = true;
-  for (const auto& c : cases) {
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const Case& c = cases[k];
+    const std::filesystem::path folder = scratch / std::to_string(k);
     try {
-      ok = (c.dimension == 2 ? run_case<2>(c, comm, reassign) : run_case<3>(c, comm, reassign)) && ok;
+      ok = (c.dimension == 2 ? run_case<2>(c, comm, reassign, folder) : run_case<3>(c, comm, reassign, folder)) && ok;
     } catch (const std::exception& e) {
       fmt::print("{}: rank {}: {}\n", c.name, comm->rank(), e.what());
       comm->abort(1);
     }
   }
+  comm->barrier();
+  if (comm->rank() == 0) std::filesystem::remove_all(scratch);
   return ok ? 0 : 1;
 }

@@ -49,6 +49,8 @@ class CpdiCornerTracking final : public Module<Dim> {
   explicit CpdiCornerTracking(int corners) : corners_(corners) {}
   std::string_view name() const override { return "cpdi_corner_tracking"; }
   unsigned phases() const override { return phase_end_of_step; }
+  /// Each corner reads the nodes of its particle's stencil (within the rank's reach, complete after the halo).
+  std::string why_not_distributed() const override { return {}; }
 
   void end_of_step(StepContext<Dim>& ctx) override {
     for (auto& body : ctx.bodies) {

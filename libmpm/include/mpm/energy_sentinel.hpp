@@ -58,9 +58,9 @@ class EnergySentinel final : public Module<Dim> {
                  bool boundary_work, std::vector<Partner> partners, int interval = default_interval);
 
   std::string_view name() const override { return "energy_sentinel"; }
-  /// Its sums are reduced over the ranks (StepContext::comm); a rigid partner's force is a contact module's,
-  /// which a distributed run does not take yet.
-  bool runs_distributed() const override { return partners_.empty(); }
+  /// Its sums are reduced over the ranks (StepContext::comm); a partner's force is the same on every rank (the
+  /// contact module reduces it).
+  std::string why_not_distributed() const override { return {}; }
   int interval() const { return interval_; }
   unsigned phases() const override {
     return (boundary_work_ ? phase_grid_velocity : 0u) | phase_before_step | phase_end_of_step;

@@ -47,9 +47,13 @@ class Module {
   virtual void end_of_step(StepContext<Dim>&) {}
   /// Before any transfer of the step (e.g. to set the particle field "body_force" for time t).
   virtual void before_step(StepContext<Dim>&) {}
-  /// Whether the module keeps its results independent of the rank count in a distributed run (its scatters
-  /// exchange ghost nodes, its sums are reduced through StepContext::comm); Simulation::distribute refuses the others.
-  virtual bool runs_distributed() const { return false; }
+  /// Empty when the module keeps its results independent of the rank count in a distributed run (its scatters
+  /// exchange ghost nodes, its sums are reduced through StepContext::comm); else why not, for the message with
+  /// which Simulation::distribute refuses the run.
+  virtual std::string why_not_distributed() const { return "its scatters and sums have no ghost exchange"; }
+  /// False on every rank but 0 of a distributed run (Simulation::distribute, and before a restart's
+  /// restore_state): the module computes alike but leaves its own files (contact's force CSV) to rank 0.
+  virtual void set_writes_files(bool /*on*/) {}
   /// The largest stable time step this module allows (s); infinity when it imposes none.
   virtual Real stable_time_step(const std::vector<Body<Dim>>&) const { return std::numeric_limits<Real>::infinity(); }
   /// What stable_time_step() bounds, for the log ("diffusion bound h^2 rho c / (2 dim k)").

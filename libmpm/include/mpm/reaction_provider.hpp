@@ -29,8 +29,8 @@ class ReactionProvider {
   /// The force partner `k` (an index into reaction_partners()) exerted in the last step.
   virtual Reaction<Dim> last_reaction(int k) const = 0;
   /// The velocity of partner `k` at time `t` (m/s), for the work it does on the bodies (the energy sentinel,
-  /// energy_sentinel.hpp, asks at the middle of each step). A rigid body's is read from its particles; this is
-  /// asked for the other partners (planes). The default, at rest, is right for a partner that does not move.
+  /// energy_sentinel.hpp: a plane's at the middle of each step, a rigid body's at its end). The default, at rest,
+  /// is right for a partner that does not move.
   virtual Vec<Dim> partner_velocity(int /*k*/, Real /*t*/) const { return Vec<Dim>::Zero(); }
 };
 

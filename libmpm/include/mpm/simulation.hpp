@@ -56,6 +56,8 @@ class Simulation {
   /// Throws std::invalid_argument (on every rank alike) for what cannot run distributed yet: a scheme or module
   /// that has no ghost exchange, or more ranks than slabs.
   void distribute(std::shared_ptr<Communicator> comm);
+  /// Empty when the run can be distributed over `ranks` ranks, else why not (what distribute() would throw).
+  std::string why_not_distributed(int ranks) const;
   /// The run's other ranks, or null in one process.
   Communicator* communicator() const { return comm_.get(); }
   /// The distributed run's slab ownership, or null.

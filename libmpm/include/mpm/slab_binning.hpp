@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -88,7 +89,7 @@ void bin_by_slab(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab
 /// Calls body(indices, count) for every slab, even slabs in parallel first, then odd slabs. `written`: the nodal
 /// arrays the body adds to; in a distributed run their ghost nodes are exchanged after each colour (slab_halo.hpp).
 template <class Body>
-void for_each_slab_coloured(const SlabBins& bins, std::initializer_list<HaloArray> written, Body&& body) {
+void for_each_slab_coloured(const SlabBins& bins, std::span<const HaloArray> written, Body&& body) {
   for (int colour = 0; colour < 2; ++colour) {
     const int n = (bins.slab_count - colour + 1) / 2;
     tbb::parallel_for(0, n, [&](int k) {
@@ -96,8 +97,12 @@ void for_each_slab_coloured(const SlabBins& bins, std::initializer_list<HaloArra
       const Index begin = bins.offsets[s], end = bins.offsets[s + 1];
       if (end > begin) body(bins.order.data() + begin, end - begin);
     });
-    if (bins.halo) bins.halo->exchange(colour, std::span<const HaloArray>(written.begin(), written.size()));
+    if (bins.halo) bins.halo->exchange(colour, written);
   }
+}
+template <class Body>
+void for_each_slab_coloured(const SlabBins& bins, std::initializer_list<HaloArray> written, Body&& body) {
+  for_each_slab_coloured(bins, std::span<const HaloArray>(written.begin(), written.size()), std::forward<Body>(body));
 }
 
 /// A scatter whose arrays have no halo yet (the modules that a distributed run refuses, Simulation::distribute).

@@ -52,6 +52,7 @@ class EnergyHistory final : public History<Dim> {
       for (Index i = 0; i < p.size(); ++i)
         for (int d = 0; d < Dim; ++d) first[d] += p.mass[i] * p.x[i][d];
     }
+    if (Communicator* comm = sim.communicator()) comm->sum(first);  // every rank's particles
     for (int d = 0; d < Dim; ++d) row.push_back(e.mass > 0 ? first[d].value() / e.mass : 0);
     for (int d = 0; d < Dim; ++d) row.push_back(e.mass > 0 ? e.momentum[d] / e.mass : 0);
   }

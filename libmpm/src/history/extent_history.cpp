@@ -65,6 +65,14 @@ class ExtentHistory final : public History<Dim> {
         hi = std::max(hi, v);
       }
     }
+    if (Communicator* comm = sim.communicator()) {  // every rank's particles
+      double low[] = {lo}, high[] = {hi};
+      std::int64_t n[] = {static_cast<std::int64_t>(count)};
+      comm->min(low);
+      comm->max(high);
+      comm->sum(n);
+      lo = low[0], hi = high[0], count = static_cast<Index>(n[0]);
+    }
     row.push_back(count ? lo : 0);
     row.push_back(count ? hi : 0);
     if (!s_.radial) row.push_back(count ? hi - lo : 0);  // the length along the axis

@@ -10,20 +10,28 @@ namespace mpm {
 
 template <int Dim>
 HistoryWriter<Dim>::HistoryWriter(const std::filesystem::path& directory, std::vector<BuiltHistory<Dim>> built,
-                                  const StateArchive* restart) {
+                                  const StateArchive* restart, bool writes_files) {
   if (built.empty()) return;
-  std::filesystem::create_directories(directory);
+  if (writes_files) std::filesystem::create_directories(directory);
   for (auto& b : built) {
     std::vector<std::string> columns{"time [s]", "step"};
     for (auto& c : b.history->columns()) columns.push_back(std::move(c));
     const Real interval = b.description->interval;
     const std::filesystem::path file = directory / (b.description->name + ".csv");
     if (!restart || !restart->contains(state_prefix(b.description->name) + "next_time")) {  // new in a fork
-      entries_.push_back({std::move(b), columns, io::CsvLog(file, columns), interval, 0, -1, false, {}});
+      entries_.push_back({std::move(b),
+                          columns,
+                          writes_files ? std::optional<io::CsvLog>(io::CsvLog(file, columns)) : std::nullopt,
+                          interval,
+                          0,
+                          -1,
+                          false,
+                          {}});
       continue;
     }
     const std::string prefix = state_prefix(b.description->name);
-    io::CsvLog csv(file, columns, io::load_mark(*restart, prefix + "csv"));
+    std::optional<io::CsvLog> csv;
+    if (writes_files) csv.emplace(file, columns, io::load_mark(*restart, prefix + "csv"));
     b.history->restore_state(*restart, prefix + "history/");
     entries_.push_back({std::move(b), columns, std::move(csv), interval, restart->number(prefix + "next_time"),
                         restart->number(prefix + "last_written"), restart->integer(prefix + "started") != 0,
@@ -40,7 +48,7 @@ template <int Dim>
 void HistoryWriter<Dim>::save_state(StateArchive& archive) const {
   for (const auto& e : entries_) {
     const std::string prefix = state_prefix(e.built.description->name);
-    io::save_mark(archive, prefix + "csv", e.csv.mark());
+    if (e.csv) io::save_mark(archive, prefix + "csv", e.csv->mark());
     archive.put_number(prefix + "next_time", e.next_time);
     archive.put_number(prefix + "last_written", e.last_written);
     archive.put_integer(prefix + "started", e.started ? 1 : 0);
@@ -60,7 +68,7 @@ void HistoryWriter<Dim>::write_rows(const Simulation<Dim>& sim, bool all) {
     if (!cache) cache.emplace(sim);
     std::vector<double> row{sim.time(), static_cast<double>(sim.step())};
     e.built.history->sample(sim, *cache, row);
-    e.csv.append(row);
+    if (e.csv) e.csv->append(row);
     e.last_row = std::move(row);
     e.started = true;
     e.last_written = sim.time();

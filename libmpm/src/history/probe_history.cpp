@@ -163,10 +163,13 @@ class ProbeHistory final : public History<Dim> {
 
   /// Moving least squares: the weighted linear fit a + b.(x - x0) of the particles within the radius, with
   /// weights V_p (1 - r^2/R^2)^2; its value at the point is a. Exact for fields linear in x; the weighted mean
-  /// where the particles do not span the space (fewer than Dim + 1, or on a line/plane).
+  /// where the particles do not span the space (fewer than Dim + 1, or on a line/plane). The moments are summed
+  /// exactly, so they do not depend on the particles' order nor on the ranks holding them.
   void fit_particles(const Simulation<Dim>& sim, OutputFieldCache<Dim>& cache, std::vector<double>& row) const {
     using Basis = Eigen::Matrix<double, Dim + 1, 1>;
     using Moments = Eigen::Matrix<double, Dim + 1, Dim + 1>;
+    constexpr int B = Dim + 1;
+    constexpr std::size_t moments = static_cast<std::size_t>(B) * B, rows = B;  // where the right-hand sides start
     struct Near {
       int b;
       Index i;
@@ -189,24 +192,44 @@ class ProbeHistory final : public History<Dim> {
         near.push_back({b, i, p.volume0[i] * axisym::volume_ratio(p, i, hoop) * q * q, phi});
       }
     }
-    Moments M = Moments::Zero();
-    for (const Near& n : near) M += n.w * n.phi * n.phi.transpose();
-    bool linear = static_cast<Index>(near.size()) >= Dim + 1 && M(0, 0) > 0;
+    // sums: the moments M (B x B), then each component's right-hand side (B)
+    std::vector<ExactSum> sums(moments + rows * components_.size());
+    for (const Near& n : near)
+      for (int r = 0; r < B; ++r)
+        for (int c = 0; c < B; ++c)
+          sums[rows * static_cast<std::size_t>(r) + static_cast<std::size_t>(c)] += n.w * n.phi[r] * n.phi[c];
+    for (std::size_t k = 0; k < components_.size(); ++k) {
+      const Component& c = components_[k];
+      for (const Near& n : near) {
+        const double v = values(cache, c, n.b)[n.i * c.field->components];
+        for (int r = 0; r < B; ++r) sums[moments + rows * k + static_cast<std::size_t>(r)] += n.w * v * n.phi[r];
+      }
+    }
+    std::int64_t count[] = {static_cast<std::int64_t>(near.size())};
+    if (Communicator* comm = sim.communicator()) {  // every rank's particles
+      comm->sum(sums);
+      comm->sum(count);
+    }
+    Moments M;
+    for (int r = 0; r < B; ++r)
+      for (int c = 0; c < B; ++c)
+        M(r, c) = sums[rows * static_cast<std::size_t>(r) + static_cast<std::size_t>(c)].value();
+    bool linear = count[0] >= Dim + 1 && M(0, 0) > 0;
     Eigen::LDLT<Moments> solver;
     if (linear) {
       const Eigen::SelfAdjointEigenSolver<Moments> eigen(M / M(0, 0), Eigen::EigenvaluesOnly);
       linear = eigen.eigenvalues().minCoeff() > 1e-8 * eigen.eigenvalues().maxCoeff();
       if (linear) solver.compute(M);
     }
-    for (const Component& c : components_) {
-      Basis rhs = Basis::Zero();
-      for (const Near& n : near) rhs += n.w * values(cache, c, n.b)[n.i * c.field->components] * n.phi;
-      if (near.empty() || !(M(0, 0) > 0))
+    for (std::size_t k = 0; k < components_.size(); ++k) {
+      Basis rhs;
+      for (int r = 0; r < B; ++r) rhs[r] = sums[moments + rows * k + static_cast<std::size_t>(r)].value();
+      if (count[0] == 0 || !(M(0, 0) > 0))
         row.push_back(0);
       else
         row.push_back(linear ? Basis(solver.solve(rhs))[0] : rhs[0] / M(0, 0));
     }
-    row.push_back(static_cast<double>(near.size()));
+    row.push_back(static_cast<double>(count[0]));
   }
 
   /// The linear hat of corner a of the point's cell at x (review eq. 3.1).
@@ -239,6 +262,18 @@ class ProbeHistory final : public History<Dim> {
             value[k][a] += w[a] * p.mass[i] * column[k][i * components_[k].field->components];
         }
       }
+    }
+    if (Communicator* comm = sim.communicator()) {  // every rank's particles
+      std::vector<ExactSum> all(mass.begin(), mass.end());
+      for (const auto& v : value) all.insert(all.end(), v.begin(), v.end());
+      comm->sum(all);
+      std::copy(all.begin(), all.begin() + corners, mass.begin());
+      for (std::size_t k = 0; k < value.size(); ++k)
+        std::copy(all.begin() + corners * (1 + static_cast<std::ptrdiff_t>(k)),
+                  all.begin() + corners * (2 + static_cast<std::ptrdiff_t>(k)), value[k].begin());
+      std::int64_t n[] = {static_cast<std::int64_t>(count)};
+      comm->sum(n);
+      count = static_cast<Index>(n[0]);
     }
     std::array<Real, corners> m{}, N{};
     Real weight = 0;
@@ -281,6 +316,20 @@ class ProbeHistory final : public History<Dim> {
           hi[k] = std::max(hi[k], v);
         }
       }
+    }
+    if (Communicator* comm = sim.communicator()) {  // every rank's particles
+      std::vector<ExactSum> all{volume};
+      all.insert(all.end(), weighted.begin(), weighted.end());
+      all.insert(all.end(), sum.begin(), sum.end());
+      comm->sum(all);
+      volume = all[0];
+      std::copy(all.begin() + 1, all.begin() + 1 + static_cast<std::ptrdiff_t>(n), weighted.begin());
+      std::copy(all.begin() + 1 + static_cast<std::ptrdiff_t>(n), all.end(), sum.begin());
+      comm->min(lo);
+      comm->max(hi);
+      std::int64_t c[] = {static_cast<std::int64_t>(count)};
+      comm->sum(c);
+      count = static_cast<Index>(c[0]);
     }
     const Real V = volume.value();
     for (std::size_t k = 0; k < n; ++k)

@@ -65,6 +65,9 @@ class ReactionRecorder final : public Module<Dim> {
   ReactionRecorder(int face, const ReactionProvider<Dim>* provider, int partner, const Vec3& about)
       : face_(face), provider_(provider), partner_(partner), about_(about) {}
   std::string_view name() const override { return "reaction history"; }
+  /// A face's reaction is summed over the nodes this rank owns and reduced; a partner's is the contact module's,
+  /// the same on every rank.
+  std::string why_not_distributed() const override { return {}; }
   unsigned phases() const override { return face_ >= 0 ? phase_grid_velocity : phase_end_of_step; }
 
   void on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) override {
@@ -74,6 +77,7 @@ class ReactionRecorder final : public Module<Dim> {
     const auto& g = ctx.grid.geometry;
     ctx.boundary.reactions(face_, ctx.grid.node, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time, ctx.dt,
                            [&](Index n, int c, Real R) {
+                             if (n < ctx.owned_nodes.first || n >= ctx.owned_nodes.second) return;
                              force[c] += R;
                              Vec3 r = Vec3::Zero(), f = Vec3::Zero();
                              r.template head<Dim>() = g.node_position(g.node_indices(n));
@@ -82,6 +86,14 @@ class ReactionRecorder final : public Module<Dim> {
                              const Vec3 m = r.cross(f);
                              for (int k = 0; k < 3; ++k) moment[k] += m[k];
                            });
+    if (ctx.comm) {  // every rank's nodes
+      std::array<ExactSum, Dim + 3> all;
+      std::copy(force.begin(), force.end(), all.begin());
+      std::copy(moment.begin(), moment.end(), all.begin() + Dim);
+      ctx.comm->sum(all);
+      std::copy(all.begin(), all.begin() + Dim, force.begin());
+      std::copy(all.begin() + Dim, all.end(), moment.begin());
+    }
     Reaction<Dim> step;
     for (int d = 0; d < Dim; ++d) step.force[d] = force[d].value();
     for (int k = 0; k < 3; ++k) step.first_moment[k] = moment[k].value();

@@ -37,12 +37,15 @@ class RunCheckpoints {
   /// `directory`: where checkpoints go (output.checkpoint.directory, or OUTPUT/checkpoints). With
   /// output.checkpoint in the scene, checks at once that checkpoints can be written there (SceneError at
   /// the key otherwise).
-  RunCheckpoints(const SceneDescription& scene, std::string scene_text, std::filesystem::path directory);
+  /// Without `writes_files` (every rank but 0 of a distributed run) the schedule is kept but nothing is written,
+  /// checked or removed.
+  RunCheckpoints(const SceneDescription& scene, std::string scene_text, std::filesystem::path directory,
+                 bool writes_files = true);
 
   /// A checkpoint is due after a step that reached `time` (s): its interval or its wall interval has passed.
   bool due(double time) const;
   /// Adds the run's metadata and schedule to `archive` and writes it as checkpoint_STEP.h5; then removes
-  /// the older checkpoints beyond `keep`. Returns the file.
+  /// the older checkpoints beyond `keep`. Returns the file (empty without writes_files).
   std::filesystem::path write(StateArchive& archive, long long step, double time);
   /// Continues the schedule of the checkpoint a restart read; removes the checkpoints of this directory
   /// that are later than it (the interrupted run's, which this run writes again). Returns their count.
@@ -57,6 +60,7 @@ class RunCheckpoints {
   std::filesystem::path directory_;
   double next_time_ = 0;
   Clock::time_point last_wall_;
+  bool writes_files_ = true;
 };
 
 /// The checkpoint `mpm run SCENE --restart FILE|DIR` continues: FILE, or the newest valid checkpoint of DIR (or of

@@ -100,6 +100,14 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   ~MultiVelocityContact() override;
   std::string_view name() const override { return "contact"; }
   unsigned phases() const override { return phase_after_p2g | phase_grid_velocity | phase_end_of_step; }
+  /// Its scatters (normals, gaps) name their arrays, the corrections are nodal (both sides of a rank boundary hold
+  /// the same node values), the forces and works are summed over the nodes a rank owns and reduced, and rank 0
+  /// writes the CSV. The density normals (eqs 5.9-5.11) sum a cell array in storage order: not yet.
+  void set_writes_files(bool on) override { writes_files_ = on; }
+  std::string why_not_distributed() const override {
+    return settings_.normals == NormalMethod::density ? "normals: density sums a cell array without ghost exchange"
+                                                      : std::string{};
+  }
   void after_p2g(StepContext<Dim>& ctx) override;
   void on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) override;
   void end_of_step(StepContext<Dim>& ctx) override;
@@ -132,10 +140,10 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   std::vector<std::string> reaction_partners() const override;
   /// The force partner k exerted on the deformable bodies in the last step (sum of the step's corrections).
   Reaction<Dim> last_reaction(int k) const override;
-  /// Plane k's velocity at t (the energy sentinel's work of the moving planes; rigid bodies are read from their
-  /// particles).
+  /// The prescribed velocity at t of partner k: a plane's, then a rigid body's (the energy sentinel's work).
   Vec<Dim> partner_velocity(int k, Real t) const override {
-    return k < static_cast<int>(settings_.planes.size()) ? plane_velocity(k, t) : Vec<Dim>::Zero();
+    const int planes = static_cast<int>(settings_.planes.size());
+    return k < planes ? plane_velocity(k, t) : rigid_velocity(k - planes, t);
   }
 
  private:
@@ -153,6 +161,8 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
     int slots;    ///< partners per body: bodies, then planes
     std::vector<Vec<Dim>> plane_velocity;
     const GridGeometry<Dim>* geometry = nullptr;  ///< node positions, for the moments of the forces
+    std::pair<Index, Index> owned;  ///< the nodes whose forces and work this rank sums (all in one process)
+    bool owns(Index I) const { return I >= owned.first && I < owned.second; }
   };
   /// The contact correction at every candidate node: two-body nodes (eqs 5.2-5.8), nodes of three or more
   /// bodies, nodes behind a plane; then the force log of the step.
@@ -176,6 +186,9 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   Vec<Dim> rigid_velocity(int r, Real t) const;
   Vec<Dim> plane_velocity(int k, Real t) const;
   void write_forces(Real time);
+  /// The pass's corrected-node count and work and, when it records the forces (`record`), their sums: over every
+  /// rank in a distributed run; the work is then added to work_.
+  Index reduce_step(Communicator* comm, Index corrected_nodes, bool record);
 
   std::vector<Body<Dim>>& bodies_;
   ContactSettings<Dim> settings_;
@@ -213,6 +226,9 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   };
   std::vector<StepSums> step_sums_;
   CorrectionWork work_;
+  /// The work of the corrections of the current pass, exactly (then reduced over the ranks and added to work_).
+  ExactSum remapped_work_, start_work_;
+  bool writes_files_ = true;  ///< false on every rank but 0 of a distributed run
   Real onset_time_ = -1;
   Index contact_nodes_last_ = 0;
   Real last_row_time_ = 0;

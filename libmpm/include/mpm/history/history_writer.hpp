@@ -7,6 +7,7 @@
 /// due at the same time share one output-field cache. A scene without histories builds nothing here.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,11 @@ class HistoryWriter {
   /// Writes the header of each history's CSV into `directory` (created if there is any history). Build the
   /// histories first (build_histories: it throws SceneError for a bad one), so that a refused scene writes nothing.
   /// With `restart` (a checkpoint's state, run_checkpoints.hpp), each CSV is continued from its length at the
-  /// checkpoint (continued_file.hpp) and the schedules and the histories' own state are restored.
+  /// checkpoint (continued_file.hpp) and the schedules and the histories' own state are restored. Without
+  /// `writes_files` (every rank but 0 of a distributed run) the histories are sampled alike (their sums are
+  /// collective) but no file is touched.
   HistoryWriter(const std::filesystem::path& directory, std::vector<BuiltHistory<Dim>> histories,
-                const StateArchive* restart = nullptr);
+                const StateArchive* restart = nullptr, bool writes_files = true);
   /// The CSVs' lengths, the schedules and the histories' state, as entries histories/NAME/... of a checkpoint.
   void save_state(StateArchive& archive) const;
   /// Writes a row of every history whose next time has come (of all at the first call).
@@ -41,7 +44,7 @@ class HistoryWriter {
   struct Entry {
     BuiltHistory<Dim> built;
     std::vector<std::string> columns;
-    io::CsvLog csv;
+    std::optional<io::CsvLog> csv;  ///< none on a rank that does not write
     Real interval = 0;
     Real next_time = 0;
     Real last_written = -1;

@@ -34,6 +34,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -118,6 +119,9 @@ class HeatConduction final : public Module<Dim> {
   }
 
   std::string_view name() const override { return "heat_conduction"; }
+  /// Its scatters name the arrays they write (map_temperature), every other pass is nodal or per particle, and the
+  /// thermal energy is a term of the reduced audit.
+  std::string why_not_distributed() const override { return {}; }
   unsigned phases() const override { return phase_after_p2g | (expands_ ? phase_after_g2p | phase_after_stress : 0u); }
   std::string_view time_step_bound() const override {
     return "heat conduction (diffusion bound h^2 rho c / (2 dim k))";
@@ -501,7 +505,11 @@ class HeatConduction final : public Module<Dim> {
           gamma_[i] = source_.evaluate(xyz, ctx.time);
         }
       }
-      for_each_slab_coloured(body.bins, [&](const Index* index, Index count) {
+      // the arrays this scatter adds to: their ghost nodes are exchanged in a distributed run (slab_halo.hpp)
+      std::vector<HaloArray> written{HaloArray::of(f.capacity), HaloArray::of(f.heat_content)};
+      if (heat_flow) written.push_back(HaloArray::of(f.heat_flow));
+      if (heat_flow && area) written.push_back(HaloArray::of(f.area));
+      for_each_slab_coloured(body.bins, std::span<const HaloArray>(written), [&](const Index* index, Index count) {
         axisym::StencilFor<Dim, Shape, Coords> st;
         const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
         for (Index k = 0; k < count; ++k) {
