@@ -214,9 +214,11 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
       candidates_.push_back(I);
     }
   }
-  if (settings_.onset == Onset::particle_gap) plane_reach(g);
+  if (settings_.onset == Onset::particle_gap) plane_reach(g, ctx.comm);
   bool pairs = false;
   for (const Index I : candidates_) pairs |= (is_candidate_[I] & body_pair) != 0;
+  // the passes below exchange ghost nodes: every rank takes them when any has a pair
+  if (ctx.comm) pairs = ctx.comm->any(pairs);
   if (!pairs) return;
   // Normals of every body (eq. 5.12 or 5.9-5.11), then the pair normal at two-body nodes.
   std::vector<Real> density;
@@ -273,7 +275,7 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
 }
 
 template <int Dim>
-void MultiVelocityContact<Dim>::plane_reach(const GridGeometry<Dim>& g) {
+void MultiVelocityContact<Dim>::plane_reach(const GridGeometry<Dim>& g, Communicator* comm) {
   const std::size_t planes = settings_.planes.size();
   if (planes == 0) return;
   const Index nodes = g.node_count();
@@ -289,10 +291,12 @@ void MultiVelocityContact<Dim>::plane_reach(const GridGeometry<Dim>& g) {
         plane_normal_[I] = -n;
         behind.push_back(I);
       }
+    // the extents pass exchanges ghost nodes: every rank takes it when any has a node behind the plane
+    const bool any_behind = comm ? comm->any(!behind.empty()) : !behind.empty();
     for (int k = 0; k < body_count_; ++k) {
       auto& reach = plane_reach_[P * body_count_ + k];
       reach.assign(nodes, -std::numeric_limits<Real>::infinity());
-      if (rigid_of_[k] < 0 && !behind.empty())
+      if (rigid_of_[k] < 0 && any_behind)
         passes_->extents(bodies_[k], g, plane_flag_.data(), plane_normal_.data(), 1, reach);
     }
     for (const Index I : behind) plane_flag_[I] = 0;

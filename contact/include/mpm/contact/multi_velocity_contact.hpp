@@ -149,7 +149,7 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
  private:
   void find_candidates(StepContext<Dim>& ctx);
   /// Onset particle_gap with planes: plane_reach_ of every deformable body at the candidate nodes behind each plane.
-  void plane_reach(const GridGeometry<Dim>& g);
+  void plane_reach(const GridGeometry<Dim>& g, Communicator* comm);
   void body_velocities(StepContext<Dim>& ctx, GridStage stage);
   /// What one correction pass (at one grid-velocity stage) reads: the nodal velocity it corrects, whether the
   /// forces of the step are recorded (the `updated` stage), and the planes' velocities at t + dt.
