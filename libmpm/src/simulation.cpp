@@ -140,12 +140,17 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   time_ += dt;
   ++step_;
   if (comm_) {
-    PhaseTimer timer(ctx.profile, StepPhase::migrate);
     // TLMPM's particles belong to the rank of their reference position: they never migrate, its balance never
     // decays.
     if (scheme_->reorders_particles()) {
-      migrate();
-      if (settings_.rebalance_interval > 0 && step_ % settings_.rebalance_interval == 0) rebalance();
+      {
+        PhaseTimer timer(ctx.profile, StepPhase::migrate);
+        migrate();
+      }
+      if (settings_.rebalance_interval > 0 && step_ % settings_.rebalance_interval == 0) {
+        PhaseTimer timer(ctx.profile, StepPhase::rebalance);
+        rebalance();
+      }
     }
   }
 }
