@@ -29,6 +29,8 @@ import numpy as np
 # Assumed interconnect (not measured here): an InfiniBand HDR-class link, MPI one-way latency and bandwidth.
 IB_LATENCY = 1.5e-6  # s
 IB_BANDWIDTH = 12e9  # B/s
+# Threads per rank the projection tries: at most 16 (a socket; one rank's threads share its memory).
+THREADS = [1, 2, 4, 8, 16]
 
 
 def load(path):
@@ -100,16 +102,17 @@ def fit(rows, case, bytes_per_message):
 
 
 def step_time(P, T, decomposition, c, alpha, beta, n_axis=256, ppc=8, e_T=1.0):
-    """Projected stepping time per step of the 256^3 cubic B-spline USL case on P cores, T threads per rank."""
-    R = P // T
+    """Projected stepping time per step of the 256^3 cubic B-spline USL case on P cores, T threads per rank; a
+    decomposition that has fewer units (slabs, tiles) than P / T ranks leaves the other cores idle."""
     N = n_axis**3 * ppc
+    R = P // T
+    if decomposition == "slabs":
+        R = min(R, math.ceil(n_axis / 5))
     Nr = N / R
     reach = 5  # cubic B-spline: a slab or tile's particles reach 2 node layers below, 3 above
     bytes_per_node = 56  # mass, momentum, force: 7 doubles in 3D
     if decomposition == "slabs":
         slabs = math.ceil(n_axis / 5)  # slab_cells = 5
-        if R > slabs:
-            return None
         k = math.ceil(slabs / R / 2)  # slabs of one colour on a rank
         rounds = 2
         message = reach * (n_axis + 1) ** 2 * bytes_per_node
@@ -140,14 +143,13 @@ def project(c, alpha, beta, label):
     for P in [16, 128, 1000]:
         for dec in ["slabs", "blocks"]:
             best = None
-            for T in [1, 2, 4, 5, 8, 10, 16, 20, 25, 32, 40, 50, 64, 100, 125, 128]:
-                if P % T:
-                    continue
+            for T in THREADS:
                 r = step_time(P, T, dec, c, alpha, beta)
                 if r and (best is None or r[0] < best[0]):
                     best = r
             t, comp, wait, halo, mig, R, T = best
-            lines.append(f"| {P} | {dec} | {R} x {T} | {1e3 * t:.2f} | {1e3 * comp:.2f} | {1e3 * wait:.2f} | "
+            idle = f" ({P - R * T} idle)" if R * T < P else ""
+            lines.append(f"| {P} | {dec} | {R} x {T}{idle} | {1e3 * t:.2f} | {1e3 * comp:.2f} | {1e3 * wait:.2f} | "
                          f"{1e3 * halo:.3f} | {1e3 * mig:.2f} | {t1 / (P * t):.1%} |")
     return "\n".join(lines)
 
@@ -166,8 +168,8 @@ def main():
         BETA = statistics.median(r["grid"] for r in pp) * 1e6
         print(f"link (ping-pong, shared memory, {len(pp)} runs, load {min(r['load'] for r in pp):.1f}-"
               f"{max(r['load'] for r in pp):.1f}): latency {ALPHA * 1e6:.2f} us "
-              f"({', '.join(f'{r['p2g']:.2f}' for r in pp)}), bandwidth {BETA / 1e9:.2f} GB/s "
-              f"({', '.join(f'{r['grid'] / 1e3:.2f}' for r in pp)})")
+              f"({', '.join('%.2f' % r['p2g'] for r in pp)}), bandwidth {BETA / 1e9:.2f} GB/s "
+              f"({', '.join('%.2f' % (r['grid'] / 1e3) for r in pp)})")
     else:
         ALPHA, BETA = 0.5e-6, 5e9
         print("link: no ping-pong rows; assumed 0.5 us, 5 GB/s")

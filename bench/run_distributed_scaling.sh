@@ -15,7 +15,7 @@
 # the machine's 1-minute load (uptime) before the run: the machine may be shared, so say how loaded it was.
 # `mpm run` prints rank 0's profile; with several ranks it also prints each phase's min and max over the ranks.
 #
-# Environment: MPM_BUILD_DIR (default build), MPIRUN (default mpirun). As root the OMPI_ALLOW_RUN_AS_ROOT pair is
+# Environment: MPM_BUILD_DIR (default build), MPM_BIN (default $MPM_BUILD_DIR/apps/mpm), MPIRUN (default mpirun). As root the OMPI_ALLOW_RUN_AS_ROOT pair is
 # set here. Needs a build with MPM_WITH_MPI and the targets mpm and bench_pingpong.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -38,7 +38,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-mpm=$build/apps/mpm
+mpm=${MPM_BIN:-$build/apps/mpm}  # MPM_BIN: another build of mpm (a before/after comparison)
 pingpong=$build/bench/bench_pingpong
 for f in "$mpm" "$pingpong"; do
   [ -x "$f" ] || { echo "run_distributed_scaling.sh: $f missing (build the targets mpm and bench_pingpong)" >&2; exit 2; }
