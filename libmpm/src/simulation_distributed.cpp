@@ -12,6 +12,8 @@
 
 namespace mpm {
 
+bool slab_baseline_requested();  // slab_halo.cpp: MPM_DEBUG_SLAB_BASELINE
+
 template <int Dim>
 void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g) {
   auto& key = p.template field<std::uint64_t>(scatter_key_field);
@@ -161,6 +163,7 @@ bool Simulation<Dim>::migrate() {
     // Most steps no particle leaves: one pass that only reads the positions finds the first that does.
     Index first_leaving = 0;
     while (first_leaving < n && stays(x[first_leaving])) ++first_leaving;
+    if (slab_baseline_requested()) first_leaving = 0;  // the scan of before: every particle's owner looked up
     std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(ranks));
     std::vector<Index> keep;
     if (first_leaving < n) {
@@ -168,12 +171,12 @@ bool Simulation<Dim>::migrate() {
       for (Index i = 0; i < first_leaving; ++i) keep[static_cast<std::size_t>(i)] = i;
       keep.reserve(static_cast<std::size_t>(n));
       for (Index i = first_leaving; i < n; ++i) {
-        if (stays(x[i])) {
+        if (!slab_baseline_requested() && stays(x[i])) {
           keep.push_back(i);
           continue;
         }
         const int owner = halo_->owner_of_slab(slab_of<Dim>(x[i], g, T));
-        leaving[static_cast<std::size_t>(owner)].push_back(i);
+        (owner == me ? keep : leaving[static_cast<std::size_t>(owner)]).push_back(i);
       }
     }
     std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(ranks));
@@ -187,7 +190,8 @@ bool Simulation<Dim>::migrate() {
       p.pack(which, buffer);
     }
     const auto in = comm_->all_to_all(std::move(out));
-    const bool left = first_leaving < n;
+    bool left = false;
+    for (const auto& which : leaving) left = left || !which.empty();
     for (const auto& buffer : in) {
       if (buffer.empty()) continue;
       std::int64_t count = 0;

@@ -2,11 +2,24 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
 namespace mpm {
+
+bool slab_baseline_requested() {
+  static const bool requested = std::getenv("MPM_DEBUG_SLAB_BASELINE") != nullptr;
+  return requested;
+}
+
+namespace {
+// MPM_DEBUG_SLAB_BASELINE (hidden, for measuring the overlap: docs/distributed.md §5.9): the exchange as it was
+// before the overlap, blocking after each colour round (no boundary slab first; each round's messages sent and
+// received before the next round). The same messages and the same bits.
+bool blocking() { return slab_baseline_requested(); }
+}  // namespace
 
 std::vector<int> cut_slabs(const std::vector<double>& cost, int ranks) {
   const int slabs = static_cast<int>(cost.size());
@@ -52,7 +65,8 @@ SlabHalo::SlabHalo(Communicator& comm, std::vector<int> first_slab, int slab_cel
     o.slab = me == r ? S - 1 : S;
     overlaps_.push_back(o);
     auto& boundary = boundary_slabs_[o.colour];
-    if (std::find(boundary.begin(), boundary.end(), o.slab) == boundary.end()) boundary.push_back(o.slab);
+    if (!blocking() && std::find(boundary.begin(), boundary.end(), o.slab) == boundary.end())
+      boundary.push_back(o.slab);
   }
   send_.resize(overlaps_.size());
   receive_.resize(overlaps_.size());
@@ -119,16 +133,30 @@ void SlabHalo::begin_scatter(std::span<const HaloArray> arrays) const {
 void SlabHalo::before_round(int colour) const {
   if (colour == 0) return;  // the slabs of colour 0 scatter first at their overlaps: nothing to wait for
   const auto start = std::chrono::steady_clock::now();
+  if (blocking()) {  // the exchange after round 0, as before the overlap: send and wait for the sends too
+    for (std::size_t k = 0; k < overlaps_.size(); ++k)
+      if (overlaps_[k].colour == 0) {
+        pack(k);
+        sending_[k] = comm_->start_send({overlaps_[k].peer, send_[k]});
+      }
+  }
   for (std::size_t k = 0; k < overlaps_.size(); ++k) {
     if (overlaps_[k].colour != colour || !receiving_[k]) continue;
     receiving_[k]->wait();
     receiving_[k].reset();
     unpack(k);
   }
+  if (blocking())
+    for (auto& t : sending_)
+      if (t) {
+        t->wait();
+        t.reset();
+      }
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void SlabHalo::send(int colour) const {
+  if (blocking()) return;  // sent after the whole round (before_round(1), end_scatter)
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t k = 0; k < overlaps_.size(); ++k) {
     if (overlaps_[k].colour != colour) continue;
@@ -140,6 +168,12 @@ void SlabHalo::send(int colour) const {
 
 void SlabHalo::end_scatter() const {
   const auto start = std::chrono::steady_clock::now();
+  if (blocking())  // the exchange after round 1
+    for (std::size_t k = 0; k < overlaps_.size(); ++k)
+      if (overlaps_[k].colour == 1) {
+        pack(k);
+        sending_[k] = comm_->start_send({overlaps_[k].peer, send_[k]});
+      }
   for (std::size_t k = 0; k < overlaps_.size(); ++k) {
     if (receiving_[k]) {  // the totals of an overlap whose slab of this rank scattered first
       receiving_[k]->wait();
