@@ -58,8 +58,8 @@ def table(rows):
     out = ["| case | ranks x threads | particles | wall (median) | runs | load | updates/s | speed-up | P2G | grid | "
            "G2P | stress | halo (max) | migrate (max) | rebalance | other |",
            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for case in ["strong2d", "strong3d", "weak"]:
-        base = None
+    for case in ["strong2d", "strong2d_baseline", "strong3d", "strong3d_baseline", "weak", "weak_baseline"]:
+        base = median_row(rows, case.replace("_baseline", ""), 1, 1) if case.endswith("_baseline") else None
         for ranks, threads in [(1, 1), (1, 2), (2, 1)]:
             m = median_row(rows, case, ranks, threads)
             if not m:
@@ -67,7 +67,7 @@ def table(rows):
             rate = m["particles"] * m["steps"] / m["wall"]
             if base is None:
                 base = m
-            if case == "weak":
+            if case.startswith("weak"):
                 speed = base["wall"] / m["wall"]  # weak: the efficiency t(1) / t(R)
                 label = f"{speed:.2f} (eff.)"
             else:

@@ -2,7 +2,7 @@
 # Strong and weak scaling of distributed runs, per-phase times and the link figures (issue 18 §6), then the cost
 # model fitted to them (bench/distributed_model.py). One command, one table:
 #
-#   bash bench/run_distributed_scaling.sh [--repeat N] [--steps N] [--quick] [--only CASES] [--csv FILE]
+#   bash bench/run_distributed_scaling.sh [--repeat N] [--steps N] [--quick] [--only CASES] [--csv FILE] [--baseline]
 #
 # Cases (each `mpirun --oversubscribe -np R build/apps/mpm run SCENE --threads T --steps N --profile`):
 #   2d  strong scaling, 2D linear-hat USL, the two disks of examples/02_two_disks at 1000 x 1000 cells
@@ -14,6 +14,9 @@
 # Each run is repeated N times (default 3) and the median stepping wall time is reported, with its phases (s) and
 # the machine's 1-minute load (uptime) before the run: the machine may be shared, so say how loaded it was.
 # `mpm run` prints rank 0's profile; with several ranks it also prints each phase's min and max over the ranks.
+# --baseline: every multi-rank run is followed by the same run with MPM_DEBUG_SLAB_BASELINE=1 (the blocking halo
+# exchange and the full owner scan of the migration from before the overlap; same bits), rows "<case>_baseline":
+# a before/after comparison under the same load. --quick: scenes 4x (2D) and ~3x (3D) smaller, a smoke test.
 #
 # Environment: MPM_BUILD_DIR (default build), MPM_BIN (default $MPM_BUILD_DIR/apps/mpm), MPIRUN (default mpirun). As root the OMPI_ALLOW_RUN_AS_ROOT pair is
 # set here. Needs a build with MPM_WITH_MPI and the targets mpm and bench_pingpong.
@@ -26,6 +29,7 @@ steps=40
 only="pingpong,2d,3d,weak"
 csv=""
 quick=0
+baseline=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --repeat) repeat=$2; shift 2 ;;
@@ -33,6 +37,7 @@ while [ $# -gt 0 ]; do
     --only) only=$2; shift 2 ;;
     --csv) csv=$2; shift 2 ;;
     --quick) quick=1; shift ;;
+    --baseline) baseline=1; shift ;;
     -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
     *) echo "run_distributed_scaling.sh: unknown argument $1" >&2; exit 2 ;;
   esac
@@ -80,9 +85,9 @@ load() { cut -d' ' -f1 /proc/loadavg; }
 
 # One run: prints "wall particles p2g grid g2p stress halo migrate rebalance other halo_max migrate_max" (rank 0's
 # phases; *_max over the ranks) from the log of `mpm run`.
-one_run() {  # ranks threads scene
+one_run() {  # ranks threads scene [env assignment]
   local log=$work/run.log
-  "$mpirun" --oversubscribe -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" --profile \
+  env ${4:-} "$mpirun" --oversubscribe -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" --profile \
     -o "$work/out" --rebalance-every 20 > "$log" 2>&1 || { cat "$log" >&2; return 1; }
   /usr/bin/python3 - "$log" <<'EOF'
 import re, sys
@@ -104,11 +109,16 @@ EOF
 echo "case,ranks,threads,particles,steps,run,load,wall,p2g,grid,g2p,stress,halo,migrate,rebalance,other,halo_max,migrate_max" > "$csv"
 run_case() {  # label ranks threads scene
   for k in $(seq 1 "$repeat"); do
-    local l; l=$(load)
-    local r; r=$(one_run "$2" "$3" "$4")
-    read -r wall particles rest <<< "$r"
-    echo "$1,$2,$3,$particles,$steps,$k,$l,$wall,$(echo "$rest" | tr ' ' ',')" >> "$csv"
-    echo "  $1 np $2 x $3 threads, run $k: $wall s (load $l)" >&2
+    for variant in "" baseline; do
+      [ -z "$variant" ] || { [ "$baseline" = 1 ] && [ "$2" -gt 1 ]; } || continue
+      local label=$1 setting=""
+      [ -z "$variant" ] || { label=${1}_baseline; setting=MPM_DEBUG_SLAB_BASELINE=1; }
+      local l; l=$(load)
+      local r; r=$(one_run "$2" "$3" "$4" $setting)
+      read -r wall particles rest <<< "$r"
+      echo "$label,$2,$3,$particles,$steps,$k,$l,$wall,$(echo "$rest" | tr ' ' ',')" >> "$csv"
+      echo "  $label np $2 x $3 threads, run $k: $wall s (load $l)" >&2
+    done
   done
 }
 echo "machine: $(nproc) cores, $(uptime)" >&2
