@@ -74,10 +74,10 @@ open(dst, "w").write(text)
 EOF
 }
 if [ $quick = 1 ]; then
-  make_scene strong2d 2 linear 0.002; make_scene strong3d 3 cubic_bspline 0.02; make_scene weak1 2 linear 0.002828
+  make_scene strong2d 2 linear 0.002; make_scene strong3d 3 cubic_bspline 0.025; make_scene weak1 2 linear 0.0028248587570621469
   make_scene weak2 2 linear 0.002
 else
-  make_scene strong2d 2 linear 0.001; make_scene strong3d 3 cubic_bspline 0.013; make_scene weak1 2 linear 0.001414
+  make_scene strong2d 2 linear 0.001; make_scene strong3d 3 cubic_bspline 0.012987012987012988; make_scene weak1 2 linear 0.0014144271570014145
   make_scene weak2 2 linear 0.001
 fi
 
