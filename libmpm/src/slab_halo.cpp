@@ -15,7 +15,7 @@ bool slab_baseline_requested() {
 }
 
 namespace {
-// MPM_DEBUG_SLAB_BASELINE (hidden, for measuring the overlap: docs/distributed.md §5.9): the exchange as it was
+// MPM_DEBUG_SLAB_BASELINE (hidden, for measuring the overlap: docs/distributed.md §5.2): the exchange as it was
 // before the overlap, blocking after each colour round (no boundary slab first; each round's messages sent and
 // received before the next round). The same messages and the same bits.
 bool blocking() { return slab_baseline_requested(); }
