@@ -139,7 +139,7 @@ template <int Dim>
 void Simulation<Dim>::reassign_slabs(std::vector<int> first_slab) {
   if (!halo_) return;
   use_slabs(first_slab);
-  if (migrate()) scheme_->particles_redistributed(bodies_, grid_);
+  if (comm_->any(migrate())) scheme_->particles_redistributed(bodies_, grid_);
 }
 
 template <int Dim>
@@ -221,7 +221,7 @@ bool Simulation<Dim>::migrate() {
     }
     p.gather(order);
   }
-  return comm_->any(moved);
+  return moved;
 }
 
 template <int Dim>
