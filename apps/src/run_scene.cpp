@@ -371,6 +371,16 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
                "profile (wall time per phase; G2P and the stress update run fused and are split by their CPU "
                "time):\n{}\n",
                format_profile(summary.profile));
+    if (comm && comm->size() > 1) {  // where the ranks differ: the waiting of one is the other's extra work
+      const StepProfile& p = summary.profile;
+      std::array<double, 3> most{p[StepPhase::halo], p[StepPhase::migrate], p.stepping_seconds()};
+      std::array<double, 3> least = most;
+      comm->max(most);
+      comm->min(least);
+      const std::array<const char*, 3> names{"halo", "migrate", "stepping"};
+      for (std::size_t k = 0; k < names.size(); ++k)
+        fmt::print(log, "ranks' {}: min {:.4f} s, max {:.4f} s\n", names[k], least[k], most[k]);
+    }
   }
   return summary;
 }

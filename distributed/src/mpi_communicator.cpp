@@ -93,6 +93,40 @@ void MpiCommunicator::exchange(std::span<const Outgoing> sends, std::span<const 
   MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }
 
+namespace {
+class MpiTransfer final : public Communicator::Transfer {
+ public:
+  explicit MpiTransfer(bool receive) : receive_(receive) {}
+  MpiTransfer(const MpiTransfer&) = delete;
+  MpiTransfer& operator=(const MpiTransfer&) = delete;
+  ~MpiTransfer() override {
+    if (request_ == MPI_REQUEST_NULL) return;
+    if (receive_) MPI_Cancel(&request_);
+    MPI_Request_free(&request_);
+  }
+  void wait() override { MPI_Wait(&request_, MPI_STATUS_IGNORE); }
+  MPI_Request* request() { return &request_; }
+
+ private:
+  MPI_Request request_ = MPI_REQUEST_NULL;
+  bool receive_;
+};
+}  // namespace
+
+std::unique_ptr<Communicator::Transfer> MpiCommunicator::start_send(const Outgoing& message) {
+  auto t = std::make_unique<MpiTransfer>(false);
+  MPI_Isend(message.bytes.data(), message_size(message.bytes.size()), MPI_BYTE, message.peer, halo_tag, comm_,
+            t->request());
+  return t;
+}
+
+std::unique_ptr<Communicator::Transfer> MpiCommunicator::start_receive(const Incoming& message) {
+  auto t = std::make_unique<MpiTransfer>(true);
+  MPI_Irecv(message.bytes.data(), message_size(message.bytes.size()), MPI_BYTE, message.peer, halo_tag, comm_,
+            t->request());
+  return t;
+}
+
 std::vector<std::vector<std::byte>> MpiCommunicator::all_to_all(std::vector<std::vector<std::byte>> out) {
   const auto n = static_cast<std::size_t>(size_);
   if (out.size() != n) throw std::invalid_argument("all_to_all: one buffer per rank");

@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -123,8 +124,15 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   hooks_.end_of_step(ctx);
   bool tripped = ctx.guard_tripped.load();
   if (comm_) {  // the roll-back is collective: every rank replays the same steps
-    tripped = comm_->any(tripped);
-    reduce_wave_speed(ctx.wave_speed, *comm_);
+    // One reduction for both: the wave-speed bound (as reduce_wave_speed) and the guard's flag (a max of 0 and 1).
+    std::array<double, Dim + 2> v{};
+    for (int d = 0; d < Dim; ++d) v[d] = ctx.wave_speed.max_speed[d];
+    v[Dim] = ctx.wave_speed.finite ? 0 : 1;
+    v[Dim + 1] = tripped ? 1 : 0;
+    comm_->max(v);
+    for (int d = 0; d < Dim; ++d) ctx.wave_speed.max_speed[d] = v[d];
+    ctx.wave_speed.finite = v[Dim] == 0;
+    tripped = v[Dim + 1] != 0;
   }
   if (guard && tripped) {
     failure_ = std::make_unique<Snapshot>(snapshot_);  // for the flight recorder (replay_failure)
@@ -140,12 +148,17 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   time_ += dt;
   ++step_;
   if (comm_) {
-    PhaseTimer timer(ctx.profile, StepPhase::migrate);
     // TLMPM's particles belong to the rank of their reference position: they never migrate, its balance never
     // decays.
     if (scheme_->reorders_particles()) {
-      migrate();
-      if (settings_.rebalance_interval > 0 && step_ % settings_.rebalance_interval == 0) rebalance();
+      {
+        PhaseTimer timer(ctx.profile, StepPhase::migrate);
+        migrate();
+      }
+      if (settings_.rebalance_interval > 0 && step_ % settings_.rebalance_interval == 0) {
+        PhaseTimer timer(ctx.profile, StepPhase::rebalance);
+        rebalance();
+      }
     }
   }
 }

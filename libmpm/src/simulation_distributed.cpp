@@ -12,6 +12,8 @@
 
 namespace mpm {
 
+bool slab_baseline_requested();  // slab_halo.cpp: MPM_DEBUG_SLAB_BASELINE
+
 template <int Dim>
 void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g) {
   auto& key = p.template field<std::uint64_t>(scatter_key_field);
@@ -145,7 +147,7 @@ template <int Dim>
 void Simulation<Dim>::reassign_slabs(std::vector<int> first_slab) {
   if (!halo_) return;
   use_slabs(first_slab);
-  if (migrate()) scheme_->particles_redistributed(bodies_, grid_);
+  if (comm_->any(migrate())) scheme_->particles_redistributed(bodies_, grid_);
 }
 
 template <int Dim>
@@ -153,16 +155,37 @@ bool Simulation<Dim>::migrate() {
   const auto& g = grid_.geometry;
   const int T = scheme_->slab_cells();
   const int me = comm_->rank(), ranks = comm_->size();
+  // This rank's cells along the last axis: slab_of(x) is one of its slabs exactly when the cell slab_of computes
+  // lies in [first_cell, end_cell), so the scan needs no search over the slabs' owners.
+  const int first_cell = halo_->first_slab()[static_cast<std::size_t>(me)] * T;
+  const int end_cell = halo_->first_slab()[static_cast<std::size_t>(me) + 1] * T;
+  const auto stays = [&](const VecU<Dim>& x) {
+    const int cell = slab_of<Dim>(x, g, 1);
+    return cell >= first_cell && cell < end_cell;
+  };
   bool moved = false;
   for (auto& b : bodies_) {
     auto& p = b.particles;
     const VecU<Dim>* x = owner_positions(*scheme_, p);
+    const Index n = p.size();
+    // Most steps no particle leaves: one pass that only reads the positions finds the first that does.
+    Index first_leaving = 0;
+    while (first_leaving < n && stays(x[first_leaving])) ++first_leaving;
+    if (slab_baseline_requested()) first_leaving = 0;  // the scan of before: every particle's owner looked up
     std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(ranks));
     std::vector<Index> keep;
-    keep.reserve(static_cast<std::size_t>(p.size()));
-    for (Index i = 0; i < p.size(); ++i) {
-      const int owner = halo_->owner_of_slab(slab_of<Dim>(x[i], g, T));
-      (owner == me ? keep : leaving[static_cast<std::size_t>(owner)]).push_back(i);
+    if (first_leaving < n) {
+      keep.resize(static_cast<std::size_t>(first_leaving));
+      for (Index i = 0; i < first_leaving; ++i) keep[static_cast<std::size_t>(i)] = i;
+      keep.reserve(static_cast<std::size_t>(n));
+      for (Index i = first_leaving; i < n; ++i) {
+        if (!slab_baseline_requested() && stays(x[i])) {
+          keep.push_back(i);
+          continue;
+        }
+        const int owner = halo_->owner_of_slab(slab_of<Dim>(x[i], g, T));
+        (owner == me ? keep : leaving[static_cast<std::size_t>(owner)]).push_back(i);
+      }
     }
     std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(ranks));
     for (int q = 0; q < ranks; ++q) {
@@ -175,34 +198,38 @@ bool Simulation<Dim>::migrate() {
       p.pack(which, buffer);
     }
     const auto in = comm_->all_to_all(std::move(out));
-    const bool left = keep.size() != static_cast<std::size_t>(p.size());
-    if (left) p.gather(keep);
-    const Index kept = p.size();
+    bool left = false;
+    for (const auto& which : leaving) left = left || !which.empty();
     for (const auto& buffer : in) {
       if (buffer.empty()) continue;
       std::int64_t count = 0;
       std::memcpy(&count, buffer.data(), sizeof count);
       p.append_packed(std::span<const std::byte>(buffer).subspan(sizeof count), count);
     }
-    moved = moved || left || p.size() != kept;
-    if (p.size() == kept) continue;
-    // The kept particles are in key order; the arrivals (from several ranks) are sorted and merged in.
+    const bool arrived = p.size() != n;
+    moved = moved || left || arrived;
+    if (!left && !arrived) continue;
+    if (!left) {  // every particle stays: the kept ones are [0, n)
+      keep.resize(static_cast<std::size_t>(n));
+      for (Index i = 0; i < n; ++i) keep[static_cast<std::size_t>(i)] = i;
+    }
+    // The kept particles are in key order; the arrivals (from several ranks, appended after the n particles of
+    // before) are sorted and merged in; the leavers are left out. One gather of every field.
     const auto& key = p.template field<std::uint64_t>(scatter_key_field);
-    std::vector<Index> arrivals(static_cast<std::size_t>(p.size() - kept));
-    for (std::size_t k = 0; k < arrivals.size(); ++k) arrivals[k] = kept + static_cast<Index>(k);
+    std::vector<Index> arrivals(static_cast<std::size_t>(p.size() - n));
+    for (std::size_t k = 0; k < arrivals.size(); ++k) arrivals[k] = n + static_cast<Index>(k);
     std::sort(arrivals.begin(), arrivals.end(), [&](Index a, Index c) { return key[a] < key[c]; });
-    std::vector<Index> order(static_cast<std::size_t>(p.size()));
-    Index a = 0;
-    std::size_t c = 0, o = 0;
-    while (a < kept || c < arrivals.size()) {
-      if (c == arrivals.size() || (a < kept && key[a] < key[arrivals[c]]))
-        order[o++] = a++;
+    std::vector<Index> order(keep.size() + arrivals.size());
+    std::size_t a = 0, c = 0, o = 0;
+    while (a < keep.size() || c < arrivals.size()) {
+      if (c == arrivals.size() || (a < keep.size() && key[keep[a]] < key[arrivals[c]]))
+        order[o++] = keep[a++];
       else
         order[o++] = arrivals[c++];
     }
     p.gather(order);
   }
-  return comm_->any(moved);
+  return moved;
 }
 
 template <int Dim>

@@ -2,11 +2,24 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
 namespace mpm {
+
+bool slab_baseline_requested() {
+  static const bool requested = std::getenv("MPM_DEBUG_SLAB_BASELINE") != nullptr;
+  return requested;
+}
+
+namespace {
+// MPM_DEBUG_SLAB_BASELINE (hidden, for measuring the overlap: docs/distributed.md §5.2): the exchange as it was
+// before the overlap, blocking after each colour round (no boundary slab first; each round's messages sent and
+// received before the next round). The same messages and the same bits.
+bool blocking() { return slab_baseline_requested(); }
+}  // namespace
 
 std::vector<int> cut_slabs(const std::vector<double>& cost, int ranks) {
   const int slabs = static_cast<int>(cost.size());
@@ -49,10 +62,16 @@ SlabHalo::SlabHalo(Communicator& comm, std::vector<int> first_slab, int slab_cel
     o.colour = me == r ? lower_colour : 1 - lower_colour;
     o.first = lo * nodes_per_layer;
     o.end = (hi + 1) * nodes_per_layer;
+    o.slab = me == r ? S - 1 : S;
     overlaps_.push_back(o);
+    auto& boundary = boundary_slabs_[o.colour];
+    if (!blocking() && std::find(boundary.begin(), boundary.end(), o.slab) == boundary.end())
+      boundary.push_back(o.slab);
   }
   send_.resize(overlaps_.size());
   receive_.resize(overlaps_.size());
+  sending_.resize(overlaps_.size());
+  receiving_.resize(overlaps_.size());
   const Index first_layer = std::max(0, first_slab_[me] * slab_cells - reach_below);
   const Index end_layer = std::min(node_layers, first_slab_[me + 1] * slab_cells + reach_above);
   reached_ = {first_layer * nodes_per_layer, end_layer * nodes_per_layer};
@@ -71,43 +90,102 @@ std::pair<Index, Index> SlabHalo::owned_nodes() const {
   return {first * nodes_per_layer_, last_layer * nodes_per_layer_};
 }
 
-void SlabHalo::exchange(int colour, std::span<const HaloArray> arrays) const {
-  const auto start = std::chrono::steady_clock::now();
+void SlabHalo::pack(std::size_t k) const {
+  const Overlap& o = overlaps_[k];
+  const auto nodes = static_cast<std::size_t>(o.end - o.first);
   std::size_t per_node = 0;
-  for (const HaloArray& a : arrays) per_node += a.bytes_per_node;
-  std::vector<Communicator::Outgoing> sends;
-  std::vector<Communicator::Incoming> receives;
+  for (const HaloArray& a : arrays_) per_node += a.bytes_per_node;
+  auto& buffer = send_[k];
+  buffer.resize(nodes * per_node);
+  std::byte* at = buffer.data();
+  for (const HaloArray& a : arrays_) {
+    const std::size_t bytes = nodes * a.bytes_per_node;
+    std::memcpy(at, a.base + static_cast<std::size_t>(o.first) * a.bytes_per_node, bytes);
+    at += bytes;
+  }
+  bytes_sent_ += buffer.size();
+}
+
+void SlabHalo::unpack(std::size_t k) const {
+  const Overlap& o = overlaps_[k];
+  const auto nodes = static_cast<std::size_t>(o.end - o.first);
+  const std::byte* at = receive_[k].data();
+  for (const HaloArray& a : arrays_) {
+    const std::size_t bytes = nodes * a.bytes_per_node;
+    std::memcpy(a.base + static_cast<std::size_t>(o.first) * a.bytes_per_node, at, bytes);
+    at += bytes;
+  }
+}
+
+void SlabHalo::begin_scatter(std::span<const HaloArray> arrays) const {
+  const auto start = std::chrono::steady_clock::now();
+  arrays_.assign(arrays.begin(), arrays.end());
+  std::size_t per_node = 0;
+  for (const HaloArray& a : arrays_) per_node += a.bytes_per_node;
   for (std::size_t k = 0; k < overlaps_.size(); ++k) {
     const Overlap& o = overlaps_[k];
-    const auto nodes = static_cast<std::size_t>(o.end - o.first);
-    if (o.colour == colour) {
-      auto& buffer = send_[k];
-      buffer.resize(nodes * per_node);
-      std::byte* at = buffer.data();
-      for (const HaloArray& a : arrays) {
-        const std::size_t bytes = nodes * a.bytes_per_node;
-        std::memcpy(at, a.base + static_cast<std::size_t>(o.first) * a.bytes_per_node, bytes);
-        at += bytes;
+    receive_[k].resize(static_cast<std::size_t>(o.end - o.first) * per_node);
+    receiving_[k] = comm_->start_receive({o.peer, receive_[k]});
+  }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void SlabHalo::before_round(int colour) const {
+  if (colour == 0) return;  // the slabs of colour 0 scatter first at their overlaps: nothing to wait for
+  const auto start = std::chrono::steady_clock::now();
+  if (blocking()) {  // the exchange after round 0, as before the overlap: send and wait for the sends too
+    for (std::size_t k = 0; k < overlaps_.size(); ++k)
+      if (overlaps_[k].colour == 0) {
+        pack(k);
+        sending_[k] = comm_->start_send({overlaps_[k].peer, send_[k]});
       }
-      sends.push_back({o.peer, buffer});
-      bytes_sent_ += buffer.size();
-    } else {
-      receive_[k].resize(nodes * per_node);
-      receives.push_back({o.peer, receive_[k]});
-    }
   }
-  comm_->exchange(sends, receives);
   for (std::size_t k = 0; k < overlaps_.size(); ++k) {
-    const Overlap& o = overlaps_[k];
-    if (o.colour == colour) continue;
-    const auto nodes = static_cast<std::size_t>(o.end - o.first);
-    const std::byte* at = receive_[k].data();
-    for (const HaloArray& a : arrays) {
-      const std::size_t bytes = nodes * a.bytes_per_node;
-      std::memcpy(a.base + static_cast<std::size_t>(o.first) * a.bytes_per_node, at, bytes);
-      at += bytes;
+    if (overlaps_[k].colour != colour || !receiving_[k]) continue;
+    receiving_[k]->wait();
+    receiving_[k].reset();
+    unpack(k);
+  }
+  if (blocking())
+    for (auto& t : sending_)
+      if (t) {
+        t->wait();
+        t.reset();
+      }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void SlabHalo::send(int colour) const {
+  if (blocking()) return;  // sent after the whole round (before_round(1), end_scatter)
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t k = 0; k < overlaps_.size(); ++k) {
+    if (overlaps_[k].colour != colour) continue;
+    pack(k);
+    sending_[k] = comm_->start_send({overlaps_[k].peer, send_[k]});
+  }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void SlabHalo::end_scatter() const {
+  const auto start = std::chrono::steady_clock::now();
+  if (blocking())  // the exchange after round 1
+    for (std::size_t k = 0; k < overlaps_.size(); ++k)
+      if (overlaps_[k].colour == 1) {
+        pack(k);
+        sending_[k] = comm_->start_send({overlaps_[k].peer, send_[k]});
+      }
+  for (std::size_t k = 0; k < overlaps_.size(); ++k) {
+    if (receiving_[k]) {  // the totals of an overlap whose slab of this rank scattered first
+      receiving_[k]->wait();
+      receiving_[k].reset();
+      unpack(k);
+    }
+    if (sending_[k]) {
+      sending_[k]->wait();
+      sending_[k].reset();
     }
   }
+  arrays_.clear();
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -43,6 +44,19 @@ class Communicator {
   /// Sends every `sends[k].bytes` to its peer and fills every `receives[k].bytes` from its peer; returns when all
   /// have arrived. Two messages between the same pair in one call go in the order given.
   virtual void exchange(std::span<const Outgoing> sends, std::span<const Incoming> receives) = 0;
+  /// A message started by start_send or start_receive: in flight until wait() returns. Until then a send's bytes
+  /// must stay valid and unchanged, a receive's valid and unread.
+  class Transfer {
+   public:
+    virtual ~Transfer() = default;
+    virtual void wait() = 0;
+  };
+  /// Starts one message of a halo exchange and returns at once, so that the sender and the receiver can compute
+  /// while it travels (the overlapped exchange of a scatter, slab_halo.hpp). Messages between the same pair go in
+  /// the order they are started, as with exchange(). The default runs exchange() with the one message and returns a
+  /// finished transfer: right for a communicator whose exchange does not wait for the peer.
+  virtual std::unique_ptr<Transfer> start_send(const Outgoing& message);
+  virtual std::unique_ptr<Transfer> start_receive(const Incoming& message);
   /// Every rank gives a buffer for every rank (`out[q]` for rank q, its own included); returns the buffers the
   /// ranks gave this one (`in[q]` from rank q). The migration of particles.
   virtual std::vector<std::vector<std::byte>> all_to_all(std::vector<std::vector<std::byte>> out) = 0;

@@ -159,7 +159,8 @@ class Simulation {
   void roll_back_to_previous_step();
   /// Distributed run: sends every particle outside this rank's slabs to their owner and takes in what the others
   /// send, keeping the storage ordered by the scatter key (simulation_distributed.cpp).
-  /// Returns whether a particle moved on any rank (a collective call).
+  /// Returns whether a particle left or arrived on this rank (the all-to-all is collective, the answer is not: a
+  /// caller that needs every rank's takes the `any`; the step's migration does not, saving a reduction per step).
   bool migrate();
   /// Distributed run: the cost of every slab (its particles on all ranks, plus its nodes); a collective call.
   std::vector<double> slab_costs() const;

@@ -87,18 +87,33 @@ void bin_by_slab(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab
 }
 
 /// Calls body(indices, count) for every slab, even slabs in parallel first, then odd slabs. `written`: the nodal
-/// arrays the body adds to; in a distributed run their ghost nodes are exchanged after each colour (slab_halo.hpp).
+/// arrays the body adds to; in a distributed run their ghost nodes are exchanged around each colour
+/// (slab_halo.hpp): the slabs of a colour that write nodes another rank holds scatter first and their message
+/// leaves while the others scatter. Slabs of one colour write disjoint nodes, so that order changes no bit.
 template <class Body>
 void for_each_slab_coloured(const SlabBins& bins, std::span<const HaloArray> written, Body&& body) {
+  const auto scatter = [&](int s) {
+    const Index begin = bins.offsets[s], end = bins.offsets[s + 1];
+    if (end > begin) body(bins.order.data() + begin, end - begin);
+  };
+  const SlabHalo* halo = bins.halo;
+  if (halo) halo->begin_scatter(written);
   for (int colour = 0; colour < 2; ++colour) {
     const int n = (bins.slab_count - colour + 1) / 2;
+    if (!halo) {
+      tbb::parallel_for(0, n, [&](int k) { scatter(2 * k + colour); });
+      continue;
+    }
+    halo->before_round(colour);
+    const std::vector<int>& boundary = halo->boundary_slabs(colour);
+    tbb::parallel_for(0, static_cast<int>(boundary.size()), [&](int k) { scatter(boundary[k]); });
+    halo->send(colour);
     tbb::parallel_for(0, n, [&](int k) {
       const int s = 2 * k + colour;
-      const Index begin = bins.offsets[s], end = bins.offsets[s + 1];
-      if (end > begin) body(bins.order.data() + begin, end - begin);
+      if (std::find(boundary.begin(), boundary.end(), s) == boundary.end()) scatter(s);
     });
-    if (bins.halo) bins.halo->exchange(colour, written);
   }
+  if (halo) halo->end_scatter();
 }
 template <class Body>
 void for_each_slab_coloured(const SlabBins& bins, std::initializer_list<HaloArray> written, Body&& body) {

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -63,9 +64,23 @@ class SlabHalo {
   /// The node layers this rank owns ([first, last)): a node layer belongs to the slab whose cells start at or below
   /// it (the grid's last layer to the last slab). Sums over nodes (boundary work, reactions) take owned nodes only.
   std::pair<Index, Index> owned_nodes() const;
-  /// After the scatter of `colour` (0 even slabs, 1 odd): every overlap whose slab of that colour is this rank's is
-  /// sent, every other overlap of this rank received and copied into `arrays`.
-  void exchange(int colour, std::span<const HaloArray> arrays) const;
+  /// The exchange of one scatter of `arrays` (for_each_slab_coloured). Its messages are those of the protocol above
+  /// (after the round of its colour, the owner of an overlap's slab sends it; the other rank replaces its copy), each
+  /// started as early as the data allows, so that the ranks compute while they travel:
+  ///   begin_scatter(arrays)   starts every receive of the scatter;
+  ///   before_round(colour)    waits for the partial sums the boundary slabs of this colour add to (the rank that
+  ///                           scatters second at an overlap) and copies them in;
+  ///   (the boundary slabs of the colour scatter)
+  ///   send(colour)            starts sending the overlaps written by this colour's boundary slabs;
+  ///   (the other slabs of the colour scatter: they write no overlap node)
+  ///   end_scatter()           waits for the totals (the rank that scattered first) and for the sends.
+  /// Slabs of one colour write disjoint nodes, so scattering the boundary slabs first changes no bit.
+  void begin_scatter(std::span<const HaloArray> arrays) const;
+  void before_round(int colour) const;
+  void send(int colour) const;
+  void end_scatter() const;
+  /// This rank's slabs of `colour` that write an overlap (at most two): scattered first in their round.
+  const std::vector<int>& boundary_slabs(int colour) const { return boundary_slabs_[colour]; }
   /// The nodes this rank's particles can reach, [first, end): its slabs' reach. The grid kernels reset and update
   /// only these (a rank's grid outside them is never read).
   std::pair<Index, Index> reached_nodes() const { return reached_; }
@@ -87,7 +102,10 @@ class SlabHalo {
     int colour;       ///< colour of the round after which this rank sends (the other colour: receives)
     Index first = 0;  ///< nodes [first, end)
     Index end = 0;
+    int slab = 0;  ///< this rank's slab that writes the overlap (its colour is `colour`)
   };
+  void pack(std::size_t k) const;
+  void unpack(std::size_t k) const;
   Communicator* comm_;
   std::vector<int> first_slab_;
   int slab_cells_;
@@ -95,6 +113,10 @@ class SlabHalo {
   Index nodes_per_layer_;
   std::vector<Overlap> overlaps_;  ///< this rank's (at most two)
   mutable std::vector<std::vector<std::byte>> send_, receive_;
+  std::vector<int> boundary_slabs_[2];
+  // The scatter in progress (begin_scatter .. end_scatter): its arrays and the messages in flight, per overlap.
+  mutable std::vector<HaloArray> arrays_;
+  mutable std::vector<std::unique_ptr<Communicator::Transfer>> sending_, receiving_;
   std::pair<Index, Index> reached_;
   mutable std::size_t bytes_sent_ = 0;
   mutable double seconds_ = 0;

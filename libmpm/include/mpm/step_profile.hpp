@@ -16,11 +16,11 @@
 
 namespace mpm {
 
-enum class StepPhase : int { p2g, grid_update, g2p, stress_update, halo, migrate, output, other };
-inline constexpr int step_phase_count = 8;
+enum class StepPhase : int { p2g, grid_update, g2p, stress_update, halo, migrate, rebalance, output, other };
+inline constexpr int step_phase_count = 9;
 /// Printed names, in the order of StepPhase.
 inline constexpr std::array<std::string_view, step_phase_count> step_phase_names = {
-    "P2G", "grid update", "G2P", "stress update", "halo", "migrate", "output", "other"};
+    "P2G", "grid update", "G2P", "stress update", "halo", "migrate", "rebalance", "output", "other"};
 
 /// Wall seconds per phase, summed over the steps. Phases are timed on the calling thread around the
 /// parallel loops, so they are wall time whatever the thread count.
@@ -29,7 +29,9 @@ inline constexpr std::array<std::string_view, step_phase_count> step_phase_names
 ///   G2P: particle velocity, position, F (and L) from the grid;
 ///   stress update: the materials' constitutive update;
 ///   halo: a distributed run's ghost-node exchanges (waiting for the other ranks included; taken out of P2G);
-///   migrate: a distributed run's migration of particles between ranks and its rebalancing;
+///   migrate: a distributed run's migration of particles between ranks after every step;
+///   rebalance: a distributed run's balance check every --rebalance-every steps (slab costs summed over the
+///     ranks) and, when it deals the slabs anew, the migration that follows;
 ///   output: writing frames (added by the run loop);
 ///   other: the rest of Simulation::advance (periodic reordering, the guard's snapshots, other hooks).
 struct StepProfile {

@@ -29,6 +29,10 @@ class MpiCommunicator final : public Communicator {
   bool any(bool flag) override;
   void sum(std::span<std::int64_t> values) override;
   void exchange(std::span<const Outgoing> sends, std::span<const Incoming> receives) override;
+  /// MPI_Isend / MPI_Irecv; the transfer's wait() is MPI_Wait. A transfer destroyed unfinished (an error path: the
+  /// job is about to end) is cancelled if it is a receive and released without waiting.
+  std::unique_ptr<Transfer> start_send(const Outgoing& message) override;
+  std::unique_ptr<Transfer> start_receive(const Incoming& message) override;
   std::vector<std::vector<std::byte>> all_to_all(std::vector<std::vector<std::byte>> out) override;
   void broadcast(std::vector<std::byte>& bytes, int root) override;
   void barrier() override;

@@ -1,0 +1,139 @@
+#!/usr/bin/env bash
+# Strong and weak scaling of distributed runs, per-phase times and the link figures (issue 18 §6), then the cost
+# model fitted to them (bench/distributed_model.py). One command, one table:
+#
+#   bash bench/run_distributed_scaling.sh [--repeat N] [--steps N] [--quick] [--only CASES] [--csv FILE] [--baseline]
+#
+# Cases (each `mpirun --oversubscribe -np R build/apps/mpm run SCENE --threads T --steps N --profile`):
+#   2d  strong scaling, 2D linear-hat USL, the two disks of examples/02_two_disks at 1000 x 1000 cells
+#       (1,005,304 particles): (ranks, threads) = (1,1), (1,2), (2,1)
+#   3d  strong scaling, 3D cubic B-spline USL, two spheres at 77^3 cells (~2.4e5 particles): (1,1), (1,2), (2,1)
+#   weak  5e5 particles per rank: the 2D scene at 707^2 cells (~5.0e5) on 1 rank, at 1000^2 (1.0e6) on 2 ranks
+#   pingpong  bench_pingpong (one-way time 8 B .. 8 MB; latency and bandwidth)
+# Scenes are written from examples/02_two_disks/scene.yaml into a temporary directory (removed at the end).
+# Each run is repeated N times (default 3) and the median stepping wall time is reported, with its phases (s) and
+# the machine's 1-minute load (uptime) before the run: the machine may be shared, so say how loaded it was.
+# `mpm run` prints rank 0's profile; with several ranks it also prints each phase's min and max over the ranks.
+# --baseline: every multi-rank run is followed by the same run with MPM_DEBUG_SLAB_BASELINE=1 (the blocking halo
+# exchange and the full owner scan of the migration from before the overlap; same bits), rows "<case>_baseline":
+# a before/after comparison under the same load. --quick: scenes 4x (2D) and ~3x (3D) smaller, a smoke test.
+#
+# Environment: MPM_BUILD_DIR (default build), MPM_BIN (default $MPM_BUILD_DIR/apps/mpm), MPIRUN (default mpirun). As root the OMPI_ALLOW_RUN_AS_ROOT pair is
+# set here. Needs a build with MPM_WITH_MPI and the targets mpm and bench_pingpong.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${MPM_BUILD_DIR:-$here/build}
+mpirun=${MPIRUN:-mpirun}
+repeat=3
+steps=40
+only="pingpong,2d,3d,weak"
+csv=""
+quick=0
+baseline=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --repeat) repeat=$2; shift 2 ;;
+    --steps) steps=$2; shift 2 ;;
+    --only) only=$2; shift 2 ;;
+    --csv) csv=$2; shift 2 ;;
+    --quick) quick=1; shift ;;
+    --baseline) baseline=1; shift ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+    *) echo "run_distributed_scaling.sh: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+mpm=${MPM_BIN:-$build/apps/mpm}  # MPM_BIN: another build of mpm (a before/after comparison)
+pingpong=$build/bench/bench_pingpong
+for f in "$mpm" "$pingpong"; do
+  [ -x "$f" ] || { echo "run_distributed_scaling.sh: $f missing (build the targets mpm and bench_pingpong)" >&2; exit 2; }
+done
+work=$(mktemp -d /tmp/mpm_scaling.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+csv=${csv:-$build/distributed_scaling.csv}
+
+# The scenes: examples/02_two_disks with another cell size, USL, a fixed small dt (the disks hardly move in the
+# timed steps: the cost of a step, not a collision) and one output field.
+make_scene() {  # name dim shape cell_size
+  local name=$1 dim=$2 shape=$3 h=$4
+  /usr/bin/python3 - "$here/examples/02_two_disks/scene.yaml" "$work/$name.yaml" "$dim" "$shape" "$h" <<'EOF'
+import sys
+src, dst, dim, shape, h = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4], sys.argv[5]
+text = open(src).read()
+text = text.replace("cell_size: 0.05", f"cell_size: {h}").replace("scheme: musl", "scheme: usl")
+text = text.replace("shape_function: linear", f"shape_function: {shape}").replace("dt: 0.001", "dt: 2.0e-5")
+text = text.replace("fields: [velocity, stress, von_mises_stress, body]", "fields: [velocity]")
+if dim == 3:
+    text = text.replace("dimension: 2", "dimension: 3").replace("origin: [0, 0]", "origin: [0, 0, 0]")
+    text = text.replace("extent: [1, 1]", "extent: [1, 1, 1]")
+    text = text.replace("type: disk, center: [0.2, 0.2]", "type: sphere, center: [0.2, 0.2, 0.2]")
+    text = text.replace("type: disk, center: [0.8, 0.8]", "type: sphere, center: [0.8, 0.8, 0.8]")
+    text = text.replace("velocity: [0.1, 0.1]", "velocity: [0.1, 0.1, 0.1]")
+    text = text.replace("velocity: [-0.1, -0.1]", "velocity: [-0.1, -0.1, -0.1]")
+open(dst, "w").write(text)
+EOF
+}
+if [ $quick = 1 ]; then
+  make_scene strong2d 2 linear 0.002; make_scene strong3d 3 cubic_bspline 0.025; make_scene weak1 2 linear 0.0028248587570621469
+  make_scene weak2 2 linear 0.002
+else
+  make_scene strong2d 2 linear 0.001; make_scene strong3d 3 cubic_bspline 0.012987012987012988; make_scene weak1 2 linear 0.0014144271570014145
+  make_scene weak2 2 linear 0.001
+fi
+
+load() { cut -d' ' -f1 /proc/loadavg; }
+
+# One run: prints "wall particles p2g grid g2p stress halo migrate rebalance other halo_max migrate_max" (rank 0's
+# phases; *_max over the ranks) from the log of `mpm run`.
+one_run() {  # ranks threads scene [env assignment]
+  local log=$work/run.log
+  env ${4:-} "$mpirun" --oversubscribe -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" --profile \
+    -o "$work/out" --rebalance-every 20 > "$log" 2>&1 || { cat "$log" >&2; return 1; }
+  /usr/bin/python3 - "$log" <<'EOF'
+import re, sys
+text = open(sys.argv[1]).read()
+done = re.search(r"done: \d+ steps .* in ([0-9.]+) s wall, .* particle-updates/s, (\d+) particles", text)
+phase = {}
+for name in ["P2G", "grid update", "G2P", "stress update", "halo", "migrate", "rebalance", "other"]:
+    m = re.search(r"^" + re.escape(name) + r"\s+([0-9.]+)\s", text, re.M)
+    phase[name] = float(m.group(1)) if m else 0.0
+spread = {}
+for name in ["halo", "migrate", "stepping"]:
+    m = re.search(r"^ranks' " + re.escape(name) + r": min ([0-9.]+) s, max ([0-9.]+) s", text, re.M)
+    spread[name] = (float(m.group(1)), float(m.group(2))) if m else (phase.get(name, 0.0), phase.get(name, 0.0))
+print(done.group(1), done.group(2), *[f"{phase[k]:.4f}" for k in phase],
+      f"{spread['halo'][1]:.4f}", f"{spread['migrate'][1]:.4f}")
+EOF
+}
+
+echo "case,ranks,threads,particles,steps,run,load,wall,p2g,grid,g2p,stress,halo,migrate,rebalance,other,halo_max,migrate_max" > "$csv"
+run_case() {  # label ranks threads scene
+  for k in $(seq 1 "$repeat"); do
+    for variant in "" baseline; do
+      [ -z "$variant" ] || { [ "$baseline" = 1 ] && [ "$2" -gt 1 ]; } || continue
+      local label=$1 setting=""
+      [ -z "$variant" ] || { label=${1}_baseline; setting=MPM_DEBUG_SLAB_BASELINE=1; }
+      local l; l=$(load)
+      local r; r=$(one_run "$2" "$3" "$4" $setting)
+      read -r wall particles rest <<< "$r"
+      echo "$label,$2,$3,$particles,$steps,$k,$l,$wall,$(echo "$rest" | tr ' ' ',')" >> "$csv"
+      echo "  $label np $2 x $3 threads, run $k: $wall s (load $l)" >&2
+    done
+  done
+}
+echo "machine: $(nproc) cores, $(uptime)" >&2
+if [[ $only == *pingpong* ]]; then
+  for k in $(seq 1 "$repeat"); do
+    l=$(load)
+    line=$("$mpirun" --oversubscribe -np 2 "$pingpong" | grep '^model:')
+    lat=$(echo "$line" | sed -E 's/.*latency ([0-9.]+) us.*/\1/')
+    bw=$(echo "$line" | sed -E 's/.*bandwidth ([0-9.]+) MB.*/\1/')
+    echo "pingpong,2,1,0,0,$k,$l,0,$lat,$bw,0,0,0,0,0,0,0,0" >> "$csv"
+    echo "  pingpong run $k: latency $lat us, bandwidth $bw MB/s (load $l)" >&2
+  done
+fi
+if [[ $only == *2d* ]]; then for rt in "1 1" "1 2" "2 1"; do run_case strong2d $rt strong2d; done; fi
+if [[ $only == *3d* ]]; then for rt in "1 1" "1 2" "2 1"; do run_case strong3d $rt strong3d; done; fi
+if [[ $only == *weak* ]]; then run_case weak 1 1 weak1; run_case weak 2 1 weak2; fi
+echo "machine after: $(uptime)" >&2
+/usr/bin/python3 "$here/bench/distributed_model.py" "$csv"
