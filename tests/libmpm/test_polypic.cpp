@@ -108,9 +108,9 @@ TEST(PolyPic, CellVelocitiesReproducedExactly2D) { check_cell_reproduced<2>(); }
 TEST(PolyPic, CellVelocitiesReproducedExactly3D) { check_cell_reproduced<3>(); }
 
 // The modes of degree two and more carry no momentum and no angular momentum to the grid: with hats
-// sum_I phi_I prod_{d in S} r_d = 0 and sum_I phi_I r_I x prod_{d in S} r_d = 0 when |S| >= 2 (each holds a first moment
-// sum_k N_d(k) r_d(k) = 0 of one axis). So P2G maps the momentum and angular momentum of APIC (Jiang et al. 2015:
-// both conserved), whatever the higher modes hold; asserted to round-off on random particles and modes.
+// sum_I phi_I prod_{d in S} r_d = 0 and sum_I phi_I r_I x prod_{d in S} r_d = 0 when |S| >= 2 (each holds a first
+// moment sum_k N_d(k) r_d(k) = 0 of one axis). So P2G maps the momentum and angular momentum of APIC (Jiang et al.
+// 2015: both conserved), whatever the higher modes hold; asserted to round-off on random particles and modes.
 template <int Dim>
 void check_higher_modes_carry_no_momentum() {
   std::array<int, Dim> cells;
@@ -166,7 +166,8 @@ template <int Dim>
 void check_multilinear_exact(const std::string& scheme) {
   const MultilinearField<Dim> f = MultilinearField<Dim>::random(Dim);
   auto sim = test::simulation_from_yaml<Dim>(
-      block(Dim, "scheme: " + scheme + ", velocity_transfer: polypic, dt: 1.0e-6, end_time: 1", Dim == 2 ? "[0, 0]" : "[0, 0, 0]"));
+      block(Dim, "scheme: " + scheme + ", velocity_transfer: polypic, dt: 1.0e-6, end_time: 1",
+            Dim == 2 ? "[0, 0]" : "[0, 0, 0]"));
   auto& p = sim->bodies()[0].particles;
   auto& C = p.field(keys::affine_velocity<Dim>);
   auto& modes = p.field(keys::polypic_modes<Dim>);

@@ -80,9 +80,10 @@ void read_velocity_transfer(const YamlReader& reader, const YamlMap& map, Solver
   // with them a particle keeps every velocity field its 2^d nodes can hold. Wider or domain-averaged functions reach
   // 3^d or more nodes with weights that are not multilinear, where these modes are neither complete nor orthogonal.
   if (solver.velocity_transfer == VelocityTransfer::polypic && solver.shape_function != "linear")
-    reader.fail(*transfer, "polypic keeps the 2^d multilinear velocity modes of a linear hat's cell, which make its "
-                           "transfer lossless only with shape_function: linear (the shape function is " +
-                               solver.shape_function + "); use apic with other shape functions");
+    reader.fail(*transfer,
+                "polypic keeps the 2^d multilinear velocity modes of a linear hat's cell, which make its "
+                "transfer lossless only with shape_function: linear (the shape function is " +
+                    solver.shape_function + "); use apic with other shape functions");
 }
 
 /// Exactly one of dt (fixed) and cfl (adaptive).
