@@ -170,7 +170,7 @@ template <int Dim>
 void add_run_fields(Body<Dim>& body, const SceneDescription& scene, const GridGeometry<Dim>& geometry) {
   if (carries_affine_velocity(scene.solver.velocity_transfer))
     body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
-  if constexpr (keys::polypic_extra_modes < Dim >> 0)
+  if constexpr (Dim >= 2)
     if (scene.solver.velocity_transfer == VelocityTransfer::polypic)  // and PolyPIC's higher modes (none in 1D)
       body.particles.add_field(keys::polypic_modes<Dim>, keys::zero_poly_modes<Dim>());
   if constexpr (Dim == 2)

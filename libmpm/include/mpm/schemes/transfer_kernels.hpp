@@ -112,7 +112,7 @@ Mat<Dim> affine_matrix_of_trial(const Stencil<Dim, Shape>& st, const NodeRecord<
 /// PIC/FLIP, 1D (where PolyPIC is APIC), and every shape function but the hats (the scene parser refuses them).
 template <int Dim, class Shape>
 keys::PolyModes<Dim>* polypic_of(ParticleSet<Dim>& p) {
-  if constexpr (keys::polypic_extra_modes < Dim >> 0 && std::is_same_v<Shape, LinearHat>)
+  if constexpr (std::is_same_v<Shape, LinearHat> && Dim >= 2)  // PolyPIC has extra modes from 2D on
     return p.has_field(keys::polypic_modes<Dim>) ? p.field(keys::polypic_modes<Dim>).data() : nullptr;
   else
     return nullptr;
