@@ -133,7 +133,7 @@ void check_higher_modes_carry_no_momentum() {
       Vec<3> x3 = Vec<3>::Zero(), m3 = Vec<3>::Zero();
       x3.template head<Dim>() = Vec<Dim>(x) + r;
       m3.template head<Dim>() = m;
-      L += x3.cross(m3);
+      L += Vec<3>(x3[1] * m3[2] - x3[2] * m3[1], x3[2] * m3[0] - x3[0] * m3[2], x3[0] * m3[1] - x3[1] * m3[0]);
     }
     worst_p = std::max(worst_p, p.norm());
     worst_l = std::max(worst_l, L.norm());
