@@ -32,7 +32,7 @@ constexpr std::array<EnergyHint, 9> rows{{
      "PolyPIC's transfer loses nothing, so it keeps grid-scale velocity noise as FLIP does: where a splash breaks "
      "into spray it can gain energy and invert a particle: halve `cfl`, or use `velocity_transfer: apic` (both "
      "lose energy instead); MUSL or USF, not USL",
-     "the dam break (examples/12) with PolyPIC and hats, MUSL, to 1.7 s: -4.40%/-2.08%/-1.14% at 35/70/140 cells, "
+     "the dam break (examples/12) with PolyPIC and hats, MUSL, to 1.7 s: -5.61%/-1.75%/-1.14% at 35/70/140 cells, "
      "never above E0 (APIC -13.4%/-4.85%/-2.80%); the FSI example (examples/14) with hats: the sentinel warns at "
      "0.21 s, a spray particle inverts at 0.234 s (cfl 0.5); at cfl 0.25 it runs to 0.5 s, -25.3% (APIC -46.1%); USL "
      "inverts at 0.091 s (physics/fluids/README.md, Limits)"},
