@@ -163,12 +163,16 @@ bool add_domain_fields(Body<Dim>& body, const SceneDescription& scene, const Bod
   return track_corners;
 }
 
-/// The on-demand fields a run of the scene adds to a body besides its particle domains: APIC's affine velocity,
+/// The on-demand fields a run of the scene adds to a body besides its particle domains: APIC's affine velocity
+/// (and PolyPIC's higher modes),
 /// the axisymmetric hoop fields, what the output and the histories read, the material's history.
 template <int Dim>
 void add_run_fields(Body<Dim>& body, const SceneDescription& scene, const GridGeometry<Dim>& geometry) {
-  if (scene.solver.velocity_transfer == VelocityTransfer::apic)
+  if (carries_affine_velocity(scene.solver.velocity_transfer))
     body.particles.add_field(keys::affine_velocity<Dim>, MatU<Dim>::Zero());  // C_p = 0 at the start
+  if constexpr (Dim >= 2)
+    if (scene.solver.velocity_transfer == VelocityTransfer::polypic)  // and PolyPIC's higher modes (none in 1D)
+      body.particles.add_field(keys::polypic_modes<Dim>, keys::zero_poly_modes<Dim>());
   if constexpr (Dim == 2)
     if (geometry.coordinates == Coordinates::axisymmetric) axisym::add_hoop_fields(body.particles);  // F_tt, L_tt
   prepare_output_fields<Dim>(scene.output.fields, body);                  // what the output reads (displacement: X_p)

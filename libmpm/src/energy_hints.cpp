@@ -11,7 +11,7 @@ namespace {
 
 bool is_linear(const HintContext& c) { return c.shape_function == "linear"; }
 
-constexpr std::array<EnergyHint, 8> rows{{
+constexpr std::array<EnergyHint, 9> rows{{
     {"contact module (multi-velocity contact)", trigger_energy, [](const HintContext& c) { return c.contact; },
      "frictionless collisions of deformable bodies stay within +0.5% of E0 with either onset (issue 21); contact "
      "with a rigid plane or body, or friction, was not measured for energy: try `contact.onset: particle_gap`",
@@ -27,6 +27,15 @@ constexpr std::array<EnergyHint, 8> rows{{
      "above E0; at 35/140/280 cells instead of 70 (MUSL): -13.4%/-2.80%/-3.23%, density warnings only at the wall "
      "impact; USL inverts a particle at 0.065 s, FLIP with USL at 0.066 s; before the fix MUSL inverted at 0.093 s, "
      "USF at 0.068 s (physics/fluids/README.md, Limits)"},
+    {"PolyPIC with linear hats", trigger_energy | trigger_guard,
+     [](const HintContext& c) { return c.transfer == VelocityTransfer::polypic; },
+     "PolyPIC's transfer loses nothing, so it keeps grid-scale velocity noise as FLIP does: where a splash breaks "
+     "into spray it can gain energy and invert a particle: halve `cfl`, or use `velocity_transfer: apic` (both "
+     "lose energy instead); MUSL or USF, not USL",
+     "the dam break (examples/12) with PolyPIC and hats, MUSL, to 1.7 s: -5.61%/-1.75%/-1.14% at 35/70/140 cells, "
+     "never above E0 (APIC -13.4%/-4.85%/-2.80%); the FSI example (examples/14) with hats: the sentinel warns at "
+     "0.21 s, a spray particle inverts at 0.234 s (cfl 0.5); at cfl 0.25 it runs to 0.5 s, -25.3% (APIC -46.1%); USL "
+     "inverts at 0.091 s (physics/fluids/README.md, Limits)"},
     {"USL (any shape function)", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.scheme == SchemeKind::usl; },
      "USL is the least stable explicit scheme here: use `scheme: musl` (or usf), or a smaller `cfl`",

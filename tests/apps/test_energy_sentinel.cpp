@@ -125,6 +125,9 @@ TEST(EnergyHints, RowsAndTheirMeasurements) {
   HintContext apic;
   apic.transfer = VelocityTransfer::apic;
   EXPECT_NE(find_energy_hint(apic, trigger_guard).hint.find("free surface"), std::string_view::npos);
+  HintContext polypic;
+  polypic.transfer = VelocityTransfer::polypic;
+  EXPECT_NE(find_energy_hint(polypic, trigger_guard).hint.find("spray"), std::string_view::npos);
   HintContext bspline;
   bspline.shape_function = "cubic_bspline";
   EXPECT_EQ(&find_energy_hint(bspline, trigger_energy), &energy_hints().back());

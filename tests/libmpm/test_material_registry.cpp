@@ -166,7 +166,7 @@ TEST(SolverOptions, NamesAreWrittenOnce) {
   EXPECT_FALSE(mpm::enum_from_name<mpm::SchemeKind>("flip"));
   EXPECT_TRUE(mpm::is_total_lagrangian(mpm::SchemeKind::tlmpm));
   EXPECT_FALSE(mpm::is_total_lagrangian(mpm::SchemeKind::musl));
-  EXPECT_EQ(mpm::enum_names<mpm::VelocityTransfer>(), (std::vector<std::string>{"flip", "apic"}));
+  EXPECT_EQ(mpm::enum_names<mpm::VelocityTransfer>(), (std::vector<std::string>{"flip", "apic", "polypic"}));
   EXPECT_EQ(mpm::enum_names<mpm::CpdiDomainUpdate>(), (std::vector<std::string>{"deformation_gradient", "corners"}));
 }
 

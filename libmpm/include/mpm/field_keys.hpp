@@ -4,6 +4,8 @@
 /// modules share without depending on each other (temperature: heated by plasticity, conducted by
 /// thermal). A field only one module uses has its key in that module (`mpm/<module>/field_keys.hpp`).
 
+#include <array>
+
 #include "mpm/field_key.hpp"
 #include "mpm/shape/cpdi_elements.hpp"
 #include "mpm/types.hpp"
@@ -19,6 +21,22 @@ inline constexpr FieldKey<MatU<Dim>> velocity_gradient{"velocity_gradient"};
 /// C_p of APIC (review §5.5.1), 1/s.
 template <int Dim>
 inline constexpr FieldKey<MatU<Dim>> affine_velocity{"affine_velocity"};
+/// PolyPIC's velocity modes of degree two and more (Fu et al. 2017; docs/theory.md §2, velocity transfers), which
+/// a particle keeps with v_p and C_p: 2^Dim - 1 - Dim of them, the coefficients of (x - x_p)(y - y_p) in 2D, and
+/// of xy, xz, yz, xyz in 3D (kernels::polypic_masks), 1/s^2 and 1/s^3; none in 1D (PolyPIC is APIC there).
+template <int Dim>
+inline constexpr int polypic_extra_modes = (1 << Dim) - 1 - Dim;
+template <int Dim>
+using PolyModes = std::array<VecU<Dim>, (polypic_extra_modes<Dim> > 0 ? polypic_extra_modes<Dim> : 1)>;
+template <int Dim>
+inline constexpr FieldKey<PolyModes<Dim>> polypic_modes{"polypic_modes"};
+/// Every mode zero (Eigen leaves a default-constructed vector uninitialised).
+template <int Dim>
+PolyModes<Dim> zero_poly_modes() {
+  PolyModes<Dim> modes;
+  for (auto& c : modes) c.setZero();
+  return modes;
+}
 /// Prescribed body force per unit mass b_p, m/s^2 (manufactured solutions), added to gravity in P2G.
 template <int Dim>
 inline constexpr FieldKey<VecU<Dim>> body_force{"body_force"};

@@ -24,14 +24,18 @@ struct EnumNames<SchemeKind> {
 /// (no contact between bodies, no APIC, CPDI domains follow F).
 constexpr bool is_total_lagrangian(SchemeKind scheme) { return scheme == SchemeKind::tlmpm; }
 
-/// Grid-to-particle velocity transfer: the PIC/FLIP blend (eq. 2.53) or APIC (review §5.5.1).
-enum class VelocityTransfer { flip, apic };
+/// Grid-to-particle velocity transfer: the PIC/FLIP blend (eq. 2.53), APIC (review §5.5.1) or PolyPIC with
+/// linear hats (Fu et al. 2017: APIC plus the multilinear modes; docs/theory.md §2, velocity transfers).
+enum class VelocityTransfer { flip, apic, polypic };
 
 template <>
 struct EnumNames<VelocityTransfer> {
-  static constexpr std::array<std::pair<VelocityTransfer, std::string_view>, 2> table{
-      {{VelocityTransfer::flip, "flip"}, {VelocityTransfer::apic, "apic"}}};
+  static constexpr std::array<std::pair<VelocityTransfer, std::string_view>, 3> table{
+      {{VelocityTransfer::flip, "flip"}, {VelocityTransfer::apic, "apic"}, {VelocityTransfer::polypic, "polypic"}}};
 };
+
+/// True for the transfers whose particles carry the affine velocity C_p (APIC and PolyPIC).
+constexpr bool carries_affine_velocity(VelocityTransfer transfer) { return transfer != VelocityTransfer::flip; }
 
 /// How CPDI particle domains move: corners x_p + F (X_c - X_p) (eq. 3.27) or tracked corners (CPDI2, eq. 3.38).
 enum class CpdiDomainUpdate { deformation_gradient, corners };

@@ -69,11 +69,21 @@ void read_velocity_transfer(const YamlReader& reader, const YamlMap& map, Solver
   const auto transfer = map.find("velocity_transfer");
   if (!transfer) return;
   solver.velocity_transfer = reader.choice<VelocityTransfer>(*transfer);
-  if (solver.velocity_transfer != VelocityTransfer::apic) return;
+  if (!carries_affine_velocity(solver.velocity_transfer)) return;
+  const std::string name(enum_name(solver.velocity_transfer));
   if (is_total_lagrangian(solver.scheme))
-    reader.fail(*transfer, "apic is not available with tlmpm (review Remark 35: it does not work well with the TLMPM)");
+    reader.fail(*transfer,
+                name + " is not available with tlmpm (review Remark 35: APIC does not work well with the TLMPM)");
   if (const auto flip = map.find("flip_fraction"))
-    reader.fail(*flip, "flip_fraction applies to velocity_transfer: flip, not to apic");
+    reader.fail(*flip, "flip_fraction applies to velocity_transfer: flip, not to " + name);
+  // PolyPIC's modes are the 2^d multilinear functions of the hats' one cell (docs/theory.md §2, velocity transfers):
+  // with them a particle keeps every velocity field its 2^d nodes can hold. Wider or domain-averaged functions reach
+  // 3^d or more nodes with weights that are not multilinear, where these modes are neither complete nor orthogonal.
+  if (solver.velocity_transfer == VelocityTransfer::polypic && solver.shape_function != "linear")
+    reader.fail(*transfer,
+                "polypic keeps the 2^d multilinear velocity modes of a linear hat's cell, which make its "
+                "transfer lossless only with shape_function: linear (the shape function is " +
+                    solver.shape_function + "); use apic with other shape functions");
 }
 
 /// Exactly one of dt (fixed) and cfl (adaptive).

@@ -39,8 +39,9 @@ void refuse_transfers(const io::YamlReader& reader, const io::YamlMap& map, cons
                             solver.shape_function));
   if (solver.velocity_transfer != VelocityTransfer::flip)
     reader.fail(*map.find("velocity_transfer"),
-                "scheme: implicit updates particle velocities by the grid increment (eq. 92, FLIP); apic is not "
-                "available");
+                fmt::format("scheme: implicit updates particle velocities by the grid increment (eq. 92, FLIP); {} is "
+                            "not available",
+                            enum_name(solver.velocity_transfer)));
   if (const auto flip = map.find("flip_fraction"); flip && solver.flip_fraction != 1)
     reader.fail(*flip,
                 "scheme: implicit needs flip_fraction 1 (eq. 92: the energy and momentum proof, Cor. 3.2, "

@@ -52,6 +52,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     const NodeVelocity<Dim>* vel = grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction;
     MatU<Dim>* affine = kernels::affine_of(p);
+    const keys::PolyModes<Dim>* poly = kernels::polypic_of<Dim, Shape>(p);
     for_each_slab_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
@@ -72,8 +73,19 @@ class Musl final : public ShapedScheme<Dim, Shape> {
           // particle inverted (dam break at 0.093 s; a 1D column at rest at 0.091 s). The final C_p is taken in the
           // last pass from the re-mapped v^{t+dt}, like L_p.
           p.v[i] = v_pic;
-          const Mat<Dim> C = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic,
-                                                             [&](Index n) { return Vec<Dim>(vel[n].updated); });
+          const auto trial = [&](Index n) { return Vec<Dim>(vel[n].updated); };
+          const Mat<Dim> C = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic, trial);
+          if constexpr (std::is_same_v<Shape, LinearHat>) {
+            if (poly) {  // PolyPIC: the higher modes from the same trial velocities
+              const keys::PolyModes<Dim> modes = kernels::polypic_modes_of_trial(st, g, node, p.mass[i], v_pic, trial);
+              for (int a = 0; a < st.count; ++a) {
+                const Vec<Dim> r = st.node_offset(a);
+                node[st.node[a]].momentum +=
+                    st.w[a] * p.mass[i] * (v_pic + C * r + kernels::polypic_higher_velocity<Dim>(modes, r));
+              }
+              continue;
+            }
+          }
           for (int a = 0; a < st.count; ++a)
             node[st.node[a]].momentum += st.w[a] * p.mass[i] * (v_pic + C * st.node_offset(a));
           continue;
@@ -115,6 +127,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
     const Real dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
+    keys::PolyModes<Dim>* poly = kernels::polypic_of<Dim, Shape>(p);
     [[maybe_unused]] const axisym::HoopFields hoop =
         Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
     axisym::StencilFor<Dim, Shape, Coords> st;
@@ -137,6 +150,8 @@ class Musl final : public ShapedScheme<Dim, Shape> {
       kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
       L_out[i - begin] = L;
       if (affine) affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].mapped); });
+      if constexpr (std::is_same_v<Shape, LinearHat>)
+        if (poly) poly[i] = kernels::polypic_modes(st, g, [&](Index n) { return Vec<Dim>(vel[n].mapped); });
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) &&
             kernels::inside<Dim, Coords>(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
     }

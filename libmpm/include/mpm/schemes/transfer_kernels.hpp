@@ -108,6 +108,79 @@ Mat<Dim> affine_matrix_of_trial(const Stencil<Dim, Shape>& st, const NodeRecord<
   }
 }
 
+/// The on-demand particle field "polypic_modes" (PolyPIC's modes of degree two and more), or nullptr: APIC,
+/// PIC/FLIP, 1D (where PolyPIC is APIC), and every shape function but the hats (the scene parser refuses them).
+template <int Dim, class Shape>
+keys::PolyModes<Dim>* polypic_of(ParticleSet<Dim>& p) {
+  if constexpr (std::is_same_v<Shape, LinearHat> && Dim >= 2)  // PolyPIC has extra modes from 2D on
+    return p.has_field(keys::polypic_modes<Dim>) ? p.field(keys::polypic_modes<Dim>).data() : nullptr;
+  else
+    return nullptr;
+}
+
+/// The axes (bit d: axis d) of PolyPIC's mode k of degree two and more, in the order of keys::PolyModes:
+/// 2D xy; 3D xy, xz, yz, xyz.
+template <int Dim>
+constexpr unsigned polypic_mask(int k) {
+  constexpr unsigned masks[4] = {0b011, 0b101, 0b110, 0b111};
+  return masks[k];
+}
+
+/// The higher modes' part of a PolyPIC particle's velocity at offset r = x - x_p (m):
+/// sum_k c_k prod_{d in S_k} r_d (Fu et al. 2017; docs/theory.md §2, velocity transfers).
+template <int Dim>
+inline Vec<Dim> polypic_higher_velocity(const keys::PolyModes<Dim>& modes, const Vec<Dim>& r) {
+  Vec<Dim> u = Vec<Dim>::Zero();
+  for (int k = 0; k < keys::polypic_extra_modes<Dim>; ++k) {
+    Real basis = 1;
+    for (int d = 0; d < Dim; ++d)
+      if (polypic_mask<Dim>(k) >> d & 1u) basis *= r[d];
+    u += basis * Vec<Dim>(modes[k]);
+  }
+  return u;
+}
+
+/// PolyPIC's modes of degree two and more from nodal velocities, for linear hats (Fu et al. 2017): the coefficient of
+/// mode S is the mixed derivative c_S = sum_I v_I d^S phi_I(x_p) = sum_I v_I prod_{d in S} N'_d prod_{d not in S} N_d,
+/// N'_d = -+1/h_d. With v_p = sum phi_I v_I and C_p = sum v_I (x) grad phi_I (the |S| <= 1 modes) the particle keeps
+/// the exact Taylor expansion about x_p of the multilinear field sum_I v_I phi_I(x) of its cell: nothing is lost.
+/// The 1D weight of node a on axis d is 1 + r/h for the lower node (r = -f h) and 1 - r/h for the upper one.
+template <int Dim, class Shape, class NodeVelocityOf>
+keys::PolyModes<Dim> polypic_modes(const Stencil<Dim, Shape>& st, const GridGeometry<Dim>& g,
+                                   NodeVelocityOf&& velocity_of) {
+  static_assert(std::is_same_v<Shape, LinearHat>, "PolyPIC's multilinear modes are those of the linear hats");
+  keys::PolyModes<Dim> modes = keys::zero_poly_modes<Dim>();
+  Real w[Dim][2], dw[Dim][2];
+  for (int d = 0; d < Dim; ++d) {
+    w[d][0] = 1 + st.offset[d][0] * g.inv_h[d];
+    w[d][1] = 1 - st.offset[d][1] * g.inv_h[d];
+    dw[d][0] = -g.inv_h[d];
+    dw[d][1] = g.inv_h[d];
+  }
+  for (int a = 0; a < st.count; ++a) {
+    const Vec<Dim> v = velocity_of(st.node[a]);
+    for (int k = 0; k < keys::polypic_extra_modes<Dim>; ++k) {
+      Real weight = 1;
+      for (int d = 0; d < Dim; ++d) {
+        const int side = a >> d & 1;
+        weight *= (polypic_mask<Dim>(k) >> d & 1u) ? dw[d][side] : w[d][side];
+      }
+      modes[k] += weight * v;
+    }
+  }
+  return modes;
+}
+
+/// polypic_modes from the trial velocities, a nearly empty node entering with the particle's own velocity v_p as in
+/// affine_matrix_of_trial (its trial velocity dt f_I/m_I would enter with the weight 1/h^|S|, not phi_I).
+template <int Dim, class Shape, class NodeVelocityOf>
+keys::PolyModes<Dim> polypic_modes_of_trial(const Stencil<Dim, Shape>& st, const GridGeometry<Dim>& g,
+                                            const NodeRecord<Dim>* node, Real particle_mass, const Vec<Dim>& v_p,
+                                            NodeVelocityOf&& velocity_of) {
+  const Real light = apic_light_node_fraction * particle_mass;
+  return polypic_modes(st, g, [&](Index n) { return node[n].mass < light ? v_p : Vec<Dim>(velocity_of(n)); });
+}
+
 /// P2G (eqs 2.40, 2.43, 2.36): nodal mass, momentum and internal force f_I = -sum V_p sigma_p grad phi.
 /// USF maps mass and momentum first and the force of the updated stress later: the two flags select.
 /// Axisymmetric (Coords): V_p includes F_tt and f_rI gains the hoop term -V_p sigma_tt T_I (eq. G.2).
@@ -119,6 +192,7 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
   NodeRecord<Dim>* node = grid.node.data();
   const VecU<Dim>* body_force = Force ? body_force_of(p) : nullptr;
   const MatU<Dim>* affine = MassMomentum ? affine_of(body.particles) : nullptr;
+  const keys::PolyModes<Dim>* poly = MassMomentum ? polypic_of<Dim, Shape>(body.particles) : nullptr;
   const Real* hoop_stretch = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
   for_each_slab_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
     axisym::StencilFor<Dim, Shape, Coords> st;
@@ -139,9 +213,9 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
         mvs[r] = mv[r];
         for (int c = 0; c < Dim; ++c) vss[r][c] = vs(r, c);
       }
-      // The APIC test is hoisted out of the node loop (a branch per node cost 15% on 3D cubic).
-      auto scatter = [&](auto affine_tag) {
-        constexpr bool with_affine = decltype(affine_tag)::value;
+      // The APIC and PolyPIC tests are hoisted out of the node loop (a branch per node cost 15% on 3D cubic).
+      auto scatter = [&](auto affine_tag, auto poly_tag) {
+        constexpr bool with_affine = decltype(affine_tag)::value, with_poly = decltype(poly_tag)::value;
         Mat<Dim> mC;
         if constexpr (with_affine) mC = m * Mat<Dim>(affine[i]);
         for (int a = 0; a < st.count; ++a) {
@@ -150,7 +224,8 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
           if constexpr (MassMomentum) {
             n.mass += w * m;
             if constexpr (with_affine) {  // APIC (eq. 5.37): m_p (v_p + C_p (x_I - x_p))
-              const Vec<Dim> extra = mC * st.node_offset(a);
+              Vec<Dim> extra = mC * st.node_offset(a);
+              if constexpr (with_poly) extra += m * polypic_higher_velocity<Dim>(poly[i], st.node_offset(a));
               for (int r = 0; r < Dim; ++r) n.momentum[r] += w * (mvs[r] + extra[r]);
             } else {
               for (int r = 0; r < Dim; ++r) n.momentum[r] += w * mvs[r];
@@ -166,10 +241,12 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
           }
         }
       };
-      if (affine)
-        scatter(std::true_type{});
+      if (poly)  // PolyPIC: m_p (v_p + C_p (x_I - x_p) + the higher modes at x_I - x_p)
+        scatter(std::true_type{}, std::true_type{});
+      else if (affine)
+        scatter(std::true_type{}, std::false_type{});
       else
-        scatter(std::false_type{});
+        scatter(std::false_type{}, std::false_type{});
       if (body_force)
         for (int a = 0; a < st.count; ++a)
           for (int r = 0; r < Dim; ++r) node[st.node[a]].force[r] += st.w[a] * m * body_force[i][r];

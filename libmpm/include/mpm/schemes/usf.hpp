@@ -109,6 +109,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     const NodeRecord<Dim>* node = kernels::grid_of(body, ctx.grid).node.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
+    keys::PolyModes<Dim>* poly = kernels::polypic_of<Dim, Shape>(p);
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
@@ -121,10 +122,12 @@ class Usf final : public ShapedScheme<Dim, Shape> {
           v_pic += st.w[a] * nv.updated;
           dv += st.w[a] * (nv.updated - nv.mapped);
         }
-        if (affine) {  // APIC
+        if (affine) {  // APIC (PolyPIC: and the higher modes)
           p.v[i] = v_pic;
-          affine[i] = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic,
-                                                      [&](Index n) { return Vec<Dim>(vel[n].updated); });
+          const auto trial = [&](Index n) { return Vec<Dim>(vel[n].updated); };
+          affine[i] = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic, trial);
+          if constexpr (std::is_same_v<Shape, LinearHat>)
+            if (poly) poly[i] = kernels::polypic_modes_of_trial(st, g, node, p.mass[i], v_pic, trial);
         } else {
           p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
         }

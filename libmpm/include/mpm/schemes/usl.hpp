@@ -1,6 +1,6 @@
 #pragma once
 /// \file usl.hpp
-/// Update Stress Last (review §2.5.3, Algorithm 1) with the PIC/FLIP blend (eq. 2.53) and the
+/// Update Stress Last (review §2.5.3, Algorithm 1) with the PIC/FLIP blend (eq. 2.53), APIC or PolyPIC, and the
 /// small-mass cut-off (eq. 2.63): one mapping to the grid, one transfer back. Axisymmetric (Coords): the hoop
 /// rate L_tt = sum T_I v_rI^{t+dt} and stretch F_tt with the in-plane L and F (axisymmetric.hpp).
 
@@ -37,6 +37,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
     const NodeRecord<Dim>* node = kernels::grid_of(body, ctx.grid).node.data();
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
+    keys::PolyModes<Dim>* poly = kernels::polypic_of<Dim, Shape>(p);
     [[maybe_unused]] const axisym::HoopFields hoop =
         Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
     axisym::StencilFor<Dim, Shape, Coords> st;
@@ -57,10 +58,12 @@ class Usl final : public ShapedScheme<Dim, Shape> {
         dv += w * (nv.updated - nv.mapped);
         for (int c = 0; c < Dim; ++c) L.col(c) += nv.updated * st.grad[a][c];
       }
-      if (affine) {  // APIC: PIC velocity plus the affine matrix
+      if (affine) {  // APIC: PIC velocity plus the affine matrix (PolyPIC: and the higher modes)
         p.v[i] = v_pic;
-        affine[i] = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic,
-                                                    [&](Index n) { return Vec<Dim>(vel[n].updated); });
+        const auto trial = [&](Index n) { return Vec<Dim>(vel[n].updated); };
+        affine[i] = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic, trial);
+        if constexpr (std::is_same_v<Shape, LinearHat>)
+          if (poly) poly[i] = kernels::polypic_modes_of_trial(st, g, node, p.mass[i], v_pic, trial);
       } else {
         p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
       }
