@@ -38,9 +38,9 @@ struct Case {
   int coarsen = 1;    ///< cells this many times larger than the example's (fewer particles)
   int rebalance = 0;  ///< steps between the balance checks (Simulation::set_rebalance_interval), 0 none
   /// Changes to the example's text (modules: contact, thermal), applied before it is parsed; none when empty.
-  std::function<std::string(std::string)> edit;
+  std::function<std::string(std::string)> edit{};
   /// Whether to compare the contact force CSV (`contact.force_file`, written in the output directory).
-  std::string force_file;
+  std::string force_file{};
   /// Whether only the schemes' scatters exchange ghost nodes (the halo model's count is then checked); modules
   /// add scatters of their own (contact normals, thermal capacities), which the model below does not count.
   bool halo_model = true;

@@ -161,7 +161,8 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
     int slots;    ///< partners per body: bodies, then planes
     std::vector<Vec<Dim>> plane_velocity;
     const GridGeometry<Dim>* geometry = nullptr;  ///< node positions, for the moments of the forces
-    std::pair<Index, Index> owned;  ///< the nodes whose forces and work this rank sums (all in one process)
+    /// the nodes whose forces and work this rank sums (all in one process)
+    std::pair<Index, Index> owned{0, std::numeric_limits<Index>::max()};
     bool owns(Index I) const { return I >= owned.first && I < owned.second; }
   };
   /// The contact correction at every candidate node: two-body nodes (eqs 5.2-5.8), nodes of three or more
