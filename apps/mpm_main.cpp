@@ -197,14 +197,16 @@ int main(int argc, char** argv) {
 #endif
   }
   const int rank = world ? world->rank() : 0;
-  // A distributed run: --threads is per rank, by default the node's cores shared by its ranks.
-  if (world) {
+  // --threads is per rank; a distributed run's default is the node's cores shared by its ranks, within the CPUs the
+  // launcher's binding leaves each process (parallel_launch.hpp).
+  {
     const long cores = std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
-    const long on_node = ranks_on_node([](const char* name) { return std::getenv(name); }).value_or(world->size());
-    if (threads == 0) threads = static_cast<int>(std::max(1L, cores / std::max(1L, on_node)));
-    if (rank == 0 && threads * on_node > cores)
-      std::cerr << "warning: " << on_node << " ranks x " << threads << " threads on a node of " << cores
-                << " cores: the threads compete for the cores (set --threads per rank)\n";
+    const long on_node =
+        world ? ranks_on_node([](const char* name) { return std::getenv(name); }).value_or(world->size()) : 0;
+    const ThreadChoice choice = choose_threads(threads, cores, on_node, cpus_this_process_may_use());
+    threads = choice.threads;
+    if (rank == 0 && (run_cmd->parsed() || verify_cmd->parsed()) && !choice.warning.empty())
+      std::cerr << "warning: " << choice.warning << '\n';
   }
   std::unique_ptr<tbb::global_control> thread_limit;
   if (threads > 0)

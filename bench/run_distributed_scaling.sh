@@ -4,7 +4,8 @@
 #
 #   bash bench/run_distributed_scaling.sh [--repeat N] [--steps N] [--quick] [--only CASES] [--csv FILE] [--baseline]
 #
-# Cases (each `mpirun --oversubscribe -np R build/apps/mpm run SCENE --threads T --steps N --profile`):
+# Cases (each `mpirun --oversubscribe -np R build/apps/mpm run SCENE --threads T --steps N --profile`, with
+# `--bind-to none` when T > 1):
 #   2d  strong scaling, 2D linear-hat USL, the two disks of examples/02_two_disks at 1000 x 1000 cells
 #       (1,005,304 particles): (ranks, threads) = (1,1), (1,2), (2,1)
 #   3d  strong scaling, 3D cubic B-spline USL, two spheres at 77^3 cells (~2.4e5 particles): (1,1), (1,2), (2,1)
@@ -87,7 +88,11 @@ load() { cut -d' ' -f1 /proc/loadavg; }
 # phases; *_max over the ranks) from the log of `mpm run`.
 one_run() {  # ranks threads scene [env assignment]
   local log=$work/run.log
-  env ${4:-} "$mpirun" --oversubscribe -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" --profile \
+  # OpenMPI binds each rank to one core by default (up to two ranks): a rank with several threads must be unbound,
+  # or its threads share one core (measured before this: 1 rank x 2 threads at 0.94x of 1 x 1).
+  local bind=""
+  [ "$2" -gt 1 ] && bind="--bind-to none"
+  env ${4:-} "$mpirun" --oversubscribe $bind -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" --profile \
     -o "$work/out" --rebalance-every 20 > "$log" 2>&1 || { cat "$log" >&2; return 1; }
   /usr/bin/python3 - "$log" <<'EOF'
 import re, sys

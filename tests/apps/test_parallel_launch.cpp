@@ -68,6 +68,32 @@ TEST(ParallelLaunch, RanksOnTheNodeAreRead) {
   EXPECT_FALSE(on_node({}));
 }
 
+// The threads of a run (choose_threads): a distributed run shares the node's cores among its ranks but never runs
+// more threads than the CPUs its binding leaves it, and a --threads beyond those CPUs is said to gain nothing.
+TEST(ParallelLaunch, ThreadsFollowTheCoresAndTheBinding) {
+  using mpm::app::choose_threads;
+  // One process: TBB's default, silent; 2 threads on 1 allowed CPU (mpirun -np 1 binds to a core): a warning.
+  EXPECT_EQ(choose_threads(0, 8, 0, 8).threads, 0);
+  EXPECT_EQ(choose_threads(0, 8, 0, 8).warning, "");
+  EXPECT_EQ(choose_threads(4, 8, 0, 8).warning, "");
+  auto c = choose_threads(2, 2, 0, 1);
+  EXPECT_EQ(c.threads, 2);
+  EXPECT_NE(c.warning.find("--threads 2, but this process may run on 1 CPU(s) only"), std::string::npos) << c.warning;
+  EXPECT_NE(c.warning.find("--bind-to none"), std::string::npos) << c.warning;
+  // Distributed, unbound: 64 cores over 4 ranks -> 16 each; bound to one core each -> 1, said once.
+  EXPECT_EQ(choose_threads(0, 64, 4, 64).threads, 16);
+  EXPECT_EQ(choose_threads(0, 64, 4, 64).warning, "");
+  c = choose_threads(0, 64, 2, 1);
+  EXPECT_EQ(c.threads, 1);
+  EXPECT_NE(c.warning.find("1 thread(s) per rank, not 32"), std::string::npos) << c.warning;
+  EXPECT_EQ(choose_threads(0, 64, 2, std::nullopt).threads, 32);  // no affinity known: the node's share
+  EXPECT_EQ(choose_threads(0, 2, 4, 2).threads, 1);               // more ranks than cores: one thread each
+  // Ranks x threads beyond the node's cores.
+  c = choose_threads(2, 2, 2, 2);
+  EXPECT_NE(c.warning.find("2 ranks x 2 threads on a node of 2 cores"), std::string::npos) << c.warning;
+  EXPECT_EQ(choose_threads(1, 2, 2, 1).warning, "");
+}
+
 #ifdef MPM_WITH_MPI
 // With MPI only `mpm run` runs distributed; the other commands are refused on every process, explained once. (A
 // `mpm run` under a launcher's variables without the launcher would start MPI alone: tested under mpirun below.)
