@@ -299,12 +299,14 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     write(s, false);
     check_energy(s);
     if (s.step() % 50 == 0) check_state(s);
-    // (a wall-clock interval expires at different steps on the ranks: all write when any is due)
-    if (comm ? comm->any(checkpoints.due(s.time())) : checkpoints.due(s.time())) write_checkpoint(s);
-    debug_raise_at_step(s.step());
+    // A wall-clock checkpoint interval expires, and a signal arrives, at different steps on the ranks: all write
+    // when any is due and all stop after the step where any one received a signal; both flags in one reduction.
+    debug_raise_at_step(s.step());  // the tests' signal "during" this step
     debug_fail_at_step(comm ? comm->rank() : 0, s.step());
-    // A signal reaches the ranks at different steps: all stop after the step where any one received it.
-    if (comm ? comm->any(StopSignals::requested() != 0) : StopSignals::requested() != 0) throw StopRequested{};
+    std::array<double, 2> due{checkpoints.due(s.time()) ? 1.0 : 0.0, StopSignals::requested() != 0 ? 1.0 : 0.0};
+    if (comm) comm->max(due);
+    if (due[0] != 0) write_checkpoint(s);
+    if (due[1] != 0) throw StopRequested{};
     if (!options.progress) return;
     const auto now = Clock::now();
     if (now - last_print < std::chrono::milliseconds(500)) return;
