@@ -20,17 +20,6 @@ namespace {
 
 constexpr std::array<char, 3> axes{'x', 'y', 'z'};
 
-/// The failing particle's body and index now (ids survive the reordering by cell).
-template <int Dim>
-std::pair<const Body<Dim>*, Index> find_particle(const Simulation<Dim>& sim, const StabilityReport& report) {
-  for (const auto& b : sim.bodies()) {
-    if (b.name != report.body) continue;
-    for (Index i = 0; i < b.particles.size(); ++i)
-      if (b.particles.id[i] == report.particle) return {&b, i};
-  }
-  throw std::runtime_error(fmt::format("particle {} of body '{}' not found", report.particle, report.body));
-}
-
 /// The linear indices of the corners of the cell holding x (clamped to the grid).
 template <int Dim>
 std::vector<Index> cell_nodes(const GridGeometry<Dim>& g, const Vec<Dim>& x) {
@@ -58,27 +47,128 @@ std::vector<FieldLayout> state_fields(const std::vector<FieldLayout>& layout) {
   return out;
 }
 
+/// Writes failure/'s frames and CSVs while the run is replayed. In a distributed run every rank takes part in each
+/// frame (the particles are gathered on rank 0 in the one-process order, and the failing particle's nodes come from
+/// the rank that held it during the step: its grid holds their full sums) and rank 0 writes; a write error is kept,
+/// not thrown, so that rank 0 goes on taking part in the replay's collective steps (record_failure throws it after).
 template <int Dim>
 class Recorder {
  public:
-  Recorder(const std::filesystem::path& dir, const StabilityReport& report, std::vector<std::string> fields)
-      : dir_(dir), report_(report), fields_(std::move(fields)), pvd_(dir / "particles.pvd") {
+  Recorder(const std::filesystem::path& dir, const StabilityReport& report, std::vector<std::string> fields,
+           Communicator* comm)
+      : dir_(dir), report_(report), fields_(std::move(fields)), comm_(comm), writes_(!comm || comm->rank() == 0) {
     fields_.erase(std::remove(fields_.begin(), fields_.end(), "domains"), fields_.end());  // a cell file
     fields_.push_back("id");
-    particle_.exceptions(std::ios::failbit | std::ios::badbit);
-    nodes_.exceptions(std::ios::failbit | std::ios::badbit);
-    particle_.open(dir / "particle.csv");
-    nodes_.open(dir / "nodes.csv");
-    particle_.precision(17);
-    nodes_.precision(17);
+    if (!writes_) return;
+    keep_error([&] {
+      pvd_.emplace(dir / "particles.pvd");
+      particle_.exceptions(std::ios::failbit | std::ios::badbit);
+      nodes_.exceptions(std::ios::failbit | std::ios::badbit);
+      particle_.open(dir / "particle.csv");
+      nodes_.open(dir / "nodes.csv");
+      particle_.precision(17);
+      nodes_.precision(17);
+    });
   }
 
+  /// A collective call in a distributed run.
   void frame(const Simulation<Dim>& sim) {
-    write_frame(sim);
-    const auto [body, i] = find_particle(sim, report_);
-    const auto& p = body->particles;
-    if (!header_) write_headers(p);
     const bool first = last_step_ < 0;
+    // The nodes of the cell the particle started the step in, as the step left them (none for the first frame: the
+    // grid then holds another step's values), from the rank that held the particle during the step.
+    std::vector<double> rows;
+    if (!first && held_) rows = node_rows(sim.grid());
+    std::vector<Body<Dim>> gathered;
+    if (comm_) {
+      gathered = sim.gather_bodies();
+      std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(comm_->size()));
+      if (comm_->rank() != 0) {
+        out[0].resize(rows.size() * sizeof(double));
+        std::memcpy(out[0].data(), rows.data(), out[0].size());
+      }
+      const auto in = comm_->all_to_all(std::move(out));
+      for (const auto& bytes : in) {
+        const std::size_t at = rows.size();
+        rows.resize(at + bytes.size() / sizeof(double));
+        std::memcpy(rows.data() + at, bytes.data(), bytes.size());
+      }
+    }
+    const auto local = find_particle(sim.bodies(), report_);
+    held_ = local.first != nullptr;
+    if (held_) start_position_ = local.first->particles.x[local.second];
+    if (writes_)
+      keep_error([&] {
+        const std::vector<Body<Dim>>& bodies = comm_ ? gathered : sim.bodies();
+        write_frame(bodies, sim);
+        const auto [body, i] = find_particle(bodies, report_);
+        if (!body)
+          throw std::runtime_error(fmt::format("particle {} of body '{}' not found", report_.particle, report_.body));
+        write_particle(body->particles, i, sim, first);
+        const std::size_t width = 1 + 3 * Dim + 1 + 2 * Dim;  // node, i.., x.., mass, momentum.., force..
+        for (std::size_t r = 0; r + width <= rows.size(); r += width) {
+          nodes_ << sim.step() << ',' << sim.time();
+          for (std::size_t k = 0; k < width; ++k) nodes_ << ',' << rows[r + k];
+          nodes_ << '\n';
+        }
+      });
+    last_step_ = sim.step();
+    last_time_ = sim.time();
+    ++frames_;
+  }
+
+  void close() {
+    if (writes_)
+      keep_error([&] {
+        particle_.close();
+        nodes_.close();
+      });
+  }
+  Index frames() const { return frames_; }
+  Index last_step() const { return last_step_; }
+  /// The first write error (rank 0), empty if none.
+  const std::string& error() const { return error_; }
+
+ private:
+  template <class F>
+  void keep_error(F&& f) {
+    if (!error_.empty()) return;
+    try {
+      f();
+    } catch (const std::exception& e) {
+      error_ = e.what();
+    }
+  }
+
+  /// The failing particle's body and index among `bodies` (ids survive the reordering by cell); none if absent (in a
+  /// distributed run, on the ranks that do not hold it).
+  static std::pair<const Body<Dim>*, Index> find_particle(const std::vector<Body<Dim>>& bodies,
+                                                          const StabilityReport& report) {
+    for (const auto& b : bodies) {
+      if (b.name != report.body) continue;
+      for (Index i = 0; i < b.particles.size(); ++i)
+        if (b.particles.id[i] == report.particle) return {&b, i};
+    }
+    return {nullptr, 0};
+  }
+
+  /// nodes.csv's columns after step and time, for the corners of the cell holding start_position_.
+  std::vector<double> node_rows(const Grid<Dim>& g) const {
+    std::vector<double> rows;
+    for (Index n : cell_nodes(g.geometry, start_position_)) {
+      const auto ijk = g.geometry.node_indices(n);
+      rows.push_back(static_cast<double>(n));
+      for (int d = 0; d < Dim; ++d) rows.push_back(ijk[d]);
+      const Vec<Dim> x = g.geometry.node_position(ijk);
+      for (int d = 0; d < Dim; ++d) rows.push_back(x[d]);
+      rows.push_back(g.node[n].mass);
+      for (int d = 0; d < Dim; ++d) rows.push_back(g.node[n].momentum[d]);
+      for (int d = 0; d < Dim; ++d) rows.push_back(g.node[n].force[d]);
+    }
+    return rows;
+  }
+
+  void write_particle(const ParticleSet<Dim>& p, Index i, const Simulation<Dim>& sim, bool first) {
+    if (!header_) write_headers(p);
     const Real dt = first ? 0 : sim.time() - last_time_;
     particle_ << sim.step() << ',' << sim.time() << ',' << dt;
     for (int d = 0; d < Dim; ++d) particle_ << ',' << p.x[i][d];
@@ -101,36 +191,8 @@ class Recorder {
       }
     }
     particle_ << '\n';
-    // The nodes of the cell the particle started the step in, as the step left them (none for the first frame:
-    // the grid then holds another step's values).
-    if (!first) {
-      const auto& g = sim.grid();
-      for (Index n : cell_nodes(g.geometry, start_position_)) {
-        const auto ijk = g.geometry.node_indices(n);
-        nodes_ << sim.step() << ',' << sim.time() << ',' << n;
-        for (int d = 0; d < Dim; ++d) nodes_ << ',' << ijk[d];
-        const Vec<Dim> x = g.geometry.node_position(ijk);
-        for (int d = 0; d < Dim; ++d) nodes_ << ',' << x[d];
-        nodes_ << ',' << g.node[n].mass;
-        for (int d = 0; d < Dim; ++d) nodes_ << ',' << g.node[n].momentum[d];
-        for (int d = 0; d < Dim; ++d) nodes_ << ',' << g.node[n].force[d];
-        nodes_ << '\n';
-      }
-    }
-    start_position_ = p.x[i];
-    last_step_ = sim.step();
-    last_time_ = sim.time();
-    ++frames_;
   }
 
-  void close() {
-    particle_.close();
-    nodes_.close();
-  }
-  Index frames() const { return frames_; }
-  Index last_step() const { return last_step_; }
-
- private:
   void write_headers(const ParticleSet<Dim>& p) {
     header_ = true;
     state_ = state_fields(p.field_layout());
@@ -157,33 +219,37 @@ class Recorder {
 
   /// A particle frame: the output fields as they are (the failing frame may hold the non-finite values the
   /// guard rejected: that is what it shows).
-  void write_frame(const Simulation<Dim>& sim) {
+  void write_frame(const std::vector<Body<Dim>>& bodies, const Simulation<Dim>& sim) {
     io::PointCloud cloud;
     cloud.non_finite_allowed = true;  // the failing frame shows what the guard rejected
-    for (const auto& b : sim.bodies())
+    for (const auto& b : bodies)
       for (Index i = 0; i < b.particles.size(); ++i) append_padded<Dim>(cloud.points, b.particles.x[i]);
     for (const auto& name : fields_) {
       const OutputField* field = find_output_field(name);
       if (!field) continue;
       io::FieldArray f{name, field->components, {}};
-      for (const auto& b : sim.bodies()) append_output_field<Dim>(name, b, f.values);
+      for (const auto& b : bodies) append_output_field<Dim>(name, b, f.values);
       cloud.fields.push_back(std::move(f));
     }
     cloud.field_data.numbers.emplace_back("TIME", sim.time());
     cloud.field_data.numbers.emplace_back("step", static_cast<double>(sim.step()));
     const auto file = dir_ / fmt::format("particles_{:06d}.vtu", frames_);
     io::write_vtu(file, cloud);
-    pvd_.add(sim.time(), file);
-    pvd_.write();
+    pvd_->add(sim.time(), file);
+    pvd_->write();
   }
 
   std::filesystem::path dir_;
   StabilityReport report_;
   std::vector<std::string> fields_;
-  io::PvdCollection pvd_;
+  Communicator* comm_;
+  bool writes_;
+  std::string error_;
+  std::optional<io::PvdCollection> pvd_;
   std::ofstream particle_, nodes_;
   bool header_ = false;
   std::vector<FieldLayout> state_;
+  bool held_ = false;  ///< this rank holds the particle (after the last frame's step: during the next one)
   Vec<Dim> start_position_ = Vec<Dim>::Zero();
   Index last_step_ = -1;
   Real last_time_ = 0;
@@ -197,21 +263,31 @@ FlightRecord record_failure(Simulation<Dim>& sim, const StabilityReport& report,
                             const std::filesystem::path& output_directory, const std::vector<std::string>& fields,
                             const std::string& command) {
   namespace fs = std::filesystem;
+  Communicator* const comm = sim.communicator();
+  const bool writes = !comm || comm->rank() == 0;  // a distributed run: every rank replays, rank 0 writes
   FlightRecord record;
   record.directory = output_directory / "failure";
   const fs::path partial = output_directory / ".failure.partial";
-  fs::remove_all(partial);
+  std::string error;
+  if (writes) try {
+      fs::remove_all(partial);
+      fs::create_directories(partial);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
   try {
-    fs::create_directories(partial);
-    Recorder<Dim> recorder(partial, report, fields);
+    Recorder<Dim> recorder(partial, report, fields, comm);
     if (!sim.replay_failure([&](const Simulation<Dim>& s) { recorder.frame(s); }))
       throw std::runtime_error("no failed step to replay");
     recorder.close();
+    if (!error.empty()) throw std::runtime_error(error);
+    if (!recorder.error().empty()) throw std::runtime_error(recorder.error());
     if (recorder.last_step() != report.step)
       throw std::runtime_error(
           fmt::format("the replay ended at step {}, not at the failing step {}", recorder.last_step(), report.step));
-    record.first_step = sim.failure_replay_start();
     record.frames = recorder.frames();
+    record.first_step = sim.failure_replay_start();
+    if (!writes) return record;
     const EnergyHint& hint = find_energy_hint(context, trigger_guard);
     std::ofstream d;
     d.exceptions(std::ios::failbit | std::ios::badbit);
@@ -231,7 +307,7 @@ FlightRecord record_failure(Simulation<Dim>& sim, const StabilityReport& report,
     fs::rename(partial, record.directory);
   } catch (...) {
     std::error_code ignored;
-    fs::remove_all(partial, ignored);
+    if (writes) fs::remove_all(partial, ignored);
     throw;
   }
   return record;

@@ -326,9 +326,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     writer.write(*sim);  // the simulation was rolled back to the last good step
     histories.write(*sim);
     if (options.progress) log << '\n';
-    if (e.report().particle >= 0 && comm)
-      fmt::print(log, "flight recorder: failure/ is not written by a distributed run yet; rerun in one process\n");
-    else if (e.report().particle >= 0)
+    if (e.report().particle >= 0)  // a distributed run: every rank replays (collective steps), rank 0 writes
       record_flight(*sim, e.report(), sentinel, scene, options, writer.directory(), log);
     throw;
   } catch (const StopRequested&) {

@@ -92,6 +92,27 @@ std::optional<ParticleSet<Dim>> gather_on_rank_0(const ParticleSet<Dim>& local, 
 }  // namespace
 
 template <int Dim>
+std::vector<Body<Dim>> Simulation<Dim>::gather_bodies() const {
+  std::vector<Body<Dim>> out;
+  for (const auto& b : bodies_) {
+    std::optional<ParticleSet<Dim>> gathered;
+    if (comm_) {
+      gathered = gather_on_rank_0(b.particles, *comm_);
+      if (!gathered) continue;
+    }
+    Body<Dim> copy;
+    copy.name = b.name;
+    copy.index = b.index;
+    copy.particles = gathered ? std::move(*gathered) : b.particles;
+    copy.material = b.material;
+    copy.stretched_domain = b.stretched_domain;
+    copy.domain_corners = b.domain_corners;
+    out.push_back(std::move(copy));
+  }
+  return out;
+}
+
+template <int Dim>
 void Simulation<Dim>::save_state(StateArchive& archive) const {
   archive.put_integer("simulation/dimension", Dim);
   archive.put_number("simulation/time", time_);
@@ -184,6 +205,9 @@ std::vector<std::string> Simulation<Dim>::restore_state(const StateArchive& arch
   return notes;
 }
 
+template std::vector<Body<1>> Simulation<1>::gather_bodies() const;
+template std::vector<Body<2>> Simulation<2>::gather_bodies() const;
+template std::vector<Body<3>> Simulation<3>::gather_bodies() const;
 template void Simulation<1>::save_state(StateArchive&) const;
 template void Simulation<2>::save_state(StateArchive&) const;
 template void Simulation<3>::save_state(StateArchive&) const;

@@ -219,6 +219,23 @@ TEST(ParallelLaunch, UnderMpirunTheGuardStopsEveryRankWithOneReport) {
   EXPECT_NE(pvd.find("particles_000001.pvtu"), std::string::npos) << pvd;  // frame 1: the last good state
   for (int r = 0; r < 3; ++r)
     EXPECT_TRUE(fs::exists(out / "particles_000001" / ("particles_000001_" + std::to_string(r) + ".vtu"))) << r;
+  // The flight recorder: every rank replays, rank 0 writes the one-process failure/, byte for byte (the particles
+  // gathered in the one-process order; the failing particle's nodes from the rank that held it).
+  const fs::path serial = dir / "serial";
+  const auto one = mpm("run " + (dir / "scene.yaml").string() + " --threads 1 -o " + serial.string(), dir);
+  EXPECT_EQ(one.status, 3) << one.err;
+  ASSERT_TRUE(fs::exists(serial / "failure" / "particle.csv")) << one.err;
+  ASSERT_TRUE(fs::exists(out / "failure" / "particle.csv")) << err;
+  EXPECT_FALSE(fs::exists(out / ".failure.partial"));
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(serial / "failure")) {
+    const std::string name = entry.path().filename().string();
+    if (name == "diagnosis.txt") continue;  // names the output directory
+    EXPECT_EQ(cli::slurp(entry.path()), cli::slurp(out / "failure" / name)) << name;
+    ++files;
+  }
+  EXPECT_GE(files, 5);  // particle.csv, nodes.csv, particles.pvd and the frames
+  EXPECT_GT(cli::slurp(out / "failure" / "nodes.csv").size(), cli::slurp(out / "failure" / "particle.csv").size() / 4);
   fs::remove_all(dir);
 }
 

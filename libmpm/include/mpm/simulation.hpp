@@ -127,6 +127,10 @@ class Simulation {
   /// particle field of every body in id order with the order the particles are stored in, and the modules'
   /// state. What a checkpoint holds of the simulation.
   void save_state(StateArchive& archive) const;
+  /// Every body with every rank's particles, on rank 0 of a distributed run, in the one-process storage order (the
+  /// order of a checkpoint and of a one-process run's frames), without the grid-side members (bins, own grid);
+  /// nothing on the other ranks. A collective call; in one process, copies of the bodies.
+  std::vector<Body<Dim>> gather_bodies() const;
   /// Continues from a saved state, on a simulation built from the same scene (the same bodies with as many
   /// particles, the same modules); the guard's snapshot is taken there. Returns notes on fields that only one
   /// side has (a fork that changed the output fields); throws ArchiveError for anything else that differs.

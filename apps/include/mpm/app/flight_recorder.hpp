@@ -7,7 +7,9 @@
 /// nodes of the cell it started each step in (`nodes.csv`: mass, momentum, force) and `diagnosis.txt` (the
 /// check that failed, the nearest documented cause of the hint table, energy_hints.hpp, and the command that
 /// reproduces the run). Written into a temporary directory renamed to failure/ at the end: a failure to write
-/// leaves no failure/ at all.
+/// leaves no failure/ at all. A distributed run replays on every rank (the steps are collective) and rank 0 writes
+/// the same files as one process: the particles gathered in the one-process order, the failing particle's nodes
+/// from the rank that held it.
 
 #include <filesystem>
 #include <string>
@@ -27,7 +29,8 @@ struct FlightRecord {
 
 /// Replays `sim` (after it threw StabilityError `report`) into `output_directory`/failure. `fields`: the output
 /// fields of the frames; `command`: the command line that reproduces the run. Throws (and leaves no failure/)
-/// when a file cannot be written or the replay does not fail where the run did.
+/// when a file cannot be written or the replay does not fail where the run did. A collective call in a distributed
+/// run (rank 0 writes; the others return the record without writing).
 template <int Dim>
 FlightRecord record_failure(Simulation<Dim>& sim, const StabilityReport& report, const HintContext& context,
                             const std::filesystem::path& output_directory, const std::vector<std::string>& fields,
