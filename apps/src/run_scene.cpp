@@ -140,11 +140,6 @@ template <int Dim>
 void refuse_what_cannot_be_distributed(const SceneDescription& scene, const RunOptions& options,
                                        const Simulation<Dim>& sim) {
   const int ranks = options.communicator->size();
-  if (scene.output.grid)
-    throw RankCountError(fmt::format(
-        "{}: output.grid (the grid is not gathered from the ranks) does not run on several ranks yet (issue 18); "
-        "start one process",
-        scene.file));
   if (const std::string why = sim.why_not_distributed(ranks); !why.empty())
     throw RankCountError(fmt::format("{}: {} ({} ranks)", scene.file, why, ranks));
 }

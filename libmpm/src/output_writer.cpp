@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "mpm/due_time.hpp"
@@ -22,13 +25,6 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
       interval_(interval),
       particles_pvd_(directory_ / (prefix_ + ".pvd")),
       comm_(comm) {
-  if (distributed()) {  // the same arguments on every rank: every rank refuses alike, no reduction needed
-    if (grid_)
-      throw std::invalid_argument(fmt::format(
-          "output.grid: the grid is not written in a distributed run yet ({} ranks); leave output.grid off or "
-          "run on one process",
-          comm_->size()));
-  }
   // `domains` is not a point field: the particle domains go to a cell file of their own per frame.
   if (const auto it = std::find(fields_.begin(), fields_.end(), "domains"); it != fields_.end()) {
     fields_.erase(it);
@@ -154,6 +150,8 @@ void OutputWriter<Dim>::write_pieces(const Simulation<Dim>& sim, const io::Field
   const auto particles_pvtu = directory_ / fmt::format("{}_{:06d}.pvtu", prefix_, frame_);
   const auto domains_pvtu = directory_ / fmt::format("{}_domains_{:06d}.pvtu", prefix_, frame_);
   io::PvtuSummary particles, domains;
+  std::optional<io::ImageGrid> grid;  // complete on rank 0
+  if (grid_) grid = gathered_grid_image(sim, data);
   io::write_collectively(comm_, fmt::format("output frame {} ({})", frame_, particles_pvtu.string()), [&] {
     io::PointCloud cloud = particle_cloud(sim);
     cloud.field_data = data;
@@ -185,6 +183,12 @@ void OutputWriter<Dim>::write_pieces(const Simulation<Dim>& sim, const io::Field
       domains_pvd_->add(sim.time(), domains_pvtu);
       domains_pvd_->write();
     }
+    if (grid) {  // one image, the one-process file
+      const std::string grid_name = fmt::format("{}_grid_{:06d}.vti", prefix_, frame_);
+      io::write_vti(directory_ / grid_name, *grid);
+      grid_pvd_->add(sim.time(), directory_ / grid_name);
+      grid_pvd_->write();
+    }
     energy_->append(energy);
   });
 }
@@ -210,6 +214,48 @@ io::ImageGrid OutputWriter<Dim>::grid_image(const Simulation<Dim>& sim, const io
   image.field_data = data;
   for (const auto& [name, values] : g.node_fields)  // modules' nodal fields (thermal: temperature)
     if (static_cast<Index>(values.size()) == g.size()) image.fields.push_back({name, 1, values});
+  return image;
+}
+
+template <int Dim>
+io::ImageGrid OutputWriter<Dim>::gathered_grid_image(const Simulation<Dim>& sim, const io::FieldData& data) const {
+  io::ImageGrid image = grid_image(sim, data);
+  const Index nodes = sim.grid().size();
+  // Each rank other than 0 sends its owned nodes: their count, their indices, then every field's values at them.
+  std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(comm_->size()));
+  if (comm_->rank() != 0) {
+    std::vector<std::int64_t> owned;
+    for (Index n = 0; n < nodes; ++n)
+      if (sim.owns_node(n)) owned.push_back(n);
+    std::vector<double> values;
+    for (const io::FieldArray& f : image.fields)
+      for (const std::int64_t n : owned)
+        for (int c = 0; c < f.components; ++c)
+          values.push_back(f.values[static_cast<std::size_t>(n * f.components + c)]);
+    const auto count = static_cast<std::int64_t>(owned.size());
+    std::vector<std::byte>& bytes = out[0];
+    bytes.resize(sizeof count + owned.size() * sizeof(std::int64_t) + values.size() * sizeof(double));
+    std::memcpy(bytes.data(), &count, sizeof count);
+    std::memcpy(bytes.data() + sizeof count, owned.data(), owned.size() * sizeof(std::int64_t));
+    std::memcpy(bytes.data() + sizeof count + owned.size() * sizeof(std::int64_t), values.data(),
+                values.size() * sizeof(double));
+  }
+  const auto in = comm_->all_to_all(std::move(out));
+  if (comm_->rank() != 0) return image;
+  for (const auto& bytes : in) {
+    if (bytes.empty()) continue;
+    std::int64_t count = 0;
+    std::memcpy(&count, bytes.data(), sizeof count);
+    std::vector<std::int64_t> owned(static_cast<std::size_t>(count));
+    std::memcpy(owned.data(), bytes.data() + sizeof count, owned.size() * sizeof(std::int64_t));
+    const std::byte* at = bytes.data() + sizeof count + owned.size() * sizeof(std::int64_t);
+    for (io::FieldArray& f : image.fields)
+      for (const std::int64_t n : owned)
+        for (int c = 0; c < f.components; ++c) {
+          std::memcpy(&f.values[static_cast<std::size_t>(n * f.components + c)], at, sizeof(double));
+          at += sizeof(double);
+        }
+  }
   return image;
 }
 

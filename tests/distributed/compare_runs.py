@@ -3,8 +3,8 @@
 
   compare_runs.py SERIAL_DIR DISTRIBUTED_DIR
 
-energy.csv and every other CSV of the serial run (histories, the contact force file) must be byte-equal in the
-distributed run's folder; the .pvd files must list the same frames at the same times; every frame of the
+energy.csv and every other CSV of the serial run (histories, the contact force file) and every grid image (.vti,
+output.grid, and its .pvd) must be byte-equal in the distributed run's folder; the .pvd files must list the same frames at the same times; every frame of the
 distributed run (a .pvtu of one piece per rank) must read back, with python3-vtk9, every particle of the serial
 frame (a .vtu) with every point array equal bit for bit once both are sorted by (body, id). Exit status 0 when all
 holds, 1 otherwise (the differences listed).
@@ -36,6 +36,17 @@ def read(path):
     return arrays
 
 
+def read_image(path):
+    """A .vti's geometry (dimensions, origin, spacing) and its point arrays."""
+    reader = vtk.vtkXMLImageDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    data = image.GetPointData()
+    arrays = {data.GetArray(i).GetName(): vtk_to_numpy(data.GetArray(i)) for i in range(data.GetNumberOfArrays())}
+    return (image.GetDimensions(), image.GetOrigin(), image.GetSpacing()), arrays
+
+
 def sorted_by_body_and_id(arrays):
     ids = arrays["id"][:, 0]
     body = arrays["body"][:, 0] if "body" in arrays else np.zeros_like(ids)
@@ -52,6 +63,29 @@ def main(serial, distributed):
             failures.append(f"{table} is missing")
         elif open(os.path.join(serial, table), "rb").read() != open(other, "rb").read():
             failures.append(f"{table} differs")
+    # output.grid: rank 0 writes the one-process image (each node from the rank that owns it): the same .pvd, and
+    # every .vti with the same geometry and every node array equal bit for bit (the field data differ only in the
+    # `overrides` line, which names the output directory).
+    for name in sorted(f for f in os.listdir(serial) if f.endswith("_grid.pvd")):
+        other = os.path.join(distributed, name)
+        if not os.path.exists(other) or open(os.path.join(serial, name), "rb").read() != open(other, "rb").read():
+            failures.append(f"{name} is missing or differs")
+    images = 0
+    for name in sorted(f for f in os.listdir(serial) if f.endswith(".vti")):
+        other = os.path.join(distributed, name)
+        if not os.path.exists(other):
+            failures.append(f"{name} is missing")
+            continue
+        (ga, xa), (gb, xb) = read_image(os.path.join(serial, name)), read_image(other)
+        if ga != gb:
+            failures.append(f"{name}: another geometry {ga} / {gb}")
+        elif sorted(xa) != sorted(xb):
+            failures.append(f"{name}: other arrays {sorted(xa)} / {sorted(xb)}")
+        else:
+            for array in xa:
+                if xa[array].tobytes() != xb[array].tobytes():
+                    failures.append(f"{name}: {array} differs")
+        images += 1
     a, b = frames(serial), frames(distributed)
     if [t for t, _ in a] != [t for t, _ in b]:
         failures.append(f"the .pvd files list other times: {len(a)} and {len(b)} frames")
@@ -68,7 +102,8 @@ def main(serial, distributed):
     for f in failures[:20]:
         print("DIFFERENT:", f)
     if not failures:
-        print(f"{len(a)} frames of {particles} particles and {', '.join(tables)}: identical bits")
+        grid = f", {images} grid images" if images else ""
+        print(f"{len(a)} frames of {particles} particles{grid} and {', '.join(tables)}: identical bits")
     return 1 if failures else 0
 
 

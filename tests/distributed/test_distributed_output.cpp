@@ -151,14 +151,6 @@ TEST(DistributedOutput, AnUncreatableDirectoryOnOneRankStopsEveryRank) {
   }
 }
 
-// The grid (.vti of the whole grid) is refused with N > 1 ranks, alike on every rank.
-TEST(DistributedOutput, GridOutputIsRefusedOnEveryRank) {
-  if (world->size() < 2) GTEST_SKIP() << "needs two ranks";
-  EXPECT_THROW(OutputWriter<2>(root / "grid", "particles", {"velocity"}, true, 0, nullptr, world),
-               std::invalid_argument);
-  EXPECT_FALSE(fs::exists(root / "grid"));
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -63,6 +63,9 @@ class OutputWriter {
   void write_files(const Simulation<Dim>& sim, const io::FieldData& data);   ///< one process
   void write_pieces(const Simulation<Dim>& sim, const io::FieldData& data);  ///< N ranks
   io::ImageGrid grid_image(const Simulation<Dim>& sim, const io::FieldData& data) const;
+  /// N ranks: the grid image of one process, complete on rank 0 (each node's values from the rank that owns it: its
+  /// sums are the one-process ones, docs/distributed.md §5.2); a collective call.
+  io::ImageGrid gathered_grid_image(const Simulation<Dim>& sim, const io::FieldData& data) const;
   std::vector<double> energy_row(const Simulation<Dim>& sim) const;
   std::filesystem::path directory_;
   std::string prefix_;

@@ -127,6 +127,13 @@ class Simulation {
   /// particle field of every body in id order with the order the particles are stored in, and the modules'
   /// state. What a checkpoint holds of the simulation.
   void save_state(StateArchive& archive) const;
+  /// Whether this rank owns node `n` (a distributed run: every node has one owner, whose copy holds the one-process
+  /// values; sums and gathers over nodes take owned ones); one process: every node.
+  bool owns_node(Index n) const {
+    if (!halo_) return true;
+    const auto [first, end] = halo_->owned_nodes();
+    return n >= first && n < end;
+  }
   /// Every body with every rank's particles, on rank 0 of a distributed run, in the one-process storage order (the
   /// order of a checkpoint and of a one-process run's frames), without the grid-side members (bins, own grid);
   /// nothing on the other ranks. A collective call; in one process, copies of the bodies.
