@@ -125,6 +125,9 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
   if (settings_.friction.size() != static_cast<std::size_t>(body_count_ * body_count_))
     settings_.friction.assign(body_count_ * body_count_, 0);
   rigid_of_.assign(body_count_, -1);
+  body_boundary_.resize(body_count_);
+  for (const auto& own : settings_.body_faces)
+    body_boundary_[own.body] = std::make_unique<GridBoundary<Dim>>(grid, own.faces);
   for (std::size_t r = 0; r < settings_.rigid_bodies.size(); ++r) {
     const auto& rb = settings_.rigid_bodies[r];
     rigid_of_[rb.body] = static_cast<int>(r);
@@ -334,7 +337,9 @@ void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage
           v.mapped = n.momentum * inv_m;
       }
     });
-    if (!ctx.boundary.empty()) ctx.boundary.apply(own.velocity, member, t);
+    // The body's own face conditions (contact.body_boundaries) instead of the scene's, if it has them.
+    const GridBoundary<Dim>& boundary = body_boundary_[k] ? *body_boundary_[k] : ctx.boundary;
+    if (!boundary.empty()) boundary.apply(own.velocity, member, t);
   }
 }
 

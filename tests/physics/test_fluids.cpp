@@ -125,6 +125,29 @@ TEST(TaitFluid, PressureAndViscousStress) {
   EXPECT_NEAR((W1 - W0) / (2 * dJ), -p, 1e-5 * p);
 }
 
+// cavitation_pressure p_c: p = max(K (J^-gamma - 1), p_c); the stored energy keeps dW/dJ = -p on both sides of J_c
+// (where the Tait pressure reaches p_c) and is continuous there, so the energy audit stays exact; p_c = 0 stores
+// nothing in expansion. Without p_c the law is the Tait one (checked above).
+TEST(TaitFluid, CavitationPressureLimitsTheTension) {
+  for (const double pc : {0.0, -5.0e4}) {
+    fluids::TaitFluid::Params c{1000, 2.0e5, 7, 0, 0};
+    c.cavitation_pressure = pc;
+    const double Jc = fluids::TaitFluid::cavitation_volume_ratio(c);
+    EXPECT_NEAR(2.0e5 * (std::pow(Jc, -7) - 1), pc, 1e-9 * 2.0e5);
+    const auto W = [&](double J) {
+      return fluids::TaitFluid::energy_density(c, Mat3::Identity() * std::cbrt(J), Mat3::Zero());
+    };
+    for (const double J : {0.99, 1.0005, Jc * 1.01, 1.3, 2.0}) {
+      const double p = std::max(2.0e5 * (std::pow(J, -7) - 1), pc);
+      EXPECT_NEAR(fluids::TaitFluid::pressure(c, J), p, 1e-9 * 2.0e5) << J;
+      const double dJ = 1e-7;
+      if (std::abs(J - Jc) > 10 * dJ) EXPECT_NEAR((W(J + dJ) - W(J - dJ)) / (2 * dJ), -p, 1e-4 * 2.0e5) << J;
+    }
+    EXPECT_NEAR(W(Jc * (1 - 1e-12)), W(Jc * (1 + 1e-12)), 1e-9);  // continuous at J_c
+    if (pc == 0) EXPECT_EQ(W(1.7), 0.0);                               // no energy in expansion
+  }
+}
+
 // docs/errata.md #10 (§5.4.1): the Stokes condition is lambda_N = -2 mu / 3 (printed +2 mu / 3), so that the
 // default bulk viscosity zeta = lambda_N + 2 mu / 3 is 0: a uniaxial strain rate D = diag(r, 0, 0) gives the
 // deviatoric stress 2 mu dev(D) and no viscous mean stress (the printed lambda_N would add 4 mu r / 3 to it).

@@ -1,5 +1,6 @@
 #include "mpm/fluids/register.hpp"
 
+#include <limits>
 #include <mutex>
 
 #include "mpm/fluids/ideal_gas.hpp"
@@ -26,6 +27,11 @@ std::vector<ParameterSpec> newtonian_parameters() {
       ParameterSpec::with_default("density_tolerance", "-", 0.03, Range::above(0),
                                   "largest abs(rho/rho0 - 1) before `mpm run` warns (once per body) that the bulk "
                                   "modulus is too small for the flow"),
+      ParameterSpec::optional("cavitation_pressure", "Pa", Range{-std::numeric_limits<double>::infinity(), true, 0, true},
+                              "absent: no limit",
+                              "p_c: the pressure never falls below it, p = max(K [(rho/rho0)^gamma - 1], p_c) (0: "
+                              "water that cannot hold tension, a free surface separates; the density warning then "
+                              "only watches compression)"),
   };
 }
 
@@ -69,8 +75,9 @@ MaterialModel ideal_gas_model() {
 template <int Dim>
 std::unique_ptr<Material<Dim>> make_newtonian_fluid(const MaterialDescription& d) {
   const auto& p = d.parameters;
-  const TaitFluid::Params c{p.at("density"),   p.at("bulk_modulus"),   p.at("eos_exponent"),
-                            p.at("viscosity"), p.at("bulk_viscosity"), p.at("density_tolerance")};
+  TaitFluid::Params c{p.at("density"),   p.at("bulk_modulus"),   p.at("eos_exponent"),
+                      p.at("viscosity"), p.at("bulk_viscosity"), p.at("density_tolerance")};
+  if (const auto it = p.find("cavitation_pressure"); it != p.end()) c.cavitation_pressure = it->second;
   return std::make_unique<MaterialBatch<Dim, TaitFluid>>(c);
 }
 
