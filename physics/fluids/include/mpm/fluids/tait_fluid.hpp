@@ -29,7 +29,11 @@ struct TaitFluid {
     /// p_c, Pa (<= 0, gauge like p): the pressure never falls below it (the liquid cavitates, a free-surface
     /// particle separates instead of pulling with a tension up to K); -infinity: no limit.
     Real cavitation_pressure = -std::numeric_limits<Real>::infinity();
+    /// Keep only the volume of F (F = J^(1/Dim) I after every step, material_batch.hpp): the law reads J alone.
+    bool volumetric_deformation = false;
   };
+
+  static inline bool volumetric_only(const Params& c) { return c.volumetric_deformation; }
 
   /// p = max(kappa (J^-gamma - 1), p_c).
   static inline Real pressure(const Params& c, Real J) {
