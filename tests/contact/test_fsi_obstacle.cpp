@@ -7,7 +7,7 @@
 // Reference: the energy audit (kinetic + stored + gravity), which the continuum conserves (nearly inviscid water,
 // frictionless walls and contact, an elastic obstacle), so every loss is numerical (issue 21; physics/fluids/
 // README.md, Limits; examples/14_fsi_obstacle/README.md). Measured here: -17.6% at 0.5 s, never above E0 (the
-// example's 40 cells: -16.5%; APIC at these 10 cells -45%). Asserted: above -21% (1.2x the loss), never more than
+// example's 40 cells: -15.6%; APIC at these 10 cells -45%). Asserted: above -21% (1.2x the loss), never more than
 // 0.1% above E0, no inverted particle, the obstacle's base on its footprint. Without cavitation_pressure the same
 // set-up at 20 cells inverted a water particle in tension at 0.198 s; with the shared field and the no-slip floor
 // the example lost 25.3% (PolyPIC, cfl 0.25) and 46.1% (APIC) and PolyPIC inverted at cfl 0.5.
