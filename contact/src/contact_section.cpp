@@ -186,8 +186,9 @@ std::vector<BodyBoundaryDescription> read_body_boundaries(const YamlReader& read
                                      io::describe(entry.value.node));
       const std::string kind = reader.choice(entry.value, {"fixed", "slip", "free"});
       if (index == 0 && scene.grid.coordinates == Coordinates::axisymmetric && kind != "slip")
-        reader.fail(entry.value, "in axisymmetric coordinates the face x_min is the axis: its radial velocity is held "
-                                 "for every body (only slip may be written)");
+        reader.fail(entry.value,
+                    "in axisymmetric coordinates the face x_min is the axis: its radial velocity is held "
+                    "for every body (only slip may be written)");
       FaceBoundary face;
       face.where = reader.location(entry.value.mark);
       const ComponentConstraint held{std::in_place, "0"};

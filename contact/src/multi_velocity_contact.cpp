@@ -360,7 +360,8 @@ void MultiVelocityContact<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStag
   // then carried that motion into the body (the FSI example's obstacle gained 14 J by 0.24 s, 23% of E0). Bodies
   // on the scene's conditions keep the order they had (their results unchanged, bit for bit).
   for (int k = 0; k < body_count_; ++k)
-    if (body_boundary_[k] && !body_boundary_[k]->empty()) body_boundary_[k]->apply(body_grids_[k].velocity, member, ctx.time + ctx.dt);
+    if (body_boundary_[k] && !body_boundary_[k]->empty())
+      body_boundary_[k]->apply(body_grids_[k].velocity, member, ctx.time + ctx.dt);
 }
 
 template <int Dim>

@@ -51,10 +51,12 @@ TEST(FsiObstacle, ContactSetUpKeepsTheEnergyWithinItsMeasuredLoss) {
   const auto& p = sim->bodies()[1].particles;
   double base_left = 1, base_right = 0;
   for (Index i = 0; i < p.size(); ++i)
-    if (p.x[i][1] < 0.003) base_left = std::min<double>(base_left, p.x[i][0]), base_right = std::max<double>(base_right, p.x[i][0]);
-  std::printf("[ measured ] FSI obstacle, contact set-up, PolyPIC + hats, 10 cells: energy change %+.4f at 0.5 s, "
-              "largest %+.2e; obstacle base from x = %.4f to %.4f m\n",
-              change, largest, base_left, base_right);
+    if (p.x[i][1] < 0.003)
+      base_left = std::min<double>(base_left, p.x[i][0]), base_right = std::max<double>(base_right, p.x[i][0]);
+  std::printf(
+      "[ measured ] FSI obstacle, contact set-up, PolyPIC + hats, 10 cells: energy change %+.4f at 0.5 s, "
+      "largest %+.2e; obstacle base from x = %.4f to %.4f m\n",
+      change, largest, base_left, base_right);
   EXPECT_GT(change, -0.21);  // measured -0.176 (1.2x)
   EXPECT_LT(largest, 1e-3);
   EXPECT_GT(base_left, 0.286);

@@ -27,8 +27,8 @@ std::vector<ParameterSpec> newtonian_parameters() {
       ParameterSpec::with_default("density_tolerance", "-", 0.03, Range::above(0),
                                   "largest abs(rho/rho0 - 1) before `mpm run` warns (once per body) that the bulk "
                                   "modulus is too small for the flow"),
-      ParameterSpec::optional("cavitation_pressure", "Pa", Range{-std::numeric_limits<double>::infinity(), true, 0, true},
-                              "absent: no limit",
+      ParameterSpec::optional("cavitation_pressure", "Pa",
+                              Range{-std::numeric_limits<double>::infinity(), true, 0, true}, "absent: no limit",
                               "p_c: the pressure never falls below it, p = max(K [(rho/rho0)^gamma - 1], p_c) (0: "
                               "water that cannot hold tension, a free surface separates; the density warning then "
                               "only watches compression)"),
@@ -58,8 +58,7 @@ MaterialModel newtonian_model() {
               "weakly compressible Newtonian fluid (review eqs 5.29-5.31): Tait EOS p = K [(rho/rho0)^gamma "
               "- 1], sigma = 2 mu dev(D) + zeta tr(D) I - p I, density from det F",
           .parameters = newtonian_parameters(),
-          .check =
-              [](const std::map<std::string, double>& p) -> std::optional<ParameterError> {
+          .check = [](const std::map<std::string, double>& p) -> std::optional<ParameterError> {
             if (const double v = p.at("volumetric_deformation"); v != 0 && v != 1)
               return ParameterError{"volumetric_deformation", "must be 0 (the full F) or 1 (its volume only)"};
             return std::nullopt;
