@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -154,6 +155,58 @@ std::vector<PlaneDescription> read_planes(const YamlReader& reader, const YamlVa
   return planes;
 }
 
+/// `body_boundaries`: per body, face conditions of its own field that replace grid.boundary's on the faces given
+/// (`fixed`, `slip` or `free`: velocity conditions that hold a component at 0, so they do no work).
+std::vector<BodyBoundaryDescription> read_body_boundaries(const YamlReader& reader, const YamlValue& value,
+                                                          const SceneDescription& scene) {
+  std::vector<BodyBoundaryDescription> result;
+  std::set<std::string> seen;
+  const auto& names = GridDescription::face_names;
+  const std::vector<std::string> faces(names.begin(), names.begin() + std::ptrdiff_t{2} * scene.dimension);
+  for (const auto& item : reader.list(value, std::nullopt, "body boundaries {body: name, FACE: fixed|slip|free}")) {
+    const YamlMap map = reader.map(item);
+    std::vector<std::string> keys{"body"};
+    keys.insert(keys.end(), faces.begin(), faces.end());
+    map.allow(keys, "key", fmt::format(" (body and the faces of {}D)", scene.dimension));
+    const YamlValue body = map.required("body");
+    BodyBoundaryDescription own;
+    own.body = body_name(reader, body, scene);
+    if (is_rigid(scene, own.body))
+      reader.fail(body, "body '" + own.body +
+                            "' is rigid: its velocity is prescribed on every node it touches (contact.rigid_bodies), "
+                            "face conditions would contradict it");
+    if (!seen.insert(own.body).second) reader.fail(body, "body '" + own.body + "' is listed twice");
+    bool any = false;
+    for (const auto& entry : map.entries()) {
+      if (entry.key == "body") continue;
+      const int index = static_cast<int>(std::find(faces.begin(), faces.end(), entry.key) - faces.begin());
+      const int normal_axis = index / 2;
+      if (!entry.value.node.IsScalar())
+        reader.fail(entry.value, "expected fixed, slip or free (conditions that hold a velocity component at 0), got " +
+                                     io::describe(entry.value.node));
+      const std::string kind = reader.choice(entry.value, {"fixed", "slip", "free"});
+      if (index == 0 && scene.grid.coordinates == Coordinates::axisymmetric && kind != "slip")
+        reader.fail(entry.value,
+                    "in axisymmetric coordinates the face x_min is the axis: its radial velocity is held "
+                    "for every body (only slip may be written)");
+      FaceBoundary face;
+      face.where = reader.location(entry.value.mark);
+      const ComponentConstraint held{std::in_place, "0"};
+      if (kind == "fixed")
+        for (int d = 0; d < scene.dimension; ++d) face.component[d] = held;
+      else if (kind == "slip")
+        face.component[normal_axis] = held;
+      own.faces[index] = face;
+      any = true;
+    }
+    if (!any)
+      reader.fail(item, fmt::format("give at least one face ({}) with fixed, slip or free", fmt::join(faces, ", ")));
+    own.where = reader.location(item.mark);
+    result.push_back(own);
+  }
+  return result;
+}
+
 }  // namespace
 
 std::any parse_contact_section(const YamlReader& reader, const YamlValue& section, const SceneDescription& scene) {
@@ -161,8 +214,8 @@ std::any parse_contact_section(const YamlReader& reader, const YamlValue& sectio
   contact.where = reader.location(section.mark);
   if (section.node.IsNull()) return contact;  // `contact:` alone: frictionless, defaults
   const YamlMap map = reader.map(section);
-  map.allow({"friction", "thermal_conductance", "pairs", "normals", "onset", "rigid_bodies", "planes", "force_file",
-             "force_interval"});
+  map.allow({"friction", "thermal_conductance", "pairs", "normals", "onset", "rigid_bodies", "planes",
+             "body_boundaries", "force_file", "force_interval"});
   check_solver(reader, section, scene);
   if (const auto friction = map.find("friction")) contact.friction = reader.number(*friction, Range::at_least(0), "");
   if (const auto conductance = map.find("thermal_conductance")) {
@@ -177,6 +230,7 @@ std::any parse_contact_section(const YamlReader& reader, const YamlValue& sectio
   if (const auto pairs = map.find("pairs")) contact.pairs = read_pairs(reader, *pairs, scene);
   if (const auto rigid = map.find("rigid_bodies")) contact.rigid_bodies = read_rigid_bodies(reader, *rigid, scene);
   if (const auto planes = map.find("planes")) contact.planes = read_planes(reader, *planes, scene);
+  if (const auto own = map.find("body_boundaries")) contact.body_boundaries = read_body_boundaries(reader, *own, scene);
   return contact;
 }
 
@@ -248,6 +302,14 @@ void build_contact(const SceneDescription& scene, Simulation<Dim>& simulation) {
     plane.normal.normalize();
     plane.friction = described.friction;
     settings.planes.push_back(plane);
+  }
+  for (const auto& described : contact.body_boundaries) {
+    typename ContactSettings<Dim>::BodyFaces own;
+    own.body = body_index(scene, described.body);
+    own.faces = scene.grid.boundary;  // the scene's faces, the body's replacements over them
+    for (int f = 0; f < 2 * Dim; ++f)
+      if (described.faces[f]) own.faces[f] = *described.faces[f];
+    settings.body_faces.push_back(own);
   }
   if (!contact.force_file.empty())
     settings.force_file = (std::filesystem::path(scene.output.directory) / contact.force_file).string();

@@ -125,6 +125,9 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
   if (settings_.friction.size() != static_cast<std::size_t>(body_count_ * body_count_))
     settings_.friction.assign(body_count_ * body_count_, 0);
   rigid_of_.assign(body_count_, -1);
+  body_boundary_.resize(body_count_);
+  for (const auto& own : settings_.body_faces)
+    body_boundary_[own.body] = std::make_unique<GridBoundary<Dim>>(grid, own.faces);
   for (std::size_t r = 0; r < settings_.rigid_bodies.size(); ++r) {
     const auto& rb = settings_.rigid_bodies[r];
     rigid_of_[rb.body] = static_cast<int>(r);
@@ -334,7 +337,9 @@ void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage
           v.mapped = n.momentum * inv_m;
       }
     });
-    if (!ctx.boundary.empty()) ctx.boundary.apply(own.velocity, member, t);
+    // The body's own face conditions (contact.body_boundaries) instead of the scene's, if it has them.
+    const GridBoundary<Dim>& boundary = body_boundary_[k] ? *body_boundary_[k] : ctx.boundary;
+    if (!boundary.empty()) boundary.apply(own.velocity, member, t);
   }
 }
 
@@ -348,7 +353,15 @@ void MultiVelocityContact<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStag
   // Against a plane or a rigid body it is still corrected: like a boundary condition (also applied to the re-mapped
   // velocity), the prescribed motion then enters the strain rate (the platen's reaction, test_rigid_platen.cpp).
   const bool record = stage == GridStage::updated;
-  correct(ctx, stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped, record);
+  const auto member = stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped;
+  correct(ctx, member, record);
+  // A body with face conditions of its own has them again after the correction: at a node it shares with another
+  // body's mass (a clamped base beside the water) the correction moved the held node, and with FLIP the increment
+  // then carried that motion into the body (the FSI example's obstacle gained 14 J by 0.24 s, 23% of E0). Bodies
+  // on the scene's conditions keep the order they had (their results unchanged, bit for bit).
+  for (int k = 0; k < body_count_; ++k)
+    if (body_boundary_[k] && !body_boundary_[k]->empty())
+      body_boundary_[k]->apply(body_grids_[k].velocity, member, ctx.time + ctx.dt);
 }
 
 template <int Dim>

@@ -13,29 +13,32 @@ bool is_linear(const HintContext& c) { return c.shape_function == "linear"; }
 
 constexpr std::array<EnergyHint, 9> rows{{
     {"contact module (multi-velocity contact)", trigger_energy, [](const HintContext& c) { return c.contact; },
-     "frictionless collisions of deformable bodies stay within +0.5% of E0 with either onset (issue 21); contact "
-     "with a rigid plane or body, or friction, was not measured for energy: try `contact.onset: particle_gap`",
-     "with the paper's corrections Love & Sulsky's colliding cylinders gained +5.6% (plastic) and +22% (elastic, "
-     "MUSL, node criterion); now never above E0 with either onset (docs/theory.md §11, \"Energy\")"},
+     "frictionless collisions of deformable bodies stay within +0.5% of E0 with either onset (issue 21); contact with "
+     "a rigid plane or body, or friction, was not measured for energy: try `contact.onset: particle_gap`",
+     "with the paper's corrections Love & Sulsky's colliding cylinders gained +5.6% (plastic) and +22% (elastic, MUSL, "
+     "node criterion); now never above E0 with either onset (docs/theory.md §11, \"Energy\")"},
     {"APIC with linear hats", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.transfer == VelocityTransfer::apic && is_linear(c); },
-     "APIC with linear hats runs on free surfaces with MUSL and USF (the re-map takes C_p from the trial "
-     "velocities, a nearly empty node enters C_p without its gradient); with USL a particle next to a nearly "
-     "empty node inverts F as with FLIP: use `scheme: musl` or `usf`. APIC itself loses energy (the non-affine "
-     "modes, at every transfer), it does not gain it",
-     "the dam break (examples/12) with APIC and hats, to 1.7 s: energy change -4.85% (MUSL), -5.02% (USF), never "
-     "above E0; at 35/140/280 cells instead of 70 (MUSL): -13.4%/-2.80%/-3.23%, density warnings only at the wall "
-     "impact; USL inverts a particle at 0.065 s, FLIP with USL at 0.066 s; before the fix MUSL inverted at 0.093 s, "
-     "USF at 0.068 s (physics/fluids/README.md, Limits)"},
+     "APIC with linear hats runs on free surfaces with MUSL and USF (the re-map takes C_p from the trial velocities, a "
+     "nearly empty node enters C_p without its gradient); with USL a particle next to a nearly empty node inverts F as "
+     "with FLIP: use `scheme: musl` or `usf`. APIC itself loses energy (the non-affine modes, at every transfer), it "
+     "does not gain it",
+     "the dam break (examples/12) with APIC and hats, to 1.7 s: energy change -4.85% (MUSL), -5.02% (USF), never above "
+     "E0; at 35/140/280 cells instead of 70 (MUSL): -13.4%/-2.80%/-3.23%, density warnings only at the wall impact; "
+     "USL inverts a particle at 0.065 s, FLIP with USL at 0.066 s; before the fix MUSL inverted at 0.093 s, USF at "
+     "0.068 s (physics/fluids/README.md, Limits)"},
     {"PolyPIC with linear hats", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.transfer == VelocityTransfer::polypic; },
-     "PolyPIC's transfer loses nothing, so it keeps grid-scale velocity noise as FLIP does: where a splash breaks "
-     "into spray it can gain energy and invert a particle: halve `cfl`, or use `velocity_transfer: apic` (both "
-     "lose energy instead); MUSL or USF, not USL",
+     "PolyPIC's transfer loses nothing, so it keeps grid-scale velocity noise as FLIP does: where a splash breaks into "
+     "spray it can gain energy and invert a particle: give the water `cavitation_pressure: 0` (no tension) and "
+     "`volumetric_deformation: 1`, halve `cfl`, or use `velocity_transfer: apic` (both lose energy instead); MUSL or "
+     "USF, not USL",
      "the dam break (examples/12) with PolyPIC and hats, MUSL, to 1.7 s: -5.61%/-1.75%/-1.14% at 35/70/140 cells, "
-     "never above E0 (APIC -13.4%/-4.85%/-2.80%); the FSI example (examples/14) with hats: the sentinel warns at "
-     "0.21 s, a spray particle inverts at 0.234 s (cfl 0.5); at cfl 0.25 it runs to 0.5 s, -25.3% (APIC -46.1%); USL "
-     "inverts at 0.091 s (physics/fluids/README.md, Limits)"},
+     "never above E0 (APIC -13.4%/-4.85%/-2.80%); the FSI example (examples/14) with hats: a spray particle inverts at "
+     "0.227 s (cfl 0.5), at cfl 0.25 -25.3% (APIC -46.1%); its contact set-up (contact.yaml: slip floor, "
+     "cavitation_pressure 0, volumetric_deformation 1) runs to 0.5 s, no inverted particle (examples/14 README); USL "
+     "inverts at 0.091 s "
+     "(physics/fluids/README.md, Limits)"},
     {"USL (any shape function)", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.scheme == SchemeKind::usl; },
      "USL is the least stable explicit scheme here: use `scheme: musl` (or usf), or a smaller `cfl`",
@@ -46,29 +49,29 @@ constexpr std::array<EnergyHint, 9> rows{{
        return c.transfer == VelocityTransfer::flip && c.flip_fraction > 0.999 && is_linear(c) &&
               !is_total_lagrangian(c.scheme);
      },
-     "pure FLIP with linear hats gains energy from the cell-crossing error at fine resolution; add a PIC "
-     "fraction (`flip_fraction: 0.99`), or use `shape_function: quadratic_bspline` or `cpgimp`",
-     "the two disks of examples/02 at 200 cells per side, dt = 0.002 s, MUSL: total energy +37.3% at 3.5 s with "
-     "FLIP and hats; flip_fraction 0.99: -19.6% (never above E0 by 1e-5), quadratic_bspline: +1.1% (largest "
-     "+1.4%), cpgimp: +2.0% (largest +2.1%) (docs/VERIFICATION.md, Energy sentinel)"},
+     "pure FLIP with linear hats gains energy from the cell-crossing error at fine resolution; add a PIC fraction "
+     "(`flip_fraction: 0.99`), or use `shape_function: quadratic_bspline` or `cpgimp`",
+     "the two disks of examples/02 at 200 cells per side, dt = 0.002 s, MUSL: total energy +37.3% at 3.5 s with FLIP "
+     "and hats; flip_fraction 0.99: -19.6% (never above E0 by 1e-5), quadratic_bspline: +1.1% (largest +1.4%), cpgimp: "
+     "+2.0% (largest +2.1%) (docs/VERIFICATION.md, Energy sentinel)"},
     {"Bernstein functions with an explicit scheme", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.shape_function == "bernstein" && !is_total_lagrangian(c.scheme); },
      "quadratic Bernstein functions tolerate a smaller time step than the others with MUSL; use `cfl: 0.5` or less",
-     "largest stable CFL factor on the bar: MUSL with bernstein 0.600 against 1.500 to >= 2 for the other "
-     "functions (docs/VERIFICATION.md, Largest stable CFL factor)"},
+     "largest stable CFL factor on the bar: MUSL with bernstein 0.600 against 1.500 to >= 2 for the other functions "
+     "(docs/VERIFICATION.md, Largest stable CFL factor)"},
     {"TLMPM", trigger_energy, [](const HintContext& c) { return is_total_lagrangian(c.scheme); },
-     "the total-Lagrangian scheme gains energy over long runs, the more the larger the step: use `cfl: 0.5` or "
-     "less (a PIC fraction, `flip_fraction: 0.99`, removes the gain but damps strongly)",
-     "a 2D elastic block (256 particles, linear hats, FLIP), 1e5 steps: +42.5% at cfl 1, +12.9% at 0.7, +2.3% at "
-     "0.5; flip_fraction 0.99 at cfl 1: -87% (docs/verification-notes.md, Stiff and extreme cases, extended)"},
+     "the total-Lagrangian scheme gains energy over long runs, the more the larger the step: use `cfl: 0.5` or less (a "
+     "PIC fraction, `flip_fraction: 0.99`, removes the gain but damps strongly)",
+     "a 2D elastic block (256 particles, linear hats, FLIP), 1e5 steps: +42.5% at cfl 1, +12.9% at 0.7, +2.3% at 0.5; "
+     "flip_fraction 0.99 at cfl 1: -87% (docs/verification-notes.md, Stiff and extreme cases, extended)"},
     {"fixed time step (solver.dt)", trigger_energy | trigger_guard, [](const HintContext& c) { return c.fixed_dt; },
-     "a fixed dt is checked against the CFL bound of the initial state only; faster or compressed material "
-     "lowers the bound during the run: use `cfl: 0.5` (adaptive) instead of `dt`",
-     "beyond the largest stable CFL factor the energy grows before the guard trips: two disks, MUSL linear at "
-     "1.225 x the bound: +12.2% at 3.469 s (docs/VERIFICATION.md, Largest stable CFL factor)"},
+     "a fixed dt is checked against the CFL bound of the initial state only; faster or compressed material lowers the "
+     "bound during the run: use `cfl: 0.5` (adaptive) instead of `dt`",
+     "beyond the largest stable CFL factor the energy grows before the guard trips: two disks, MUSL linear at 1.225 x "
+     "the bound: +12.2% at 3.469 s (docs/VERIFICATION.md, Largest stable CFL factor)"},
     {"any other method", trigger_energy | trigger_guard, [](const HintContext&) { return true; },
-     "no documented cause for this method: halve the time step (`cfl`), refine the grid, and compare with the "
-     "measured stability limits",
+     "no documented cause for this method: halve the time step (`cfl`), refine the grid, and compare with the measured "
+     "stability limits",
      "the largest stable CFL factor of every scheme and shape function on the bar and the two disks "
      "(docs/VERIFICATION.md, Largest stable CFL factor)"},
 }};

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,8 @@
 #include "dam_break.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/fluids/tait_fluid.hpp"
+#include "mpm/material_batch.hpp"
+#include "mpm/scene_error.hpp"
 #include "sod.hpp"
 #include "sod_exact.hpp"
 
@@ -123,6 +126,84 @@ TEST(TaitFluid, PressureAndViscousStress) {
   const double W1 = fluids::TaitFluid::energy_density(c, Mat3::Identity() * std::cbrt(0.99 + dJ), Mat3::Zero());
   const double W0 = fluids::TaitFluid::energy_density(c, Mat3::Identity() * std::cbrt(0.99 - dJ), Mat3::Zero());
   EXPECT_NEAR((W1 - W0) / (2 * dJ), -p, 1e-5 * p);
+}
+
+// cavitation_pressure p_c: p = max(K (J^-gamma - 1), p_c); the stored energy keeps dW/dJ = -p on both sides of J_c
+// (where the Tait pressure reaches p_c) and is continuous there, so the energy audit stays exact; p_c = 0 stores
+// nothing in expansion. Without p_c the law is the Tait one (checked above).
+TEST(TaitFluid, CavitationPressureLimitsTheTension) {
+  for (const double pc : {0.0, -5.0e4}) {
+    fluids::TaitFluid::Params c{1000, 2.0e5, 7, 0, 0};
+    c.cavitation_pressure = pc;
+    const double Jc = fluids::TaitFluid::cavitation_volume_ratio(c);
+    EXPECT_NEAR(2.0e5 * (std::pow(Jc, -7) - 1), pc, 1e-9 * 2.0e5);
+    const auto W = [&](double J) {
+      return fluids::TaitFluid::energy_density(c, Mat3::Identity() * std::cbrt(J), Mat3::Zero());
+    };
+    for (const double J : {0.99, 1.0005, Jc * 1.01, 1.3, 2.0}) {
+      const double p = std::max(2.0e5 * (std::pow(J, -7) - 1), pc);
+      EXPECT_NEAR(fluids::TaitFluid::pressure(c, J), p, 1e-9 * 2.0e5) << J;
+      const double dJ = 1e-7;
+      if (std::abs(J - Jc) > 10 * dJ) {
+        EXPECT_NEAR((W(J + dJ) - W(J - dJ)) / (2 * dJ), -p, 1e-4 * 2.0e5) << J;
+      }
+    }
+    EXPECT_NEAR(W(Jc * (1 - 1e-12)), W(Jc * (1 + 1e-12)), 1e-6);  // continuous at J_c (slope p_c: 1e-7 apart)
+    if (pc == 0) {
+      EXPECT_EQ(W(1.7), 0.0);  // no energy in expansion
+    }
+  }
+}
+
+// volumetric_deformation: the batch keeps only the volume of a fluid particle's F. A 2D particle sheared at
+// L_01 = 100 1/s with a slight compression for 2e4 steps of 1e-4 s (shear strain 200): with the full F its entries
+// grow to ~200 while det F follows the compression; with the option F stays J^(1/2) I with the same J to round-off,
+// and the stress (which reads J alone) agrees.
+TEST(TaitFluid, VolumetricDeformationKeepsOnlyTheVolume) {
+  fluids::TaitFluid::Params c{1000, 2.0e5, 7, 1.0e-3, 0};
+  Mat<2> L = Mat<2>::Zero();
+  L(0, 1) = 100;
+  L(0, 0) = L(1, 1) = -1e-3;
+  const MatU<2> Lu = L;
+  std::array<ParticleSet<2>, 2> p;
+  for (int k = 0; k < 2; ++k) {
+    c.volumetric_deformation = k == 1;
+    MaterialBatch<2, fluids::TaitFluid> m(c);
+    p[k].add(Vec<2>::Zero(), 1, 1);
+    for (int s = 0; s < 20000; ++s) {
+      p[k].F[0] = (Mat<2>::Identity() + 1e-4 * L) * Mat<2>(p[k].F[0]);
+      m.update_stress(p[k], 0, 1, &Lu, 1e-4);
+    }
+  }
+  const Mat<2> full = p[0].F[0], volumetric = p[1].F[0];
+  EXPECT_GT(std::abs(full(0, 1)), 100);
+  EXPECT_NEAR(volumetric(0, 1), 0, 0);
+  EXPECT_NEAR(volumetric(0, 0), volumetric(1, 1), 0);
+  EXPECT_NEAR(volumetric.determinant(), full.determinant(), 1e-9);
+  EXPECT_NEAR(volumetric.determinant(), std::exp(-2 * 1e-3 * 2.0), 1e-6);  // det(I + dt L)^n ~ exp(tr L t)
+  EXPECT_NEAR(p[1].stress[0].full()(0, 0), p[0].stress[0].full()(0, 0), 1e-6 * 2.0e5);
+}
+
+// volumetric_deformation is a switch: 0 or 1, anything else refused at its key.
+TEST(NewtonianFluid, VolumetricDeformationIsZeroOrOne) {
+  const std::string scene = R"(
+dimension: 2
+grid: {extent: [1, 1], cell_size: 0.1}
+materials:
+  water: {model: newtonian_fluid, density: 1000, bulk_modulus: 2.0e6, volumetric_deformation: 0.5}
+bodies:
+  - {name: water, material: water, shape: {type: box, min: [0, 0], max: [0.5, 0.5]}}
+solver: {scheme: musl, shape_function: linear, cfl: 0.5, end_time: 0.01}
+)";
+  try {
+    test::simulation_from_yaml<2>(scene, "half.yaml");
+    FAIL() << "volumetric_deformation: 0.5 was accepted";
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("volumetric_deformation: must be 0 (the full F) or 1 (its volume only)"), std::string::npos)
+        << what;
+    EXPECT_EQ(e.where.line, 5) << what;
+  }
 }
 
 // docs/errata.md #10 (§5.4.1): the Stokes condition is lambda_N = -2 mu / 3 (printed +2 mu / 3), so that the

@@ -15,6 +15,10 @@
 /// in-plane storage; the batch loop then uses it (the elastic laws do: it avoids 3x3 round trips), and
 /// `update_packed_axisymmetric(params, F, L, F_tt, L_tt, J, dt, stress)` for axisymmetric bodies (else those
 /// take the 3x3 law with F_tt and L_tt on the diagonal, axisymmetric.hpp).
+/// Optional: `static bool volumetric_only(const Params&)`, true when the law reads F through J = det F alone (a
+/// fluid): the batch then replaces the in-plane F by J_p^(1/Dim) I before the update (J_p its determinant; the hoop
+/// stretch and so J unchanged), so that no isochoric distortion accumulates. A fluid sheared for long has F entries
+/// of 1e8 whose determinant is round-off (an inverted particle with det F computed from them, issue 21).
 
 #include <algorithm>
 #include <cmath>
@@ -92,6 +96,10 @@ class MaterialBatch final : public Material<Dim> {
     bool finite = true;
     Vec<Dim> max_speed = Vec<Dim>::Zero();
     for (Index i = begin; i != end; ++i) {
+      if constexpr (requires(const Params& c) { Model::volumetric_only(c); })
+        if (Model::volumetric_only(params_))
+          if (const Real J_p = p.F[i].determinant(); J_p > 0)  // else the stability guard reports it
+            p.F[i] = MatU<Dim>(std::pow(J_p, Real(1) / Dim) * Mat<Dim>::Identity());
       Real J = p.F[i].determinant();
       if constexpr (Hoop) J *= hoop.stretch[i];
       if constexpr (Hoop && has_packed_axisymmetric_update) {

@@ -1,5 +1,6 @@
 #include "mpm/fluids/register.hpp"
 
+#include <limits>
 #include <mutex>
 
 #include "mpm/fluids/ideal_gas.hpp"
@@ -26,6 +27,15 @@ std::vector<ParameterSpec> newtonian_parameters() {
       ParameterSpec::with_default("density_tolerance", "-", 0.03, Range::above(0),
                                   "largest abs(rho/rho0 - 1) before `mpm run` warns (once per body) that the bulk "
                                   "modulus is too small for the flow"),
+      ParameterSpec::optional("cavitation_pressure", "Pa",
+                              Range{-std::numeric_limits<double>::infinity(), true, 0, true}, "absent: no limit",
+                              "p_c: the pressure never falls below it, p = max(K [(rho/rho0)^gamma - 1], p_c) (0: "
+                              "water that cannot hold tension, a free surface separates; the density warning then "
+                              "only watches compression)"),
+      ParameterSpec::with_default("volumetric_deformation", "-", 0, Range::closed(0, 1),
+                                  "1: F keeps only its volume, F = J^(1/dim) I after every step (the law reads J "
+                                  "alone; in long shear flows F's entries grow until det F is round-off); 0: the "
+                                  "full F"),
   };
 }
 
@@ -48,6 +58,11 @@ MaterialModel newtonian_model() {
               "weakly compressible Newtonian fluid (review eqs 5.29-5.31): Tait EOS p = K [(rho/rho0)^gamma "
               "- 1], sigma = 2 mu dev(D) + zeta tr(D) I - p I, density from det F",
           .parameters = newtonian_parameters(),
+          .check = [](const std::map<std::string, double>& p) -> std::optional<ParameterError> {
+            if (const double v = p.at("volumetric_deformation"); v != 0 && v != 1)
+              return ParameterError{"volumetric_deformation", "must be 0 (the full F) or 1 (its volume only)"};
+            return std::nullopt;
+          },
           .make_1d = &make_newtonian_fluid<1>,
           .make_2d = &make_newtonian_fluid<2>,
           .make_3d = &make_newtonian_fluid<3>};
@@ -69,8 +84,10 @@ MaterialModel ideal_gas_model() {
 template <int Dim>
 std::unique_ptr<Material<Dim>> make_newtonian_fluid(const MaterialDescription& d) {
   const auto& p = d.parameters;
-  const TaitFluid::Params c{p.at("density"),   p.at("bulk_modulus"),   p.at("eos_exponent"),
-                            p.at("viscosity"), p.at("bulk_viscosity"), p.at("density_tolerance")};
+  TaitFluid::Params c{p.at("density"),   p.at("bulk_modulus"),   p.at("eos_exponent"),
+                      p.at("viscosity"), p.at("bulk_viscosity"), p.at("density_tolerance")};
+  if (const auto it = p.find("cavitation_pressure"); it != p.end()) c.cavitation_pressure = it->second;
+  c.volumetric_deformation = p.at("volumetric_deformation") == 1;
   return std::make_unique<MaterialBatch<Dim, TaitFluid>>(c);
 }
 

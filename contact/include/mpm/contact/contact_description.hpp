@@ -38,6 +38,15 @@ struct PlaneDescription {
   SourceLocation where;
 };
 
+/// Face conditions of one body's own velocity field (`contact.body_boundaries`): on the faces given they replace
+/// grid.boundary's conditions for this body only (a base clamped where the other bodies slip).
+struct BodyBoundaryDescription {
+  std::string body;
+  /// In the order of GridDescription::face_names; none: the face keeps grid.boundary's condition.
+  std::array<std::optional<FaceBoundary>, 6> faces{};
+  SourceLocation where;
+};
+
 struct ContactDescription {
   double friction = 0;  ///< default Coulomb coefficient of every pair of bodies
   /// Default thermal contact conductance h of every pair of bodies, W/(m^2 K) (docs/theory.md eq. TC.1); none:
@@ -49,6 +58,7 @@ struct ContactDescription {
   std::string onset = "grid";             ///< "grid" (contact nodes, the paper) or "particle_gap"
   std::vector<RigidBodyDescription> rigid_bodies;
   std::vector<PlaneDescription> planes;
+  std::vector<BodyBoundaryDescription> body_boundaries;
   std::string force_file;     ///< CSV of contact forces, relative to output.directory; empty: none
   double force_interval = 0;  ///< s between CSV rows (0: every step); forces are averaged over it
   SourceLocation where;

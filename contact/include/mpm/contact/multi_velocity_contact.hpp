@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/boundary_conditions.hpp"
 #include "mpm/exact_sum.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/interface_conductance.hpp"
@@ -50,6 +51,13 @@ struct ContactSettings {
     std::array<std::string, Dim> velocity;
   };
   std::vector<Plane> planes;
+  /// A body whose own field has its own face conditions (`contact.body_boundaries`): all 2 Dim faces, grid.boundary's
+  /// with the body's replacements. Bodies not listed take grid.boundary's (StepContext::boundary).
+  struct BodyFaces {
+    int body = 0;
+    std::array<FaceBoundary, 6> faces{};
+  };
+  std::vector<BodyFaces> body_faces;
   std::string force_file;  ///< empty: no CSV
   Real force_interval = 0;
   /// MUSL: correct the re-mapped velocity again at nodes of two deformable bodies (the paper's Remark 33; against a
@@ -196,6 +204,8 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   int body_count_ = 0;
   std::vector<Grid<Dim>> body_grids_;  ///< one per body (Body::own_grid points here)
   std::vector<int> rigid_of_;          ///< per body: index into settings_.rigid_bodies, or -1
+  /// per body: its own face conditions (settings_.body_faces), or null: the scene's (StepContext::boundary)
+  std::vector<std::unique_ptr<GridBoundary<Dim>>> body_boundary_;
   std::vector<std::array<Expression, Dim>> rigid_velocity_, plane_velocity_;
   std::vector<Vec<Dim>> plane_point_;
   std::unique_ptr<ShapePasses<Dim>> passes_;

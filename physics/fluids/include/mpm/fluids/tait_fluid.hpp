@@ -6,7 +6,9 @@
 /// Stokes condition lambda_N = -2 mu/3, docs/errata.md #10), and the density rho = rho0/J from
 /// det F (eq. 2.55c). Stateless: F carries the whole history, so the law batches like the elastic ones.
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <fmt/format.h>
@@ -24,9 +26,25 @@ struct TaitFluid {
     Real viscosity;                 ///< mu, Pa s
     Real bulk_viscosity;            ///< zeta, Pa s
     Real density_tolerance = 0.03;  ///< largest |rho/rho0 - 1| of a valid weakly compressible run
+    /// p_c, Pa (<= 0, gauge like p): the pressure never falls below it (the liquid cavitates, a free-surface
+    /// particle separates instead of pulling with a tension up to K); -infinity: no limit.
+    Real cavitation_pressure = -std::numeric_limits<Real>::infinity();
+    /// Keep only the volume of F (F = J^(1/Dim) I after every step, material_batch.hpp): the law reads J alone.
+    bool volumetric_deformation = false;
   };
 
-  static inline Real pressure(const Params& c, Real J) { return c.bulk_modulus * (std::pow(J, -c.gamma) - 1); }
+  static inline bool volumetric_only(const Params& c) { return c.volumetric_deformation; }
+
+  /// p = max(kappa (J^-gamma - 1), p_c).
+  static inline Real pressure(const Params& c, Real J) {
+    return std::max(c.bulk_modulus * (std::pow(J, -c.gamma) - 1), c.cavitation_pressure);
+  }
+  /// J_c, where the Tait pressure reaches p_c: (1 + p_c / kappa)^(-1/gamma) (>= 1); +infinity without a limit
+  /// (or p_c <= -kappa, below every Tait pressure).
+  static inline Real cavitation_volume_ratio(const Params& c) {
+    const Real s = 1 + c.cavitation_pressure / c.bulk_modulus;
+    return s > 0 ? std::pow(s, -1 / c.gamma) : std::numeric_limits<Real>::infinity();
+  }
 
   static inline Mat3 update_point(const Params& c, const PointKinematics& k, const Mat3&) {
     const Mat3 D = 0.5 * (k.L + k.L.transpose());
@@ -45,8 +63,11 @@ struct TaitFluid {
   }
   /// Weak compressibility holds while rho/rho0 = 1/J stays within the tolerance (default 3%); past it the
   /// bulk modulus is too small for the flow (the pressure is no longer an incompressibility constraint).
+  /// With a cavitation pressure only compression counts: an expanded particle carries p_c, a separated spray
+  /// particle or cavity, not a bulk modulus too small for the flow.
   static inline std::string state_warning(const Params& c, Real J_min, Real J_max) {
-    const Real deviation = std::max(1 / J_min - 1, 1 - 1 / J_max);
+    const bool cavitates = c.cavitation_pressure > -std::numeric_limits<Real>::infinity();
+    const Real deviation = std::max(1 / J_min - 1, cavitates ? Real(0) : 1 - 1 / J_max);
     if (!(deviation > c.density_tolerance)) return {};
     return fmt::format(
         "newtonian_fluid: the density deviates from rho0 by {:.3g}% (rho/rho0 in [{:.4g}, {:.4g}]), more than "
@@ -54,10 +75,13 @@ struct TaitFluid {
         100 * deviation, 1 / J_max, 1 / J_min, 100 * c.density_tolerance);
   }
   /// Stored energy per reference volume, W(J) = -int_1^J p dJ = kappa [(J^(1-gamma) - 1)/(gamma - 1) + J - 1]
-  /// (dW/dJ = -p; viscous stresses store nothing).
+  /// up to J_c, and W(J_c) - p_c (J - J_c) beyond (dW/dJ = -p, so the audit stays exact with a cavitation
+  /// pressure; p_c = 0: no energy in expansion). Viscous stresses store nothing.
   static inline Real energy_density(const Params& c, const Mat3& F, const Mat3&) {
+    const auto tait = [&](Real J) { return c.bulk_modulus * ((std::pow(J, 1 - c.gamma) - 1) / (c.gamma - 1) + J - 1); };
     const Real J = F.determinant();
-    return c.bulk_modulus * ((std::pow(J, 1 - c.gamma) - 1) / (c.gamma - 1) + J - 1);
+    const Real J_c = cavitation_volume_ratio(c);
+    return J <= J_c ? tait(J) : tait(J_c) - c.cavitation_pressure * (J - J_c);
   }
 };
 
