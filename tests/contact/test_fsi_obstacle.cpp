@@ -102,13 +102,13 @@ TEST(FsiObstacle, ContactSetUpKeepsTheEnergyWithinItsMeasuredLoss) {
   EXPECT_LT(base_right, 0.298);
 }
 
-// What isolates the loss: the same tank with the obstacle rigid (at rest; its normals are exact on its faces, (+-1,
-// 0), except at the floor) and with no obstacle. The rigid obstacle's contact does almost no first-order work
-// (J.v^t = -0.31% of E0: the water at its face has no normal velocity left at the start of a step), yet the run loses
-// 7% of E0 more than the water alone: that share is lost in the water's own flow (the surge stopped at the face, the
-// bore it sends back, the jet over the top falling onto the water), as it is at a grid wall (20 cells: the water
-// against a rigid block from x = 0.292 m -7.85%, against the grid's slip wall at the same place -7.95%). It does not
-// fall with the cell (-10.0% / -10.3% / -9.42% at 10 / 20 / 40 cells; water alone -3.0% / -3.7% / -5.3%).
+// What isolates the loss: the same tank with the obstacle rigid (at rest; at 20 cells its normals on its left face
+// were (1, 0) at every node but the floor's) and with no obstacle. The rigid obstacle's contact does almost no
+// first-order work (J.v^t = -0.31% of E0: the water at its face has no normal velocity left at the start of a step),
+// yet the run loses 7% of E0 more than the water alone: that share is lost in the water's own flow (the surge stopped
+// at the face, the bore it sends back, the jet over the top falling onto the water), as it is at a grid wall (20 cells:
+// the water against a rigid block from x = 0.292 m -7.85%, against the grid's slip wall at the same place -7.95%). It
+// does not fall with the cell (-10.0% / -10.3% / -9.42% at 10 / 20 / 40 cells; water alone -3.0% / -3.7% / -5.3%).
 TEST(FsiObstacle, RigidObstacleLosesInTheWaterNotInTheContact) {
   const FsiRun water = run(water_alone());
   const FsiRun rigid =
