@@ -29,8 +29,10 @@ import numpy as np
 # Assumed interconnect (not measured here): an InfiniBand HDR-class link, MPI one-way latency and bandwidth.
 IB_LATENCY = 1.5e-6  # s
 IB_BANDWIDTH = 12e9  # B/s
-# Threads per rank the projection tries: at most 16 (a socket; one rank's threads share its memory).
+# Threads per rank the projection tries: at most 16 (a socket; one rank's threads share its memory); the
+# "slabs of tiles" rows (the engine since session 12) also try a whole 64-core node per rank (THREADS_NODE).
 THREADS = [1, 2, 4, 8, 16]
+THREADS_NODE = THREADS + [32, 38, 64]
 
 
 def load(path):
@@ -106,7 +108,7 @@ def step_time(P, T, decomposition, c, alpha, beta, n_axis=256, ppc=8, e_T=1.0):
     decomposition that has fewer units (slabs, tiles) than P / T ranks leaves the other cores idle."""
     N = n_axis**3 * ppc
     R = P // T
-    if decomposition == "slabs":
+    if decomposition in ("slabs", "slabs of tiles"):
         R = min(R, math.ceil(n_axis / 5))
     Nr = N / R
     reach = 5  # cubic B-spline: a slab or tile's particles reach 2 node layers below, 3 above
@@ -117,6 +119,19 @@ def step_time(P, T, decomposition, c, alpha, beta, n_axis=256, ppc=8, e_T=1.0):
         rounds = 2
         message = reach * (n_axis + 1) ** 2 * bytes_per_node
         halo = rounds * (alpha + message / beta) if R > 1 else 0  # one message per round (send or receive)
+    elif decomposition == "slabs of tiles":
+        # Ranks own slabs as above; the threads scatter the slab's tiles (8 cells wide, 2^3 colours, the slab
+        # parity first): k_r = the rank's slabs of a colour x the tiles of a colour in a slab. A rank holding one
+        # slab scatters in one of the two slab rounds and waits for its neighbours in the other: its scatter takes
+        # twice its own time.
+        slabs = math.ceil(n_axis / 5)
+        per_slab = (math.ceil(n_axis / 8) // 2) ** 2
+        k = math.ceil(slabs / R / 2) * per_slab
+        rounds = 2
+        message = reach * (n_axis + 1) ** 2 * bytes_per_node
+        halo = rounds * (alpha + message / beta) if R > 1 else 0
+        if slabs / R < 2:
+            c = dict(c, f_s=2 * c["f_s"])  # the scatter share, serialised over the two slab rounds
     else:  # 3D blocks of 8^3-cell tiles, 2^3 colours, a rank owns a cube of tiles
         tiles = (n_axis // 8) ** 3
         if R > tiles:
@@ -141,9 +156,9 @@ def project(c, alpha, beta, label):
              "| cores | decomposition | best ranks x threads | step (ms) | compute | wait | halo | migrate | "
              "efficiency |", "|---|---|---|---|---|---|---|---|---|"]
     for P in [16, 128, 1000]:
-        for dec in ["slabs", "blocks"]:
+        for dec in ["slabs", "slabs of tiles", "blocks"]:
             best = None
-            for T in THREADS:
+            for T in (THREADS_NODE if dec == "slabs of tiles" else THREADS):
                 r = step_time(P, T, dec, c, alpha, beta)
                 if r and (best is None or r[0] < best[0]):
                     best = r

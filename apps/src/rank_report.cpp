@@ -10,7 +10,7 @@
 
 #include "mpm/memory_budget.hpp"
 #include "mpm/shape/shape_functions.hpp"
-#include "mpm/slab_binning.hpp"
+#include "mpm/tile_binning.hpp"
 #include "mpm/slab_halo.hpp"
 #include "mpm/tiling.hpp"
 

@@ -6,7 +6,7 @@
 #include "mpm/axisymmetric.hpp"
 #include "mpm/shape/shape_functions.hpp"
 #include "mpm/shape/stencil.hpp"
-#include "mpm/slab_binning.hpp"
+#include "mpm/tile_binning.hpp"
 
 namespace mpm::contact {
 namespace {
@@ -25,7 +25,7 @@ class Passes final : public ShapePasses<Dim> {
     const auto& p = body.particles;
     VecU<Dim>* n = out.data();
     // Same slab colouring as the P2G scatter: race-free and deterministic (ghost nodes exchanged when distributed).
-    for_each_slab_coloured(body.bins, {HaloArray::of(out)}, [&](const Index* index, Index count) {
+    for_each_tile_coloured(body.bins, {HaloArray::of(out)}, [&](const Index* index, Index count) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {
@@ -44,7 +44,7 @@ class Passes final : public ShapePasses<Dim> {
     Real* e = out.data();
     const Real* hoop = axisym::hoop_stretch_of(p);
     // a maximum, not a sum: the copy-not-add exchange keeps it the serial one all the same
-    for_each_slab_coloured(body.bins, {HaloArray::of(out)}, [&](const Index* index, Index count) {
+    for_each_tile_coloured(body.bins, {HaloArray::of(out)}, [&](const Index* index, Index count) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {

@@ -110,8 +110,8 @@ template <int Dim>
 void Simulation<Dim>::take_step(Real dt, bool guard) {
   if (scheme_->reorders_particles() && settings_.sort_interval > 0 && step_ % settings_.sort_interval == 0)
     for (auto& b : bodies_) {
-      b.particles.gather(order_by_cell(b.particles, grid_.geometry));
-      if (comm_) set_scatter_keys(b.particles, grid_.geometry);
+      b.particles.gather(order_by_cell(b.particles, grid_.geometry, scheme_->slab_cells()));
+      if (comm_) set_scatter_keys(b.particles, grid_.geometry, scheme_->slab_cells());
     }
   StepContext<Dim> ctx{grid_, bodies_, settings_.transfer, boundary_, hooks_};
   attach(ctx);

@@ -8,16 +8,17 @@
 #include <stdexcept>
 
 #include "mpm/simulation.hpp"
-#include "mpm/slab_binning.hpp"
+#include "mpm/tile_binning.hpp"
 
 namespace mpm {
 
 bool slab_baseline_requested();  // slab_halo.cpp: MPM_DEBUG_SLAB_BASELINE
 
 template <int Dim>
-void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g) {
+void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells) {
   auto& key = p.template field<std::uint64_t>(scatter_key_field);
-  for (Index i = 0; i < p.size(); ++i) key[i] = scatter_key(cell_index<Dim>(p.x[i], g), p.id[i]);
+  const ScatterCellOrder<Dim> place(g, slab_cells);
+  for (Index i = 0; i < p.size(); ++i) key[i] = scatter_key(place.of(p.x[i]), p.id[i]);
 }
 
 namespace {
@@ -267,17 +268,17 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) const {
   ctx.active_nodes = halo_->reached_nodes();
 }
 
-#define MPM_SIMULATION_DISTRIBUTED(D)                                         \
-  template void set_scatter_keys<D>(ParticleSet<D>&, const GridGeometry<D>&); \
-  template void Simulation<D>::distribute(std::shared_ptr<Communicator>);     \
-  template std::string Simulation<D>::why_not_distributed(int) const;         \
-  template std::vector<int> Simulation<D>::balanced_slabs() const;            \
-  template void Simulation<D>::reassign_slabs(std::vector<int>);              \
-  template bool Simulation<D>::migrate();                                     \
-  template std::vector<double> Simulation<D>::slab_costs() const;             \
-  template void Simulation<D>::rebalance();                                   \
-  template void Simulation<D>::use_slabs(const std::vector<int>&);            \
-  template void Simulation<D>::share_report(StabilityReport&) const;          \
+#define MPM_SIMULATION_DISTRIBUTED(D)                                              \
+  template void set_scatter_keys<D>(ParticleSet<D>&, const GridGeometry<D>&, int); \
+  template void Simulation<D>::distribute(std::shared_ptr<Communicator>);          \
+  template std::string Simulation<D>::why_not_distributed(int) const;              \
+  template std::vector<int> Simulation<D>::balanced_slabs() const;                 \
+  template void Simulation<D>::reassign_slabs(std::vector<int>);                   \
+  template bool Simulation<D>::migrate();                                          \
+  template std::vector<double> Simulation<D>::slab_costs() const;                  \
+  template void Simulation<D>::rebalance();                                        \
+  template void Simulation<D>::use_slabs(const std::vector<int>&);                 \
+  template void Simulation<D>::share_report(StabilityReport&) const;               \
   template void Simulation<D>::attach(StepContext<D>&) const;
 MPM_SIMULATION_DISTRIBUTED(1)
 MPM_SIMULATION_DISTRIBUTED(2)

@@ -220,7 +220,7 @@ template <class Shape>
 constexpr int slab_dimension = shape_dimension<Shape> == 0 ? 1 : shape_dimension<Shape>;
 
 /// The scatter writes every node of a particle's stencil (zero weights included). Slabs of
-/// `Shape::slab_cells` cells along x, binned as bin_by_slab does; two slabs of the same colour (s and
+/// `Shape::slab_cells` cells along x, binned as bin_by_tile does; two slabs of the same colour (s and
 /// s + 2) must not reach a common node. GIMP with the longest domain (one cell each side; the nodes
 /// reached do not depend on it), CPDI with small random elements.
 template <class Shape>

@@ -40,7 +40,7 @@ std::vector<double> run_with_threads(int threads, const std::string& solver) {
   return state(*sim);
 }
 
-// Slab-coloured scatter in a fixed order (slab_binning.hpp): the same bits for any thread count.
+// Tile-coloured scatter in a fixed order (tile_binning.hpp): the same bits for any thread count.
 TEST(Simulation, BitIdenticalAcrossThreadCounts) {
   for (const std::string solver : {"scheme: musl, cfl: 0.5, end_time: 1, sort_interval: 7",
                                    "scheme: usl, shape_function: cubic_bspline, cfl: 0.5, end_time: 1",

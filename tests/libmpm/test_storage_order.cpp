@@ -1,6 +1,6 @@
 // Results do not depend on where the particles sit in memory (docs/distributed.md §1): the particles are sorted
-// by (cell, id) before the first step and every sort_interval steps, the scatter visits a slab in that order
-// (slab_binning.hpp), and the energy audit sums exactly (exact_sum.hpp), so a scene whose particles are stored
+// by (cell, id) before the first step and every sort_interval steps, the scatter visits a tile in that order
+// (tile_binning.hpp), and the energy audit sums exactly (exact_sum.hpp), so a scene whose particles are stored
 // in another order gives the same bits.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <random>
 
 #include "mpm/exact_sum.hpp"
-#include "mpm/slab_binning.hpp"
+#include "mpm/tile_binning.hpp"
 #include "scene_fixture.hpp"
 
 namespace mpm {
@@ -33,15 +33,15 @@ ParticleSet<Dim> random_particles(int n, std::mt19937& rng) {
   return p;
 }
 
-/// The ids in the order the scatter visits them, slab by slab.
-std::vector<std::uint32_t> visit_order(const SlabBins& bins, const std::vector<std::uint32_t>& id) {
+/// The ids in the order the scatter visits them, tile by tile.
+std::vector<std::uint32_t> visit_order(const TileBins& bins, const std::vector<std::uint32_t>& id) {
   std::vector<std::uint32_t> out;
   for (Index i : bins.order) out.push_back(id[static_cast<std::size_t>(i)]);
   return out;
 }
 
 /// order_by_cell sorts by (cell, id) whatever the storage order was: the key strictly increases after it, and
-/// the same particles stored in a random order (ids kept) end in the same order, so the slabs are visited
+/// the same particles stored in a random order (ids kept) end in the same order, so the tiles are visited
 /// in the same order of ids. `n` particles in the 10^Dim cells of the unit box (3000: a few per cell, the
 /// insertion sort; 20000 in 2D: hundreds per cell, a shuffled first sort takes the fallback).
 template <int Dim>
@@ -52,21 +52,22 @@ void check_sort_follows_cell_and_id(int n, int slab_cells) {
   cells.fill(10);
   const GridGeometry<Dim> g(Vec<Dim>::Zero(), Vec<Dim>::Constant(0.1), cells);
   ParticleSet<Dim> sorted = p;
-  sorted.gather(order_by_cell(sorted, g));
+  sorted.gather(order_by_cell(sorted, g, slab_cells));
+  const ScatterCellOrder<Dim> place(g, slab_cells);
   for (Index i = 1; i < sorted.size(); ++i)
-    ASSERT_LT(scatter_key(cell_index<Dim>(sorted.x[i - 1], g), sorted.id[i - 1]),
-              scatter_key(cell_index<Dim>(sorted.x[i], g), sorted.id[i]))
+    ASSERT_LT(scatter_key(place.of(sorted.x[i - 1]), sorted.id[i - 1]),
+              scatter_key(place.of(sorted.x[i]), sorted.id[i]))
         << i;
   std::vector<Index> perm(static_cast<std::size_t>(p.size()));
   std::iota(perm.begin(), perm.end(), 0);
   std::shuffle(perm.begin(), perm.end(), rng);
   ParticleSet<Dim> shuffled = p;
   shuffled.gather(perm);
-  shuffled.gather(order_by_cell(shuffled, g));
+  shuffled.gather(order_by_cell(shuffled, g, slab_cells));
   EXPECT_EQ(shuffled.id, sorted.id);
-  SlabBins a, b;
-  bin_by_slab(sorted, g, slab_cells, a);
-  bin_by_slab(shuffled, g, slab_cells, b);
+  TileBins a, b;
+  bin_by_tile(sorted, g, slab_cells, a);
+  bin_by_tile(shuffled, g, slab_cells, b);
   EXPECT_EQ(a.offsets, b.offsets);
   EXPECT_EQ(visit_order(a, sorted.id), visit_order(b, shuffled.id));
 }

@@ -34,7 +34,7 @@ void check_p2g_conservation() {
     mass += body.particles.mass.back();
     momentum += body.particles.mass.back() * body.particles.v.back();
   }
-  bin_by_slab(body.particles, grid.geometry, Shape::slab_cells, body.bins);
+  bin_by_tile(body.particles, grid.geometry, Shape::slab_cells, body.bins);
   kernels::reset_grid(grid);
   kernels::particles_to_grid<Dim, Shape>(body, grid);
   Real grid_mass = 0;

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "mpm/material.hpp"
-#include "mpm/slab_binning.hpp"
+#include "mpm/tile_binning.hpp"
 
 namespace mpm {
 
@@ -19,7 +19,7 @@ struct Body {
   std::shared_ptr<Material<Dim>> material;  ///< stateless: shared by snapshots
   bool stretched_domain = false;            ///< the particle domain follows diag F (cpGIMP), for output
   int domain_corners = 0;  ///< CPDI: corners per particle domain (2 segment, 3 triangle, 4 quad or tetrahedron)
-  SlabBins bins;           ///< rebuilt every step by the scheme
+  TileBins bins;           ///< rebuilt every step by the scheme
   /// Scratch: velocity gradients of all particles, used only when a module runs between the
   /// grid-to-particle transfer and the stress update (otherwise a per-block buffer is enough).
   std::vector<MatU<Dim>> velocity_gradient;

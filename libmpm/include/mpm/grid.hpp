@@ -3,7 +3,7 @@
 /// Cartesian background grid: geometry (origin, cell size, node counts) and the nodal arrays that the
 /// transfers fill every step (mass, momentum, force, velocities). Node (i, j, k) has linear index
 /// i + n_x (j + n_y k): x varies fastest, so the last axis is the one cut into slabs for the parallel
-/// particle-to-grid scatter (see slab_binning.hpp).
+/// particle-to-grid scatter (see tile_binning.hpp).
 
 #include <array>
 #include <map>

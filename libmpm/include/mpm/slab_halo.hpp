@@ -1,7 +1,7 @@
 #pragma once
 /// \file slab_halo.hpp
 /// The ghost-node protocol of a distributed run (issue 18, docs/distributed.md §4). Ranks own contiguous runs of
-/// the slabs the threaded scatter already uses (slab_binning.hpp): slab s holds the cells [sT, (s+1)T) of the last
+/// the slabs the threaded scatter already uses (tile_binning.hpp): slab s holds the cells [sT, (s+1)T) of the last
 /// axis and its particles reach the node layers [sT - B, (s+1)T - 1 + A] (the shape function's slab_reach_below and
 /// slab_reach_above, B + A <= T). A scatter runs even slabs, then odd ones; a node's contributions therefore come
 /// from at most two slabs, in the order (even slab, odd slab), and inside a slab in the storage order, on one rank
@@ -47,7 +47,7 @@ inline double slab_cost(std::int64_t particles, Index nodes_per_layer, int slab_
 }
 
 /// Which rank owns which slabs, and the exchange after a colour round. Built by the distributed simulation
-/// (Simulation::distribute); a serial run has none (SlabBins::halo is null).
+/// (Simulation::distribute); a serial run has none (TileBins::halo is null).
 class SlabHalo {
  public:
   /// `first_slab[r]` .. `first_slab[r + 1]` - 1: the slabs of rank r (every rank at least one).
@@ -64,7 +64,7 @@ class SlabHalo {
   /// The node layers this rank owns ([first, last)): a node layer belongs to the slab whose cells start at or below
   /// it (the grid's last layer to the last slab). Sums over nodes (boundary work, reactions) take owned nodes only.
   std::pair<Index, Index> owned_nodes() const;
-  /// The exchange of one scatter of `arrays` (for_each_slab_coloured). Its messages are those of the protocol above
+  /// The exchange of one scatter of `arrays` (for_each_tile_coloured). Its messages are those of the protocol above
   /// (after the round of its colour, the owner of an overlap's slab sends it; the other rank replaces its copy), each
   /// started as early as the data allows, so that the ranks compute while they travel:
   ///   begin_scatter(arrays)   starts every receive of the scatter;

@@ -20,7 +20,7 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
     PhaseTimer timer(ctx.profile, StepPhase::p2g);
     const auto& g = ctx.grid.geometry;
     for (auto& body : ctx.bodies) {
-      bin_by_slab(body.particles, g, Shape::slab_cells, body.bins);
+      bin_by_tile(body.particles, g, Shape::slab_cells, body.bins);
       if (body.bins.outside >= 0) ctx.guard_tripped = true;
     }
     reset_grid(ctx.grid, ctx.active_nodes);

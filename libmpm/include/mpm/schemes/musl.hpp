@@ -53,7 +53,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     const Real alpha = ctx.settings.flip_fraction;
     MatU<Dim>* affine = kernels::affine_of(p);
     const keys::PolyModes<Dim>* poly = kernels::polypic_of<Dim, Shape>(p);
-    for_each_slab_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
+    for_each_tile_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       for (Index k = 0; k < count; ++k) {

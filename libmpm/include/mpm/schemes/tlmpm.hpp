@@ -42,7 +42,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     nodal_mass_.assign(grid.size(), 0);
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       auto& p = bodies[b].particles;
-      p.gather(order_by_cell(p, grid.geometry));
+      p.gather(order_by_cell(p, grid.geometry, Shape::slab_cells));
       auto& X = p.add_field(keys::reference_position<Dim>, VecU<Dim>::Zero());
       for (Index i = 0; i < p.size(); ++i) X[i] = p.x[i];
     }
@@ -64,9 +64,9 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       auto& p = bodies[b].particles;
       const auto& X = p.field(keys::reference_position<Dim>);
-      ParticleSet<Dim> reference;  // binned by X: bin_by_slab reads positions
+      ParticleSet<Dim> reference;  // binned by X: bin_by_tile reads positions
       reference.x = X;
-      bin_by_slab(reference, grid.geometry, Shape::slab_cells, bodies[b].bins);
+      bin_by_tile(reference, grid.geometry, Shape::slab_cells, bodies[b].bins);
       auto& cache = stencils_[b];
       cache.resize(p.size());
       const ParticleDomain<Dim, Shape> domain(p);
@@ -175,7 +175,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     NodeRecord<Dim>* node = grid.node.data();
     const VecU<Dim>* body_force = kernels::body_force_of(p);
     const Real* hoop_stretch = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
-    for_each_slab_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
+    for_each_tile_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
         // First Piola-Kirchhoff stress P = J sigma F^-T = sigma cof(F) (review Table 4), times V0.
@@ -204,7 +204,7 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     NodeRecord<Dim>* node = ctx.grid.node.data();
     const NodeVelocity<Dim>* vel = ctx.grid.velocity.data();
     const Real alpha = ctx.settings.flip_fraction;
-    for_each_slab_coloured(body.bins, {HaloArray::of(ctx.grid.node)}, [&](const Index* index, Index count) {
+    for_each_tile_coloured(body.bins, {HaloArray::of(ctx.grid.node)}, [&](const Index* index, Index count) {
       for (Index k = 0; k < count; ++k) {
         const Index i = index[k];
         const auto& st = cache[i];

@@ -194,7 +194,7 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
   const MatU<Dim>* affine = MassMomentum ? affine_of(body.particles) : nullptr;
   const keys::PolyModes<Dim>* poly = MassMomentum ? polypic_of<Dim, Shape>(body.particles) : nullptr;
   const Real* hoop_stretch = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
-  for_each_slab_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
+  for_each_tile_coloured(body.bins, {HaloArray::of(grid.node)}, [&](const Index* index, Index count) {
     axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
     for (Index k = 0; k < count; ++k) {

@@ -24,7 +24,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     {
       PhaseTimer timer(ctx.profile, StepPhase::p2g);
       for (auto& body : ctx.bodies) {
-        bin_by_slab(body.particles, grid.geometry, Shape::slab_cells, body.bins);
+        bin_by_tile(body.particles, grid.geometry, Shape::slab_cells, body.bins);
         if (body.bins.outside >= 0) ctx.guard_tripped = true;
       }
       kernels::reset_grid(grid, ctx.active_nodes);

@@ -509,7 +509,7 @@ class HeatConduction final : public Module<Dim> {
       std::vector<HaloArray> written{HaloArray::of(f.capacity), HaloArray::of(f.heat_content)};
       if (heat_flow) written.push_back(HaloArray::of(f.heat_flow));
       if (heat_flow && area) written.push_back(HaloArray::of(f.area));
-      for_each_slab_coloured(body.bins, std::span<const HaloArray>(written), [&](const Index* index, Index count) {
+      for_each_tile_coloured(body.bins, std::span<const HaloArray>(written), [&](const Index* index, Index count) {
         axisym::StencilFor<Dim, Shape, Coords> st;
         const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
         for (Index k = 0; k < count; ++k) {
