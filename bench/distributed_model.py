@@ -108,6 +108,8 @@ def step_time(P, T, decomposition, c, alpha, beta, n_axis=256, ppc=8, e_T=1.0):
     decomposition that has fewer units (slabs, tiles) than P / T ranks leaves the other cores idle."""
     N = n_axis**3 * ppc
     R = P // T
+    if R < 1:
+        return None
     if decomposition in ("slabs", "slabs of tiles"):
         R = min(R, math.ceil(n_axis / 5))
     Nr = N / R

@@ -10,8 +10,8 @@
 
 #include "mpm/memory_budget.hpp"
 #include "mpm/shape/shape_functions.hpp"
-#include "mpm/tile_binning.hpp"
 #include "mpm/slab_halo.hpp"
+#include "mpm/tile_binning.hpp"
 #include "mpm/tiling.hpp"
 
 namespace mpm::app {

@@ -92,7 +92,7 @@ TEST(TileColouring, TilesOfAColourWriteDisjointNodesIn2D) {
   check_colouring<2, LinearHat>(37);
   check_colouring<2, QuadraticBSpline>(37);
   check_colouring<2, CubicBSpline>(41);
-  check_colouring<2, Gimp>(41);
+  check_colouring<2, UGimp>(41);
 }
 
 TEST(TileColouring, TilesOfAColourWriteDisjointNodesIn3D) {
