@@ -104,8 +104,8 @@ bool GridBoundary<Dim>::does_work() const {
 template <int Dim>
 ExactSum GridBoundary<Dim>::work(const std::vector<NodeRecord<Dim>>& node,
                                  const std::vector<NodeVelocity<Dim>>& velocity, const Vec<Dim>& gravity,
-                                 Real mass_cutoff, Real t, Real dt, std::pair<Index, Index> owned) const {
-  auto mine = [&](Index n) { return n >= owned.first && n < owned.second; };
+                                 Real mass_cutoff, Real t, Real dt, NodeMask owned) const {
+  auto mine = [&](Index n) { return owned.contains(n); };
   ExactSum w;
   for (const auto& k : constraints_) {
     if (!k.value) continue;  // v = 0: no work

@@ -210,7 +210,7 @@ void Simulation<Dim>::take_snapshot() {
   snapshot_.step = step_;
   snapshot_.wave_speed = wave_speed_;
   snapshot_.dts_since.clear();
-  snapshot_.first_slab = halo_ ? halo_->first_slab() : std::vector<int>{};
+  snapshot_.tile_owner = halo_ ? halo_->owners() : std::vector<int>{};
   snapshot_.modules = StateArchive();
   for (const auto& m : hooks_.all()) m->save_state(snapshot_.modules, module_prefix(*m));
 }
@@ -224,8 +224,8 @@ void Simulation<Dim>::roll_back_to_previous_step() {
   time_ = snapshot_.time;
   step_ = snapshot_.step;
   wave_speed_ = snapshot_.wave_speed;
-  if (halo_) {  // the slabs' owners of the snapshot's time; a scheme's per-particle caches follow the particles
-    use_slabs(snapshot_.first_slab);
+  if (halo_) {  // the tiles' owners of the snapshot's time; a scheme's per-particle caches follow the particles
+    use_owners(snapshot_.tile_owner);
     scheme_->particles_redistributed(bodies_, grid_);
   }
   for (const auto& m : hooks_.all()) m->restore_state(snapshot_.modules, module_prefix(*m));
@@ -242,7 +242,7 @@ bool Simulation<Dim>::replay_failure(const std::function<void(const Simulation&)
   step_ = start.step;
   wave_speed_ = start.wave_speed;
   if (halo_) {
-    use_slabs(start.first_slab);
+    use_owners(start.tile_owner);
     scheme_->particles_redistributed(bodies_, grid_);
   }
   for (const auto& m : hooks_.all()) m->restore_state(start.modules, module_prefix(*m));

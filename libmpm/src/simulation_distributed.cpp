@@ -1,4 +1,4 @@
-// The distributed side of Simulation (issue 18, docs/distributed.md §4): slab ownership, migration of particles,
+// The distributed side of Simulation (issue 18, docs/distributed.md §5): tile ownership, migration of particles,
 // the guard's shared report. One process never runs this code.
 #include <fmt/format.h>
 
@@ -12,8 +12,6 @@
 
 namespace mpm {
 
-bool slab_baseline_requested();  // slab_halo.cpp: MPM_DEBUG_SLAB_BASELINE
-
 template <int Dim>
 void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells) {
   auto& key = p.template field<std::uint64_t>(scatter_key_field);
@@ -23,13 +21,19 @@ void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_
 
 namespace {
 
-/// The slab of the cell holding x on the last axis (clamped into the grid; NaN: slab 0, the guard has tripped).
+/// The cell of x on axis d (clamped into the grid; NaN: cell 0, the guard has tripped).
 template <int Dim>
-int slab_of(const VecU<Dim>& x, const GridGeometry<Dim>& g, int slab_cells) {
-  constexpr int axis = Dim - 1;
-  const Real xi = (x[axis] - g.origin[axis]) * g.inv_h[axis];
-  const int cell = std::isfinite(xi) ? std::clamp(static_cast<int>(xi), 0, g.cells(axis) - 1) : 0;
-  return cell / slab_cells;
+int cell_on_axis(const VecU<Dim>& x, const GridGeometry<Dim>& g, int d) {
+  const Real xi = (x[d] - g.origin[d]) * g.inv_h[d];
+  return std::isfinite(xi) ? std::clamp(static_cast<int>(xi), 0, g.cells(d) - 1) : 0;
+}
+
+/// The tile holding x (TileGrid's numbering, bin_by_tile's).
+template <int Dim>
+Index tile_of(const VecU<Dim>& x, const GridGeometry<Dim>& g, const TileGrid& tiles) {
+  std::array<int, 3> c{0, 0, 0};
+  for (int d = 0; d < Dim; ++d) c[d] = cell_on_axis<Dim>(x, g, d) / tiles.tile_cells[d];
+  return tiles.index(c);
 }
 
 /// The positions particles are assigned to ranks by: the scheme's (TLMPM: reference) or the current ones.
@@ -42,6 +46,12 @@ const VecU<Dim>* owner_positions(const Scheme<Dim>& scheme, const ParticleSet<Di
 }  // namespace
 
 template <int Dim>
+TileGrid Simulation<Dim>::tile_grid() const {
+  const auto [below, above] = scheme_->slab_reach();
+  return make_tile_grid(grid_.geometry, scheme_->slab_cells(), below, above);
+}
+
+template <int Dim>
 std::string Simulation<Dim>::why_not_distributed(int ranks) const {
   if (!scheme_->runs_distributed())
     return fmt::format(
@@ -52,14 +62,10 @@ std::string Simulation<Dim>::why_not_distributed(int ranks) const {
     if (const std::string why = m->why_not_distributed(); !why.empty())
       return fmt::format("module '{}' does not run on several ranks yet ({}); run this scene in one process", m->name(),
                          why);
-  const auto& g = grid_.geometry;
-  const int T = scheme_->slab_cells();
-  const int slabs = (g.cells(Dim - 1) + T - 1) / T;
-  if (ranks > slabs)
-    return fmt::format(
-        "{} ranks for {} slabs of {} cells along the grid's last axis: a rank owns at least one slab; start at most "
-        "{} ranks",
-        ranks, slabs, T, slabs);
+  const TileGrid tiles = tile_grid();
+  if (ranks > tiles.tile_count())
+    return fmt::format("{} ranks for {} tiles of the scatter: a rank owns at least one tile; start at most {} ranks",
+                       ranks, tiles.tile_count(), tiles.tile_count());
   return {};
 }
 
@@ -70,7 +76,6 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
   if (comm_) throw std::logic_error("Simulation::distribute: call once, before the first step of this process");
   if (const std::string why = why_not_distributed(comm->size()); !why.empty()) throw std::invalid_argument(why);
   const auto& g = grid_.geometry;
-  const int T = scheme_->slab_cells();
   for (auto& b : bodies_) {
     // Before the first sort the storage order is the scene's: the key is the place in it.
     auto& key = b.particles.template add_field<std::uint64_t>(scatter_key_field);
@@ -78,8 +83,8 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
   }
   comm_ = std::move(comm);
   for (const auto& m : hooks_.all()) m->set_writes_files(comm_->rank() == 0);
-  const auto [below, above] = scheme_->slab_reach();
-  halo_ = std::make_unique<SlabHalo>(*comm_, balanced_slabs(), T, below, above, g.nodes[Dim - 1], g.stride[Dim - 1]);
+  const TileGrid tiles = tile_grid();
+  halo_ = std::make_unique<TileHalo>(*comm_, tiles, balanced_owners());
   for (auto& b : bodies_) b.bins.halo = halo_.get();
   // Every rank holds every particle: each keeps its own (the all-to-all of migrate() then moves nothing).
   const int me = comm_->rank();
@@ -88,7 +93,7 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
     const VecU<Dim>* x = owner_positions(*scheme_, p);
     std::vector<Index> keep;
     for (Index i = 0; i < p.size(); ++i)
-      if (halo_->owner_of_slab(slab_of<Dim>(x[i], g, T)) == me) keep.push_back(i);
+      if (halo_->owners()[static_cast<std::size_t>(tile_of<Dim>(x[i], g, tiles))] == me) keep.push_back(i);
     p.gather(keep);
   }
   scheme_->particles_redistributed(bodies_, grid_);
@@ -96,73 +101,78 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
 }
 
 template <int Dim>
-std::vector<double> Simulation<Dim>::slab_costs() const {
+std::vector<double> Simulation<Dim>::tile_costs() const {
   const auto& g = grid_.geometry;
-  const int T = scheme_->slab_cells();
-  const int slabs = (g.cells(Dim - 1) + T - 1) / T;
-  std::vector<std::int64_t> count(slabs, 0);
+  const TileGrid tiles = tile_grid();
+  std::vector<std::int64_t> count(static_cast<std::size_t>(tiles.tile_count()), 0);
   for (const auto& b : bodies_) {
     const VecU<Dim>* x = owner_positions(*scheme_, b.particles);
-    for (Index i = 0; i < b.particles.size(); ++i) ++count[slab_of<Dim>(x[i], g, T)];
+    for (Index i = 0; i < b.particles.size(); ++i) ++count[static_cast<std::size_t>(tile_of<Dim>(x[i], g, tiles))];
   }
   if (halo_) comm_->sum(count);  // before distribute() every rank holds every particle
-  std::vector<double> cost(slabs);
-  for (int s = 0; s < slabs; ++s) cost[s] = slab_cost(count[s], g.stride[Dim - 1], T);
+  std::vector<double> cost(count.size());
+  for (Index t = 0; t < tiles.tile_count(); ++t) {
+    const auto c = tiles.coordinates(t);
+    Index cells = 1;
+    for (int d = 0; d < Dim; ++d) cells *= std::min(tiles.tile_cells[d], tiles.cells[d] - c[d] * tiles.tile_cells[d]);
+    cost[static_cast<std::size_t>(t)] = tile_cost(count[static_cast<std::size_t>(t)], cells);
+  }
   return cost;
 }
 
 template <int Dim>
-std::vector<int> Simulation<Dim>::balanced_slabs() const {
-  return cut_slabs(slab_costs(), comm_->size());
+std::vector<int> Simulation<Dim>::balanced_owners() const {
+  return bisect_tiles(tile_grid(), tile_costs(), comm_->size());
 }
 
 template <int Dim>
 void Simulation<Dim>::rebalance() {
-  const std::vector<double> cost = slab_costs();
-  const auto& first = halo_->first_slab();
+  const std::vector<double> cost = tile_costs();
+  const auto& owner = halo_->owners();
+  std::vector<double> load(static_cast<std::size_t>(comm_->size()), 0.0);
+  for (std::size_t t = 0; t < cost.size(); ++t) load[static_cast<std::size_t>(owner[t])] += cost[t];
   double total = 0, most = 0;
-  for (int r = 0; r + 1 < static_cast<int>(first.size()); ++r) {
-    double c = 0;
-    for (int s = first[r]; s < first[r + 1]; ++s) c += cost[s];
+  for (const double c : load) {
     total += c;
     most = std::max(most, c);
   }
-  const double mean = total / comm_->size();
-  if (most <= 1.1 * mean) return;
-  std::vector<int> balanced = cut_slabs(cost, comm_->size());
-  if (balanced != first) reassign_slabs(std::move(balanced));
+  if (most <= 1.1 * total / comm_->size()) return;
+  std::vector<int> balanced = bisect_tiles(halo_->tiles(), cost, comm_->size());
+  if (balanced != owner) reassign_tiles(std::move(balanced));
 }
 
 template <int Dim>
-void Simulation<Dim>::use_slabs(const std::vector<int>& first_slab) {
-  if (first_slab == halo_->first_slab()) return;
+void Simulation<Dim>::use_owners(const std::vector<int>& owner) {
+  if (owner == halo_->owners()) return;
   halo_bytes_before_ += halo_->bytes_sent();
-  const auto [below, above] = scheme_->slab_reach();
-  const auto& g = grid_.geometry;
-  halo_ = std::make_unique<SlabHalo>(*comm_, first_slab, scheme_->slab_cells(), below, above, g.nodes[Dim - 1],
-                                     g.stride[Dim - 1]);
+  halo_ = std::make_unique<TileHalo>(*comm_, tile_grid(), owner);
   for (auto& b : bodies_) b.bins.halo = halo_.get();
 }
 
 template <int Dim>
-void Simulation<Dim>::reassign_slabs(std::vector<int> first_slab) {
+void Simulation<Dim>::reassign_tiles(std::vector<int> owner) {
   if (!halo_) return;
-  use_slabs(first_slab);
+  use_owners(owner);
   if (comm_->any(migrate())) scheme_->particles_redistributed(bodies_, grid_);
 }
 
 template <int Dim>
 bool Simulation<Dim>::migrate() {
   const auto& g = grid_.geometry;
-  const int T = scheme_->slab_cells();
+  const TileGrid& tiles = halo_->tiles();
+  const HaloPlan& plan = halo_->plan();
+  const std::vector<int>& owner = halo_->owners();
   const int me = comm_->rank(), ranks = comm_->size();
-  // This rank's cells along the last axis: slab_of(x) is one of its slabs exactly when the cell slab_of computes
-  // lies in [first_cell, end_cell), so the scan needs no search over the slabs' owners.
-  const int first_cell = halo_->first_slab()[static_cast<std::size_t>(me)] * T;
-  const int end_cell = halo_->first_slab()[static_cast<std::size_t>(me) + 1] * T;
+  // A rank that owns a box of tiles (the bisection's) keeps a particle exactly when its cell lies in the box's cells
+  // on every axis: no lookup of the tile's owner for the particles that stay.
   const auto stays = [&](const VecU<Dim>& x) {
-    const int cell = slab_of<Dim>(x, g, 1);
-    return cell >= first_cell && cell < end_cell;
+    if (!plan.is_box) return owner[static_cast<std::size_t>(tile_of<Dim>(x, g, tiles))] == me;
+    bool in = true;
+    for (int d = 0; d < Dim; ++d) {
+      const int c = cell_on_axis<Dim>(x, g, d);
+      in = in && c >= plan.cell_box[d].first && c < plan.cell_box[d].second;
+    }
+    return in;
   };
   bool moved = false;
   for (auto& b : bodies_) {
@@ -172,7 +182,6 @@ bool Simulation<Dim>::migrate() {
     // Most steps no particle leaves: one pass that only reads the positions finds the first that does.
     Index first_leaving = 0;
     while (first_leaving < n && stays(x[first_leaving])) ++first_leaving;
-    if (slab_baseline_requested()) first_leaving = 0;  // the scan of before: every particle's owner looked up
     std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(ranks));
     std::vector<Index> keep;
     if (first_leaving < n) {
@@ -180,12 +189,12 @@ bool Simulation<Dim>::migrate() {
       for (Index i = 0; i < first_leaving; ++i) keep[static_cast<std::size_t>(i)] = i;
       keep.reserve(static_cast<std::size_t>(n));
       for (Index i = first_leaving; i < n; ++i) {
-        if (!slab_baseline_requested() && stays(x[i])) {
+        if (stays(x[i])) {
           keep.push_back(i);
           continue;
         }
-        const int owner = halo_->owner_of_slab(slab_of<Dim>(x[i], g, T));
-        (owner == me ? keep : leaving[static_cast<std::size_t>(owner)]).push_back(i);
+        const int to = owner[static_cast<std::size_t>(tile_of<Dim>(x[i], g, tiles))];
+        (to == me ? keep : leaving[static_cast<std::size_t>(to)]).push_back(i);
       }
     }
     std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(ranks));
@@ -272,12 +281,13 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) const {
   template void set_scatter_keys<D>(ParticleSet<D>&, const GridGeometry<D>&, int); \
   template void Simulation<D>::distribute(std::shared_ptr<Communicator>);          \
   template std::string Simulation<D>::why_not_distributed(int) const;              \
-  template std::vector<int> Simulation<D>::balanced_slabs() const;                 \
-  template void Simulation<D>::reassign_slabs(std::vector<int>);                   \
+  template std::vector<int> Simulation<D>::balanced_owners() const;                \
+  template void Simulation<D>::reassign_tiles(std::vector<int>);                   \
+  template TileGrid Simulation<D>::tile_grid() const;                              \
   template bool Simulation<D>::migrate();                                          \
-  template std::vector<double> Simulation<D>::slab_costs() const;                  \
+  template std::vector<double> Simulation<D>::tile_costs() const;                  \
   template void Simulation<D>::rebalance();                                        \
-  template void Simulation<D>::use_slabs(const std::vector<int>&);                 \
+  template void Simulation<D>::use_owners(const std::vector<int>&);                \
   template void Simulation<D>::share_report(StabilityReport&) const;               \
   template void Simulation<D>::attach(StepContext<D>&) const;
 MPM_SIMULATION_DISTRIBUTED(1)

@@ -157,10 +157,14 @@ TEST(ParallelLaunch, UnderMpirunWhatCannotBeDistributedIsRefusedOnce) {
   err = cli::slurp(dir / "stderr");
   EXPECT_NE(err.find("module 'contact' does not run on several ranks yet (normals: density"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out / "energy.csv"));
-  // More ranks than slabs: the two-disk grid has 10 slabs of 2 cells along y.
-  EXPECT_EQ(mpirun(11, "run " + scene + " --steps 3 --threads 1 -o " + out.string(), dir), 2);
+  // More ranks than tiles: the two-disk scene on 4 x 4 cells has 2 tiles (8 cells wide along x, 2 along y).
+  std::string coarse = cli::slurp(scene);
+  coarse.replace(coarse.find("cell_size: 0.05"), 15, "cell_size: 0.25");
+  std::ofstream(dir / "coarse.yaml") << coarse;
+  EXPECT_EQ(mpirun(3, "run " + (dir / "coarse.yaml").string() + " --steps 3 --threads 1 -o " + out.string(), dir), 2);
   err = cli::slurp(dir / "stderr");
-  EXPECT_NE(err.find("11 ranks for 10 slabs"), std::string::npos) << err;
+  EXPECT_NE(err.find("3 ranks for 2 tiles of the scatter"), std::string::npos) << err;
+  EXPECT_NE(err.find("start at most 2 ranks"), std::string::npos) << err;
   fs::remove_all(dir);
 }
 

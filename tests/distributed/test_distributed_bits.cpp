@@ -15,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <random>
 #include <sstream>
 #include <string>
@@ -157,27 +158,27 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
   auto sim = mpm::app::build_simulation<Dim>(scene);
   sim->distribute(comm);
   sim->set_rebalance_interval(c.rebalance);
-  const std::vector<int> first_slabs = sim->halo()->first_slab();
+  const std::vector<int> first_owners = sim->halo()->owners();
   std::mt19937 rng(42);  // the same draws on every rank
   bool ok = true;
   std::size_t halo_bytes = 0, model_bytes = 0;
-  // The halo model (SlabHalo::model_bytes_per_scatter): per step, body and scatter, one message per rank boundary.
+  // The halo model (TileHalo::model_bytes_per_scatter, the plan's nodes): per step, body and scatter.
   const int scatters = c.scheme == mpm::SchemeKind::usl ? 1 : 2;
   auto model_step = [&] {
     return sim->bodies().size() * scatters * sim->halo()->model_bytes_per_scatter(sizeof(mpm::NodeRecord<Dim>));
   };
   for (int s = 0; s < c.steps; ++s) {
     if (reassign) {
-      const int slabs = sim->halo()->slab_count(), ranks = comm->size();
-      std::vector<int> cuts;
-      for (int k = 1; k < slabs; ++k) cuts.push_back(k);
-      std::shuffle(cuts.begin(), cuts.end(), rng);
-      cuts.resize(static_cast<std::size_t>(ranks - 1));
-      std::sort(cuts.begin(), cuts.end());
-      std::vector<int> first{0};
-      first.insert(first.end(), cuts.begin(), cuts.end());
-      first.push_back(slabs);
-      sim->reassign_slabs(first);
+      // Every tile to a rank drawn at random (each rank at least one tile): no boxes, ghost nodes everywhere.
+      const std::size_t tiles = sim->halo()->owners().size();
+      const int ranks = comm->size();
+      std::vector<int> owner(tiles);
+      for (auto& o : owner) o = static_cast<int>(rng() % static_cast<unsigned>(ranks));
+      std::vector<std::size_t> first(tiles);
+      std::iota(first.begin(), first.end(), std::size_t{0});
+      std::shuffle(first.begin(), first.end(), rng);
+      for (int r = 0; r < ranks; ++r) owner[first[static_cast<std::size_t>(r)]] = r;
+      sim->reassign_tiles(owner);
     }
     model_bytes += model_step();
     sim->advance(sim->next_time_step());
@@ -217,8 +218,8 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
     }
     fmt::print(
         "{} ({} ranks{}{}): {} steps, {} particles, {} fields each, halo {} B sent by rank 0{}: {}\n", c.name,
-        comm->size(), reassign ? ", slabs dealt at random every step" : "",
-        sim->halo()->first_slab() != first_slabs ? ", rebalanced" : "", c.steps,
+        comm->size(), reassign ? ", tiles dealt at random every step" : "",
+        sim->halo()->owners() != first_owners ? ", rebalanced" : "", c.steps,
         [&] {
           std::size_t n = 0;
           for (const auto& m : serial) n += m.size();

@@ -251,7 +251,7 @@ void check_slab_thickness(int cells) {
   std::uniform_real_distribution<Real> u(0, cells);
   for (int i = 0; i < 4000; ++i) visit(u(rng));
   for (int i = 0; i <= 8 * cells; ++i) visit(i / Real(8));  // cell faces, centres, quarters and eighths exactly
-  // The slab's declared reach (the halo of a distributed run, slab_halo.hpp) holds every node it reached.
+  // The slab's declared reach (the halo of a distributed run, tile_halo.hpp) holds every node it reached.
   for (int s = 0; s < slabs; ++s) {
     if (hi[s] < 0) continue;
     EXPECT_GE(lo[s], s * Shape::slab_cells - Shape::slab_reach_below)

@@ -62,8 +62,7 @@ class GridBoundary {
   /// A fixed or slip face does none. `node` as for reactions(); every node term is summed exactly, over the nodes
   /// of `owned` only (a distributed run's rank, StepContext::owned_nodes; the ranks' sums are then merged).
   ExactSum work(const std::vector<NodeRecord<Dim>>& node, const std::vector<NodeVelocity<Dim>>& velocity,
-                const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt,
-                std::pair<Index, Index> owned = {0, std::numeric_limits<Index>::max()}) const;
+                const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt, NodeMask owned = {}) const;
 
  private:
   struct Constraint {

@@ -52,7 +52,7 @@ class Communicator {
     virtual void wait() = 0;
   };
   /// Starts one message of a halo exchange and returns at once, so that the sender and the receiver can compute
-  /// while it travels (the overlapped exchange of a scatter, slab_halo.hpp). Messages between the same pair go in
+  /// while it travels (the overlapped exchange of a scatter, tile_halo.hpp). Messages between the same pair go in
   /// the order they are started, as with exchange(). The default runs exchange() with the one message and returns a
   /// finished transfer: right for a communicator whose exchange does not wait for the peer.
   virtual std::unique_ptr<Transfer> start_send(const Outgoing& message);

@@ -39,9 +39,9 @@ class Scheme {
   virtual bool reorders_particles() const { return true; }
   /// False when particle positions are not used by the transfers (TLMPM: they may leave the grid).
   virtual bool positions_must_stay_in_grid() const { return true; }
-  /// Whether the scheme runs on several ranks (its scatters exchange ghost nodes, slab_halo.hpp).
+  /// Whether the scheme runs on several ranks (its scatters exchange ghost nodes, tile_halo.hpp).
   virtual bool runs_distributed() const { return false; }
-  /// Node layers a slab of cells reaches below its first cell and above its last (slab_halo.hpp).
+  /// Node layers a slab of cells reaches below its first cell and above its last (tile_halo.hpp).
   virtual std::pair<int, int> slab_reach() const { return {slab_cells(), slab_cells()}; }
   /// The scheme's own table of one row per step (the implicit scheme's solver.csv, written by `mpm run` beside
   /// energy.csv): its file name, or empty when it keeps none; its columns; the row of the last step taken.

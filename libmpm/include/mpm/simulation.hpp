@@ -15,10 +15,10 @@
 #include "mpm/energy.hpp"
 #include "mpm/module.hpp"
 #include "mpm/scheme.hpp"
-#include "mpm/slab_halo.hpp"
 #include "mpm/stability_error.hpp"
 #include "mpm/state_archive.hpp"
 #include "mpm/step_profile.hpp"
+#include "mpm/tile_halo.hpp"
 
 namespace mpm {
 
@@ -31,7 +31,7 @@ struct SimulationSettings {
   int snapshot_interval = 20;    ///< steps between snapshots kept for the stability guard
   int sort_interval = 20;        ///< steps between reorderings of the particles by cell
   /// Distributed run: steps between checks of the balance; when the most loaded rank's cost exceeds the mean by
-  /// more than 10%, the slabs are dealt anew (`mpm run --rebalance-every`; 0: never).
+  /// more than 10%, the tiles are dealt anew (`mpm run --rebalance-every`; 0: never).
   int rebalance_interval = 50;
 };
 
@@ -49,28 +49,34 @@ class Simulation {
   const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
 
   /// Makes this process one rank of a distributed run (issue 18, docs/distributed.md §4): every rank built the
-  /// same simulation from the scene; each keeps the particles of its run of slabs, and from now on its scatters
-  /// exchange ghost nodes, its particles migrate to the rank owning their slab after every step, and its time
+  /// same simulation from the scene; each keeps the particles of its tiles (a box of them), and from now on its
+  /// scatters exchange ghost nodes, its particles migrate to the rank owning their tile after every step, and its time
   /// step, guard, energy() and body_energy() are reduced over the ranks, so that every result has the bits of a
   /// one-process run. Call before the first step, on every rank. A communicator of one rank changes nothing.
   /// Throws std::invalid_argument (on every rank alike) for what cannot run distributed yet: a scheme or module
-  /// that has no ghost exchange, or more ranks than slabs.
+  /// that has no ghost exchange, or more ranks than tiles.
   void distribute(std::shared_ptr<Communicator> comm);
   /// Empty when the run can be distributed over `ranks` ranks, else why not (what distribute() would throw).
   std::string why_not_distributed(int ranks) const;
   /// The run's other ranks, or null in one process.
   Communicator* communicator() const { return comm_.get(); }
-  /// The distributed run's slab ownership, or null.
-  const SlabHalo* halo() const { return halo_.get(); }
-  /// Reassigns the slabs to the ranks (every rank the same `first_slab`, SlabHalo) and migrates the particles.
-  /// Results do not depend on it (the tests reassign at random every step).
-  void reassign_slabs(std::vector<int> first_slab);
-  /// Bytes of ghost nodes this rank has sent (every slab assignment's), for the halo model's test.
+  /// The distributed run's tile ownership and ghost-node exchange, or null.
+  const TileHalo* halo() const { return halo_.get(); }
+  /// Reassigns the tiles to the ranks (every rank the same `owner` of each tile, TileHalo) and migrates the
+  /// particles. Results do not depend on it (the tests deal the tiles at random every step).
+  void reassign_tiles(std::vector<int> owner);
+  /// Bytes of ghost nodes this rank has sent (every tile assignment's), for the halo model's test.
   std::size_t halo_bytes_sent() const { return halo_bytes_before_ + (halo_ ? halo_->bytes_sent() : 0); }
   /// Steps between balance checks of a distributed run (SimulationSettings::rebalance_interval; 0: never).
   void set_rebalance_interval(int steps) { settings_.rebalance_interval = steps; }
-  /// The slab runs that balance the particles of all ranks (a collective call).
-  std::vector<int> balanced_slabs() const;
+  /// The owner of each tile that balances the particles of all ranks: boxes of tiles by recursive bisection
+  /// (bisect_tiles; a collective call).
+  std::vector<int> balanced_owners() const;
+  /// The tiles of the scatter as a distributed run owns them (the grid and the shape function's slab and reach).
+  TileGrid tile_grid() const;
+  /// The cost of every tile (tile_cost: its particles, on all ranks in a distributed run, where this is a collective
+  /// call, plus a tenth of its cells).
+  std::vector<double> tile_costs() const;
 
   /// Largest stable time step of the current state (eq. 2.73 with alpha_dt = 1), of the viscous
   /// materials (h^2 / (2 Dim nu)) and of the modules.
@@ -129,11 +135,7 @@ class Simulation {
   void save_state(StateArchive& archive) const;
   /// Whether this rank owns node `n` (a distributed run: every node has one owner, whose copy holds the one-process
   /// values; sums and gathers over nodes take owned ones); one process: every node.
-  bool owns_node(Index n) const {
-    if (!halo_) return true;
-    const auto [first, end] = halo_->owned_nodes();
-    return n >= first && n < end;
-  }
+  bool owns_node(Index n) const { return !halo_ || halo_->owns_node(n); }
   /// Every body with every rank's particles, on rank 0 of a distributed run, in the one-process storage order (the
   /// order of a checkpoint and of a one-process run's frames), without the grid-side members (bins, own grid);
   /// nothing on the other ranks. A collective call; in one process, copies of the bodies.
@@ -161,24 +163,22 @@ class Simulation {
     WaveSpeedBound<Dim> wave_speed;
     std::vector<Real> dts_since;  ///< time steps taken after the snapshot, to replay them exactly
     StateArchive modules;         ///< the modules' state (Module::save_state)
-    std::vector<int> first_slab;  ///< distributed run: the slabs' owners then (SlabHalo)
+    std::vector<int> tile_owner;  ///< distributed run: the tiles' owners then (TileHalo)
   };
   /// One step; with `guard` false a tripped guard is ignored (replay_failure()'s last step).
   void take_step(Real dt, bool guard = true);
   void take_snapshot();
   StabilityReport diagnose(Real dt) const;
   void roll_back_to_previous_step();
-  /// Distributed run: sends every particle outside this rank's slabs to their owner and takes in what the others
+  /// Distributed run: sends every particle outside this rank's tiles to their owner and takes in what the others
   /// send, keeping the storage ordered by the scatter key (simulation_distributed.cpp).
   /// Returns whether a particle left or arrived on this rank (the all-to-all is collective, the answer is not: a
   /// caller that needs every rank's takes the `any`; the step's migration does not, saving a reduction per step).
   bool migrate();
-  /// Distributed run: the cost of every slab (its particles on all ranks, plus its nodes); a collective call.
-  std::vector<double> slab_costs() const;
-  /// Distributed run: deals the slabs anew when the most loaded rank exceeds the mean by more than 10%.
+  /// Distributed run: deals the tiles anew when the most loaded rank exceeds the mean by more than 10%.
   void rebalance();
-  /// Distributed run: the halo of the slab assignment `first_slab` (a restored snapshot's), without migrating.
-  void use_slabs(const std::vector<int>& first_slab);
+  /// Distributed run: the halo of the tile assignment `owner` (a restored snapshot's), without migrating.
+  void use_owners(const std::vector<int>& owner);
   /// Distributed run: the failing particle's report, from the lowest rank that found one.
   void share_report(StabilityReport& report) const;
   /// The step context's view of the distribution.
@@ -201,8 +201,8 @@ class Simulation {
   bool profiling_ = false;
   StepProfile profile_;
   std::shared_ptr<Communicator> comm_;  ///< null in one process
-  std::unique_ptr<SlabHalo> halo_;
-  std::size_t halo_bytes_before_ = 0;  ///< sent by the halos of earlier slab assignments
+  std::unique_ptr<TileHalo> halo_;
+  std::size_t halo_bytes_before_ = 0;  ///< sent by the halos of earlier tile assignments
 };
 
 /// The wave-speed bound of every rank's particles (a distributed run): max over ranks, exact.

@@ -49,10 +49,10 @@ struct StepContext {
   /// A distributed run's other ranks (Simulation::distribute), null in one process: a module that sums over
   /// particles or nodes reduces through it (owned nodes only: `owned_nodes`).
   Communicator* comm = nullptr;
-  /// The nodes this rank owns, [first, end): every node in one process.
-  std::pair<Index, Index> owned_nodes{0, std::numeric_limits<Index>::max()};
-  /// The nodes this rank's particles can reach, [first, end) (SlabHalo::reached_nodes): the grid kernels reset and
-  /// update only these. Every node in one process.
+  /// The nodes this rank owns (TileHalo::owned_nodes): every node in one process.
+  NodeMask owned_nodes{};
+  /// A range of nodes holding every node this rank's particles can reach, [first, end) (TileHalo::reached_nodes): the
+  /// grid kernels reset and update only these. Every node in one process.
   std::pair<Index, Index> active_nodes{0, std::numeric_limits<Index>::max()};
 };
 

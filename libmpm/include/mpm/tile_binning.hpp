@@ -4,7 +4,7 @@
 ///
 /// The grid is cut into tiles: `slab_cells` (`Shape::slab_cells`, the reach of the shape function) cells along
 /// its last axis and `tile_width(slab_cells)` cells along each other axis; a particle belongs to the tile of its
-/// cell. A row of tiles along the last axis is a **slab**, the unit a distributed run's ranks own (slab_halo.hpp).
+/// cell. A row of tiles along the last axis is a **slab**. A distributed run's ranks own sets of tiles (tile_halo.hpp).
 /// The colour of a tile is the parity of its coordinates (2^d colours); two tiles of one colour are at least one
 /// tile apart on some axis, and a tile is at least as wide as a particle's reach, so the particles of two tiles of
 /// a colour never reach the same node: all tiles of a colour scatter in parallel, colour after colour. The last
@@ -12,7 +12,7 @@
 /// slabs and the others those of odd slabs: a slab round of the ghost-node protocol is 2^(d-1) tile rounds.
 ///
 /// Inside a tile one task visits the particles in storage order, so every node receives its contributions in an
-/// order that depends neither on the thread count nor on which rank owns which slab: colour by colour, and inside
+/// order that depends neither on the thread count nor on which rank owns which tile: colour by colour, and inside
 /// a tile by storage order. The storage order is set by order_by_cell before the first step and every
 /// `solver.sort_interval` steps (TLMPM: once): by (cell, id), a function of the particles' positions at that step
 /// and their ids, not of where they sat in memory before, so results do not depend on the order of the input
@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "mpm/particle_set.hpp"
-#include "mpm/slab_halo.hpp"
+#include "mpm/tile_halo.hpp"
 
 namespace mpm {
 
@@ -60,8 +60,9 @@ struct TileBins {
   std::vector<std::uint32_t> tile_of;  ///< scratch: tile of each particle (kept to avoid reallocating every step)
   std::vector<Index> cursor;           ///< scratch
   std::array<std::vector<Index>, 3> tile_of_cell;  ///< scratch: per axis, cell -> tile coordinate x tile stride
-  /// Distributed run: the ghost-node exchange after each slab colour (slab_halo.hpp); null in one process.
-  const SlabHalo* halo = nullptr;
+  /// Distributed run: this rank's tiles and the ghost-node exchange after each colour (tile_halo.hpp); null in one
+  /// process.
+  const TileHalo* halo = nullptr;
 
   Index tile_count() const { return tiles_per_slab * slab_count; }
   /// 2^dim colours; colour c's tiles of slab parity c >> (dim - 1).
@@ -200,23 +201,22 @@ void bin_by_tile(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab
 
 namespace detail {
 
-/// Calls scatter(tile) in parallel for every tile of `colour` in the slabs `slabs` (all of the colour's slab parity
-/// when empty and `all_slabs`), skipping empty tiles.
+/// Calls scatter(tile) in parallel for every tile of `colour`, skipping empty tiles.
 template <class Scatter>
-void scatter_colour(const TileBins& bins, int colour, std::span<const int> slabs, bool all_slabs, Scatter&& scatter) {
+void scatter_colour(const TileBins& bins, int colour, Scatter&& scatter) {
   const int last = bins.dim - 1;
   const int slab_parity = colour >> last;
   // Tiles of the colour inside one slab: the product of ceil((tiles_d - parity_d) / 2) over the other axes.
   std::array<int, 2> along{1, 1};
   for (int d = 0; d < last; ++d) along[d] = (bins.tiles[d] - (colour >> d & 1) + 1) / 2;
   const Index per_slab = static_cast<Index>(along[0]) * along[1];
-  const Index slab_runs = all_slabs ? (bins.slab_count - slab_parity + 1) / 2 : static_cast<Index>(slabs.size());
+  const Index slab_runs = (bins.slab_count - slab_parity + 1) / 2;
   const Index total = per_slab * slab_runs;
   if (total <= 0) return;
   tbb::parallel_for(tbb::blocked_range<Index>(0, total), [&](const tbb::blocked_range<Index>& r) {
     for (Index k = r.begin(); k != r.end(); ++k) {
       const Index run = k / per_slab, in_slab = k % per_slab;
-      const Index slab = all_slabs ? 2 * run + slab_parity : slabs[static_cast<std::size_t>(run)];
+      const Index slab = 2 * run + slab_parity;
       Index t = slab * bins.tiles_per_slab;
       const Index a0 = in_slab % along[0], a1 = in_slab / along[0];
       if (last >= 1) t += 2 * a0 + (colour & 1);
@@ -227,33 +227,41 @@ void scatter_colour(const TileBins& bins, int colour, std::span<const int> slabs
   });
 }
 
+/// Calls scatter(tile) in parallel for the listed tiles (a distributed rank's, of one colour), skipping empty ones.
+template <class Scatter>
+void scatter_tiles(const TileBins& bins, const std::vector<Index>& tiles, Scatter&& scatter) {
+  if (tiles.empty()) return;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size()), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+      const Index t = tiles[k];
+      const Index begin = bins.offsets[t], end = bins.offsets[t + 1];
+      if (end > begin) scatter(bins.order.data() + begin, end - begin);
+    }
+  });
+}
+
 }  // namespace detail
 
 /// Calls body(indices, count) for every non-empty tile, colour after colour, the tiles of a colour in parallel.
-/// `written`: the nodal arrays the body adds to; in a distributed run their ghost nodes are exchanged after each slab
-/// colour (slab_halo.hpp): the slabs of a colour that write nodes another rank holds scatter first (their 2^(d-1) tile
-/// colours) and their message leaves while the others scatter. Slabs of one colour write disjoint nodes, so that
-/// order changes no bit.
+/// `written`: the nodal arrays the body adds to; in a distributed run (bins.halo) a rank scatters its own tiles and
+/// their ghost nodes are exchanged after each colour (tile_halo.hpp): the tiles of a colour that write nodes sent
+/// after it scatter first and the message leaves while the others scatter. Tiles of one colour write disjoint nodes,
+/// so that order changes no bit.
 template <class Body>
 void for_each_tile_coloured(const TileBins& bins, std::span<const HaloArray> written, Body&& body) {
-  const SlabHalo* halo = bins.halo;
-  const int per_slab_colour = bins.colours() / 2;
+  const TileHalo* halo = bins.halo;
   if (!halo) {
-    for (int colour = 0; colour < bins.colours(); ++colour) detail::scatter_colour(bins, colour, {}, true, body);
+    for (int colour = 0; colour < bins.colours(); ++colour) detail::scatter_colour(bins, colour, body);
     return;
   }
+  if (halo->tiles().tile_count() != bins.tile_count())
+    throw std::logic_error("for_each_tile_coloured: the bins and the halo tile the grid differently");
   halo->begin_scatter(written);
-  for (int slab_colour = 0; slab_colour < 2; ++slab_colour) {
-    halo->before_round(slab_colour);
-    const std::vector<int>& boundary = halo->boundary_slabs(slab_colour);
-    for (int c = 0; c < per_slab_colour; ++c)
-      detail::scatter_colour(bins, slab_colour * per_slab_colour + c, boundary, false, body);
-    halo->send(slab_colour);
-    std::vector<int> inner;
-    for (int s = slab_colour; s < bins.slab_count; s += 2)
-      if (std::find(boundary.begin(), boundary.end(), s) == boundary.end()) inner.push_back(s);
-    for (int c = 0; c < per_slab_colour; ++c)
-      detail::scatter_colour(bins, slab_colour * per_slab_colour + c, inner, false, body);
+  for (int colour = 0; colour < bins.colours(); ++colour) {
+    halo->before_round(colour);
+    detail::scatter_tiles(bins, halo->boundary_tiles(colour), body);
+    halo->send(colour);
+    detail::scatter_tiles(bins, halo->inner_tiles(colour), body);
   }
   halo->end_scatter();
 }

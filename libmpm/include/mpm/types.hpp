@@ -13,6 +13,13 @@ namespace mpm {
 using Real = double;
 using Index = std::int64_t;
 
+/// A set of grid nodes, one byte per node (1: in the set); without a mask, every node. A distributed run's rank owns
+/// such a set (TileHalo::owned_nodes); sums over nodes take the owned ones so that the ranks' sums add up to one.
+struct NodeMask {
+  const std::uint8_t* mask = nullptr;
+  bool contains(Index n) const { return mask == nullptr || mask[n] != 0; }
+};
+
 template <int Dim>
 using Vec = Eigen::Matrix<Real, Dim, 1>;
 template <int Dim>

@@ -77,7 +77,7 @@ class ReactionRecorder final : public Module<Dim> {
     const auto& g = ctx.grid.geometry;
     ctx.boundary.reactions(face_, ctx.grid.node, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time, ctx.dt,
                            [&](Index n, int c, Real R) {
-                             if (n < ctx.owned_nodes.first || n >= ctx.owned_nodes.second) return;
+                             if (!ctx.owned_nodes.contains(n)) return;
                              force[c] += R;
                              Vec3 r = Vec3::Zero(), f = Vec3::Zero();
                              r.template head<Dim>() = g.node_position(g.node_indices(n));

@@ -1,8 +1,9 @@
 #pragma once
 /// \file rank_report.hpp
-/// `mpm check SCENE --ranks N`: what a distributed run of the scene on N ranks would hold (issue 18), from the
-/// fixed global tiling and its model (tiling.hpp, docs/distributed.md §2): the tiles, the particles and cost per
-/// rank, the largest rank count that gives every rank particles, and the ghost nodes and halo bytes per step.
+/// `mpm check SCENE --ranks N`: what a distributed run of the scene on N ranks would hold (issue 18): the tiles of
+/// the scatter, each rank's box of them as `mpirun` deals them (bisect_tiles, tile_halo.hpp, docs/distributed.md
+/// §5.1), its particles, cost and messages, the largest rank count that gives every rank particles, and the halo
+/// bytes per step (every rank's HaloPlan, the count the MPI tests check against the bytes sent).
 /// Any build prints it (it needs no MPI); more ranks than tiles is refused.
 
 #include <ostream>

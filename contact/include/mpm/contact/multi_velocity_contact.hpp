@@ -170,8 +170,8 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
     std::vector<Vec<Dim>> plane_velocity;
     const GridGeometry<Dim>* geometry = nullptr;  ///< node positions, for the moments of the forces
     /// the nodes whose forces and work this rank sums (all in one process)
-    std::pair<Index, Index> owned{0, std::numeric_limits<Index>::max()};
-    bool owns(Index I) const { return I >= owned.first && I < owned.second; }
+    NodeMask owned{};
+    bool owns(Index I) const { return owned.contains(I); }
   };
   /// The contact correction at every candidate node: two-body nodes (eqs 5.2-5.8), nodes of three or more
   /// bodies, nodes behind a plane; then the force log of the step.

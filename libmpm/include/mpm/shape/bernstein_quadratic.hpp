@@ -33,7 +33,7 @@ struct BernsteinQuadratic {
   static constexpr int support = 3;
   static constexpr int slab_cells = 2;  // one element; slabs start at node 0, so they align with elements
   /// Nodes a slab [sT, (s+1)T) of cells reaches on its axis: [sT - below, (s+1)T - 1 + above] (halo of a
-  /// distributed run, slab_halo.hpp; test ShapeFunctionProperties.SlabThickness).
+  /// distributed run, tile_halo.hpp; test ShapeFunctionProperties.SlabThickness).
   static constexpr int slab_reach_below = 0, slab_reach_above = 1;
   static constexpr int min_cells = 2;      // one element
   static constexpr int cell_multiple = 2;  // every axis needs an even number of cells

@@ -54,7 +54,7 @@ struct Cpdi {
   static constexpr int reach = Reach;
   static constexpr int support = 2 * Reach + 2;
   static constexpr int slab_cells = 2 * support - 3;  // 5 for reach 1 (the GIMP block); typed shape tests
-  // corners' hats (slab_halo.hpp); below: 2 Reach, a short last slab at the upper face reaches that far (test)
+  // corners' hats (tile_halo.hpp); below: 2 Reach, a short last slab at the upper face reaches that far (test)
   static constexpr int slab_reach_below = 2 * Reach, slab_reach_above = Reach + 1;
   static constexpr int min_cells = support - 1;
   static constexpr bool corner_domain = true;

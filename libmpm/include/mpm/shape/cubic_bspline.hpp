@@ -17,7 +17,7 @@ struct CubicBSpline {
   static constexpr int support = 4;
   static constexpr int slab_cells = 5;  // a particle in cell c reaches nodes c-2..c+3 near the faces
   /// Nodes a slab [sT, (s+1)T) of cells reaches on its axis: [sT - below, (s+1)T - 1 + above] (halo of a
-  /// distributed run, slab_halo.hpp; test ShapeFunctionProperties.SlabThickness).
+  /// distributed run, tile_halo.hpp; test ShapeFunctionProperties.SlabThickness).
   static constexpr int slab_reach_below = 2, slab_reach_above = 3;
   static constexpr int min_cells = 4;
   static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)

@@ -75,7 +75,7 @@ struct GimpFunctions {
   static constexpr int support = 4;
   static constexpr int slab_cells = 5;  // nodes c-1..c+2, and c-2..c+1 next to the upper face
   /// Nodes a slab [sT, (s+1)T) of cells reaches on its axis: [sT - below, (s+1)T - 1 + above] (halo of a
-  /// distributed run, slab_halo.hpp; test ShapeFunctionProperties.SlabThickness).
+  /// distributed run, tile_halo.hpp; test ShapeFunctionProperties.SlabThickness).
   static constexpr int slab_reach_below = 2, slab_reach_above = 2;
   static constexpr int min_cells = 3;
   static constexpr bool uses_domain = true;

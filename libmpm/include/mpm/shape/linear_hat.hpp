@@ -15,7 +15,7 @@ struct LinearHat {
   static constexpr int support = 2;     ///< nodes per axis that can be non-zero
   static constexpr int slab_cells = 2;  ///< slab thickness for the race-free scatter (>= nodes reached - 1)
   /// Nodes a slab [sT, (s+1)T) of cells reaches on its axis: [sT - below, (s+1)T - 1 + above] (halo of a
-  /// distributed run, slab_halo.hpp; test ShapeFunctionProperties.SlabThickness).
+  /// distributed run, tile_halo.hpp; test ShapeFunctionProperties.SlabThickness).
   static constexpr int slab_reach_below = 0, slab_reach_above = 1;
   static constexpr int min_cells = 1;         ///< cells an axis needs
   static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)

@@ -45,7 +45,7 @@ struct QuadraticBSpline {
   static constexpr int support = 3;
   static constexpr int slab_cells = 3;  // a particle in cell c reaches nodes c-1..c+2
   /// Nodes a slab [sT, (s+1)T) of cells reaches on its axis: [sT - below, (s+1)T - 1 + above] (halo of a
-  /// distributed run, slab_halo.hpp; test ShapeFunctionProperties.SlabThickness).
+  /// distributed run, tile_halo.hpp; test ShapeFunctionProperties.SlabThickness).
   static constexpr int slab_reach_below = 1, slab_reach_above = 2;
   static constexpr int min_cells = 2;
   static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)

@@ -505,7 +505,7 @@ class HeatConduction final : public Module<Dim> {
           gamma_[i] = source_.evaluate(xyz, ctx.time);
         }
       }
-      // the arrays this scatter adds to: their ghost nodes are exchanged in a distributed run (slab_halo.hpp)
+      // the arrays this scatter adds to: their ghost nodes are exchanged in a distributed run (tile_halo.hpp)
       std::vector<HaloArray> written{HaloArray::of(f.capacity), HaloArray::of(f.heat_content)};
       if (heat_flow) written.push_back(HaloArray::of(f.heat_flow));
       if (heat_flow && area) written.push_back(HaloArray::of(f.area));
