@@ -174,10 +174,8 @@ void MultiVelocityContact<Dim>::after_p2g(StepContext<Dim>& ctx) {
   // The shared grid holds the sum of the bodies' fields (for grid output and any reader of the system), on the
   // nodes this rank's particles reach (all in one process).
   auto& shared = ctx.grid;
-  const Index first = std::min(ctx.active_nodes.first, shared.size()),
-              end = std::min(ctx.active_nodes.second, shared.size());
-  tbb::parallel_for(tbb::blocked_range<Index>(first, end, 1 << 12), [&](const auto& r) {
-    for (Index i = r.begin(); i != r.end(); ++i) {
+  for_each_node_block(shared.size(), ctx.active_nodes, 1 << 12, [&](Index begin, Index end) {
+    for (Index i = begin; i != end; ++i) {
       NodeRecord<Dim>& s = shared.node[i];
       for (int k = 0; k < body_count_; ++k) {
         const NodeRecord<Dim>& o = body_grids_[k].node[i];
@@ -196,10 +194,9 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
   const Real cutoff = ctx.settings.mass_cutoff;
   for (const Index I : candidates_) is_candidate_[I] = 0;
   candidates_.clear();
-  // The nodes this rank's particles reach (all in one process): a body has no mass anywhere else.
+  // The nodes the particles reach (StepContext::active_nodes): a body has no mass anywhere else. In ascending order.
   const Index nodes = g.node_count();
-  const Index first = std::min(ctx.active_nodes.first, nodes), end = std::min(ctx.active_nodes.second, nodes);
-  for (Index I = first; I < end; ++I) {
+  for_each_node_in_order(nodes, ctx.active_nodes, [&](Index I) {
     int present = 0, deformable = 0;
     for (int k = 0; k < body_count_; ++k)
       if (body_grids_[k].node[I].mass > cutoff) {
@@ -216,7 +213,7 @@ void MultiVelocityContact<Dim>::find_candidates(StepContext<Dim>& ctx) {
       is_candidate_[I] = flag;
       candidates_.push_back(I);
     }
-  }
+  });
   if (settings_.onset == Onset::particle_gap) plane_reach(g, ctx.comm);
   bool pairs = false;
   for (const Index I : candidates_) pairs |= (is_candidate_[I] & body_pair) != 0;
@@ -316,14 +313,14 @@ void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage
     Grid<Dim>& own = body_grids_[k];
     if (rigid_of_[k] >= 0) {  // rigid: the prescribed velocity on every node it touches (Alg. 4)
       const VecU<Dim> v = rigid_velocity(rigid_of_[k], t);
-      tbb::parallel_for(tbb::blocked_range<Index>(0, own.size(), 1 << 12), [&](const auto& r) {
-        for (Index i = r.begin(); i != r.end(); ++i)
+      for_each_node_block(own.size(), ctx.active_nodes, 1 << 12, [&](Index begin, Index end) {
+        for (Index i = begin; i != end; ++i)
           own.velocity[i].*member = own.node[i].mass > cutoff ? v : VecU<Dim>::Zero();
       });
       continue;
     }
-    tbb::parallel_for(tbb::blocked_range<Index>(0, own.size(), 1 << 12), [&](const auto& r) {
-      for (Index i = r.begin(); i != r.end(); ++i) {
+    for_each_node_block(own.size(), ctx.active_nodes, 1 << 12, [&](Index begin, Index end) {
+      for (Index i = begin; i != end; ++i) {
         const NodeRecord<Dim>& n = own.node[i];
         NodeVelocity<Dim>& v = own.velocity[i];
         if (!(n.mass > cutoff)) {

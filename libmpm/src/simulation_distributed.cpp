@@ -270,11 +270,14 @@ void Simulation<Dim>::share_report(StabilityReport& report) const {
 }
 
 template <int Dim>
-void Simulation<Dim>::attach(StepContext<Dim>& ctx) const {
-  if (!comm_) return;
+void Simulation<Dim>::attach(StepContext<Dim>& ctx) {
+  if (!comm_) {
+    if (settings_.sparse_grid) ctx.active_tiles = &active_tiles_;
+    return;
+  }
   ctx.comm = comm_.get();
   ctx.owned_nodes = halo_->owned_nodes();
-  ctx.active_nodes = halo_->reached_nodes();
+  ctx.active_nodes = halo_->held_nodes();
 }
 
 #define MPM_SIMULATION_DISTRIBUTED(D)                                              \
@@ -289,7 +292,7 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) const {
   template void Simulation<D>::rebalance();                                        \
   template void Simulation<D>::use_owners(const std::vector<int>&);                \
   template void Simulation<D>::share_report(StabilityReport&) const;               \
-  template void Simulation<D>::attach(StepContext<D>&) const;
+  template void Simulation<D>::attach(StepContext<D>&);
 MPM_SIMULATION_DISTRIBUTED(1)
 MPM_SIMULATION_DISTRIBUTED(2)
 MPM_SIMULATION_DISTRIBUTED(3)

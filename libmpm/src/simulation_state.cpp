@@ -201,6 +201,7 @@ std::vector<std::string> Simulation<Dim>::restore_state(const StateArchive& arch
   for (int d = 0; d < Dim; ++d) wave_speed_.max_speed[d] = speed[d];
   wave_speed_.finite = archive.integer("simulation/wave_speed_finite") != 0;
   for (const auto& m : hooks_.all()) m->restore_state(archive, module_prefix(*m));
+  active_tiles_.forget();  // the grid holds what this simulation wrote before, not the archive's step: one dense step
   take_snapshot();
   return notes;
 }

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "mpm/tile_binning.hpp"
 
@@ -145,7 +146,6 @@ HaloPlan plan_halo(const TileGrid& grid, std::span<const int> owner, int rank) {
   const auto node_index = [&](const std::array<int, 3>& k) {
     return k[0] + Index{grid.nodes[0]} * (k[1] + Index{grid.nodes[1]} * k[2]);
   };
-  plan.reached = {node_index(node_lo), node_index(node_hi) + 1};
   plan.owned.assign(static_cast<std::size_t>(grid.node_count()), 0);
 
   // Every node this rank holds, in ascending order: its writers in colour order, and who sends it after which.
@@ -162,11 +162,7 @@ HaloPlan plan_halo(const TileGrid& grid, std::span<const int> owner, int rank) {
       for (k[0] = node_lo[0]; k[0] <= node_hi[0]; ++k[0]) {
         // Writers per axis: the tiles t with t w - B <= k <= (t + 1) w - 1 + A.
         std::array<int, 3> first{0, 0, 0}, last{0, 0, 0};
-        for (int d = 0; d < grid.dim; ++d) {
-          const int w = grid.tile_cells[d];
-          first[d] = std::max(0, (k[d] - grid.reach_above) >= 0 ? (k[d] - grid.reach_above) / w : -1);
-          last[d] = std::min(grid.tiles[d] - 1, (k[d] + grid.reach_below) / w);
-        }
+        for (int d = 0; d < grid.dim; ++d) std::tie(first[d], last[d]) = grid.writers(d, k[d]);
         std::array<Writer, 8> writers{};
         int count = 0;
         bool held = false;
@@ -180,6 +176,10 @@ HaloPlan plan_halo(const TileGrid& grid, std::span<const int> owner, int rank) {
             }
         if (!held) continue;
         const Index n = node_index(k);
+        if (!plan.held.empty() && plan.held.back().second == n)
+          ++plan.held.back().second;
+        else
+          plan.held.emplace_back(n, n + 1);
         std::array<int, 3> own_tile{};
         for (int d = 0; d < 3; ++d) own_tile[d] = d < grid.dim ? grid.tile_of_node(d, k[d]) : 0;
         if (owner[static_cast<std::size_t>(grid.index(own_tile))] == rank) plan.owned[static_cast<std::size_t>(n)] = 1;

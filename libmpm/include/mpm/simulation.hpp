@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/active_tiles.hpp"
 #include "mpm/communicator.hpp"
 #include "mpm/energy.hpp"
 #include "mpm/module.hpp"
@@ -33,6 +34,9 @@ struct SimulationSettings {
   /// Distributed run: steps between checks of the balance; when the most loaded rank's cost exceeds the mean by
   /// more than 10%, the tiles are dealt anew (`mpm run --rebalance-every`; 0: never).
   int rebalance_interval = 50;
+  /// One process: the grid kernels visit only the nodes the particles of the occupied tiles reach (active_tiles.hpp;
+  /// the same bits as the dense grid, test SparseGrid.*). False: every node every step (the reference).
+  bool sparse_grid = true;
 };
 
 template <int Dim>
@@ -69,6 +73,14 @@ class Simulation {
   std::size_t halo_bytes_sent() const { return halo_bytes_before_ + (halo_ ? halo_->bytes_sent() : 0); }
   /// Steps between balance checks of a distributed run (SimulationSettings::rebalance_interval; 0: never).
   void set_rebalance_interval(int steps) { settings_.rebalance_interval = steps; }
+  /// One process: whether the grid kernels visit only the nodes the particles reach (SimulationSettings::sparse_grid;
+  /// the same bits either way). From the next step.
+  void use_sparse_grid(bool on) {
+    settings_.sparse_grid = on;
+    active_tiles_.forget();
+  }
+  /// The occupied tiles of the last step and the nodes the grid kernels visited (one process, sparse_grid).
+  const ActiveTiles& active_tiles() const { return active_tiles_; }
   /// The owner of each tile that balances the particles of all ranks: boxes of tiles by recursive bisection
   /// (bisect_tiles; a collective call).
   std::vector<int> balanced_owners() const;
@@ -181,8 +193,8 @@ class Simulation {
   void use_owners(const std::vector<int>& owner);
   /// Distributed run: the failing particle's report, from the lowest rank that found one.
   void share_report(StabilityReport& report) const;
-  /// The step context's view of the distribution.
-  void attach(StepContext<Dim>& ctx) const;
+  /// The step context's view of the distribution (a distributed run) or of the occupied tiles (one process).
+  void attach(StepContext<Dim>& ctx);
 
   Grid<Dim> grid_;
   std::vector<Body<Dim>> bodies_;
@@ -202,6 +214,7 @@ class Simulation {
   StepProfile profile_;
   std::shared_ptr<Communicator> comm_;  ///< null in one process
   std::unique_ptr<TileHalo> halo_;
+  ActiveTiles active_tiles_;           ///< one process, sparse_grid: the occupied tiles of the last step
   std::size_t halo_bytes_before_ = 0;  ///< sent by the halos of earlier tile assignments
 };
 

@@ -3,19 +3,20 @@
 /// Everything one time step reads and writes, handed to the scheme and to the modules' phases.
 
 #include <atomic>
-#include <limits>
 #include <utility>
 #include <vector>
 
 #include "mpm/body.hpp"
 #include "mpm/boundary_conditions.hpp"
 #include "mpm/communicator.hpp"
+#include "mpm/node_runs.hpp"
 #include "mpm/step_profile.hpp"
 
 namespace mpm {
 
 template <int Dim>
 class ModuleHooks;
+class ActiveTiles;
 
 /// Settings of the transfers that do not change during a run.
 template <int Dim>
@@ -51,9 +52,13 @@ struct StepContext {
   Communicator* comm = nullptr;
   /// The nodes this rank owns (TileHalo::owned_nodes): every node in one process.
   NodeMask owned_nodes{};
-  /// A range of nodes holding every node this rank's particles can reach, [first, end) (TileHalo::reached_nodes): the
-  /// grid kernels reset and update only these. Every node in one process.
-  std::pair<Index, Index> active_nodes{0, std::numeric_limits<Index>::max()};
+  /// The nodes the grid kernels reset and update (node_runs.hpp): in one process the nodes the particles of this
+  /// step's and the previous step's tiles reach (set when the scheme bins the particles, from `active_tiles`), in a
+  /// distributed run the nodes the rank holds (TileHalo::held_nodes); every node until then, and for schemes that do
+  /// not bin (TLMPM, implicit).
+  NodeRuns active_nodes{};
+  /// One process: the occupied tiles kept from step to step (Simulation's; null: a dense grid, every node).
+  ActiveTiles* active_tiles = nullptr;
 };
 
 }  // namespace mpm

@@ -24,6 +24,7 @@
 
 #include "mpm/communicator.hpp"
 #include "mpm/grid.hpp"
+#include "mpm/node_runs.hpp"
 #include "mpm/types.hpp"
 
 namespace mpm {
@@ -67,6 +68,13 @@ struct TileGrid {
   /// The tile coordinate on axis d whose cells start at or below node k (the grid's last node: the last tile), the
   /// owner of the node on that axis.
   int tile_of_node(int d, int k) const { return std::min(k / tile_cells[d], tiles[d] - 1); }
+  /// The tile coordinates on axis d whose particles can reach node k, [first, last]: the tiles c with
+  /// c w - below <= k <= (c + 1) w - 1 + above.
+  std::pair<int, int> writers(int d, int k) const {
+    const int w = tile_cells[d];
+    return {k - reach_above >= 0 ? (k - reach_above) / w : 0, std::min(tiles[d] - 1, (k + reach_below) / w)};
+  }
+  bool operator==(const TileGrid&) const = default;
 };
 
 /// The tiles of the scatter on grid `g` for a shape function of slab `slab_cells` and reach (below, above).
@@ -98,8 +106,8 @@ struct HaloPlan {
   /// Per colour: this rank's tiles that write a node it sends after that colour (scattered first, so that their
   /// messages leave while the others scatter), and its other tiles.
   std::array<std::vector<Index>, 8> boundary_tiles, inner_tiles;
-  std::pair<Index, Index> reached{0, 0};  ///< linear range holding every node this rank's tiles reach
-  std::vector<std::uint8_t> owned;        ///< per node of the grid: 1 where the node's tile is this rank's
+  std::vector<NodeRun> held;        ///< the nodes this rank's tiles reach (its grid kernels visit these)
+  std::vector<std::uint8_t> owned;  ///< per node of the grid: 1 where the node's tile is this rank's
   /// Whether this rank's tiles are exactly a box of tile coordinates; `cell_box` is then its cells, [lo, hi) per axis.
   bool is_box = false;
   std::array<std::pair<int, int>, 3> cell_box{};
@@ -131,9 +139,9 @@ class TileHalo {
   /// it on every axis. Sums over nodes (boundary work, reactions, the output's grid) take owned nodes only.
   bool owns_node(Index n) const { return plan_.owned[static_cast<std::size_t>(n)] != 0; }
   NodeMask owned_nodes() const { return {plan_.owned.data()}; }
-  /// A linear range of nodes holding every node this rank's particles can reach: the grid kernels reset and update
-  /// only these (a rank's grid outside them is never read).
-  std::pair<Index, Index> reached_nodes() const { return plan_.reached; }
+  /// The nodes this rank's particles can reach: the grid kernels reset and update only these (a rank's grid outside
+  /// them is never read).
+  NodeRuns held_nodes() const { return NodeRuns::of(plan_.held); }
   const std::vector<Index>& boundary_tiles(int colour) const { return plan_.boundary_tiles[colour]; }
   const std::vector<Index>& inner_tiles(int colour) const { return plan_.inner_tiles[colour]; }
 

@@ -18,13 +18,9 @@ template <int Dim, class Shape, class Coords = CartesianCoordinates>
 void map_and_update_grid(StepContext<Dim>& ctx) {
   {
     PhaseTimer timer(ctx.profile, StepPhase::p2g);
-    const auto& g = ctx.grid.geometry;
-    for (auto& body : ctx.bodies) {
-      bin_by_tile(body.particles, g, Shape::slab_cells, body.bins);
-      if (body.bins.outside >= 0) ctx.guard_tripped = true;
-    }
+    bin_bodies<Dim, Shape>(ctx);
     reset_grid(ctx.grid, ctx.active_nodes);
-    reset_own_grids(ctx.bodies);
+    reset_own_grids(ctx.bodies, ctx.active_nodes);
     for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape, true, true, Coords>(body, ctx.grid);
   }
   PhaseTimer timer(ctx.profile, StepPhase::grid_update);

@@ -36,9 +36,9 @@ class Musl final : public ShapedScheme<Dim, Shape> {
   }
 
  private:
-  static void clear_momentum(Grid<Dim>& grid, std::pair<Index, Index> range) {
-    tbb::parallel_for(kernels::node_range(grid, range, 1 << 14), [&](const auto& r) {
-      for (Index i = r.begin(); i != r.end(); ++i) grid.node[i].momentum.setZero();
+  static void clear_momentum(Grid<Dim>& grid, NodeRuns nodes) {
+    for_each_node_block(grid.size(), nodes, 1 << 14, [&](Index begin, Index end) {
+      for (Index i = begin; i != end; ++i) grid.node[i].momentum.setZero();
     });
   }
 
@@ -102,8 +102,8 @@ class Musl final : public ShapedScheme<Dim, Shape> {
   static void remapped_velocity(StepContext<Dim>& ctx) {
     auto& grid = ctx.grid;
     const Real cutoff = ctx.settings.mass_cutoff;
-    tbb::parallel_for(kernels::node_range(grid, ctx.active_nodes, 1 << 12), [&](const auto& r) {
-      for (Index i = r.begin(); i != r.end(); ++i) {
+    for_each_node_block(grid.size(), ctx.active_nodes, 1 << 12, [&](Index begin, Index end) {
+      for (Index i = begin; i != end; ++i) {
         const NodeRecord<Dim>& n = grid.node[i];
         if (n.mass > cutoff)
           grid.velocity[i].mapped = n.momentum / n.mass;

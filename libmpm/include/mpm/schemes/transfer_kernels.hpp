@@ -13,6 +13,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "mpm/active_tiles.hpp"
 #include "mpm/axisymmetric.hpp"
 #include "mpm/field_keys.hpp"
 #include "mpm/shape/linear_hat.hpp"
@@ -21,17 +22,11 @@
 
 namespace mpm::kernels {
 
-/// The nodes [first, end) of `range` that exist in `grid` (StepContext::active_nodes: all in one process).
+/// Zeroes mass, momentum and force of every node (of `nodes`: StepContext::active_nodes).
 template <int Dim>
-tbb::blocked_range<Index> node_range(const Grid<Dim>& grid, std::pair<Index, Index> range, Index grain) {
-  return {std::min(range.first, grid.size()), std::min(range.second, grid.size()), static_cast<std::size_t>(grain)};
-}
-
-/// Zeroes mass, momentum and force of every node (of `range`: a distributed run's reached nodes).
-template <int Dim>
-void reset_grid(Grid<Dim>& grid, std::pair<Index, Index> range = {0, std::numeric_limits<Index>::max()}) {
-  tbb::parallel_for(node_range(grid, range, 1 << 14), [&](const auto& r) {
-    std::memset(static_cast<void*>(grid.node.data() + r.begin()), 0, sizeof(NodeRecord<Dim>) * r.size());
+void reset_grid(Grid<Dim>& grid, NodeRuns nodes = {}) {
+  for_each_node_block(grid.size(), nodes, 1 << 14, [&](Index begin, Index end) {
+    std::memset(static_cast<void*>(grid.node.data() + begin), 0, sizeof(NodeRecord<Dim>) * (end - begin));
   });
 }
 
@@ -47,9 +42,27 @@ inline const Grid<Dim>& grid_of(const Body<Dim>& body, const Grid<Dim>& shared) 
 
 /// Zeroes the bodies' own nodal arrays (contact), when they have any.
 template <int Dim>
-void reset_own_grids(std::vector<Body<Dim>>& bodies) {
+void reset_own_grids(std::vector<Body<Dim>>& bodies, NodeRuns nodes = {}) {
   for (auto& body : bodies)
-    if (body.own_grid) reset_grid(*body.own_grid);
+    if (body.own_grid) reset_grid(*body.own_grid, nodes);
+}
+
+/// Bins every body's particles by tile (a particle outside the grid trips the guard) and, in one process with
+/// sparse tiles (ctx.active_tiles), makes ctx.active_nodes the nodes the particles of this step's and the previous
+/// step's tiles reach (active_tiles.hpp). Before the grid is reset: the reset visits those nodes.
+template <int Dim, class Shape>
+void bin_bodies(StepContext<Dim>& ctx) {
+  const auto& g = ctx.grid.geometry;
+  for (auto& body : ctx.bodies) {
+    bin_by_tile(body.particles, g, Shape::slab_cells, body.bins);
+    if (body.bins.outside >= 0) ctx.guard_tripped = true;
+  }
+  if (!ctx.active_tiles) return;
+  std::vector<const TileBins*> bins;
+  bins.reserve(ctx.bodies.size());
+  for (const auto& body : ctx.bodies) bins.push_back(&body.bins);
+  ctx.active_nodes = ctx.active_tiles->update(
+      make_tile_grid(g, Shape::slab_cells, Shape::slab_reach_below, Shape::slab_reach_above), bins);
 }
 
 /// The on-demand particle field "body_force" (acceleration b_p, m/s^2, set by a module before the step),
@@ -257,10 +270,9 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
 /// Nodal velocities before and after the momentum update (eqs 2.49-2.50 with the cut-off 2.63):
 /// mapped = (mv)/m, updated = (mv + dt (f + m g))/m. Nodes lighter than the cut-off get zero.
 template <int Dim>
-void update_grid_velocity(Grid<Dim>& grid, const TransferSettings<Dim>& s, Real dt,
-                          std::pair<Index, Index> range = {0, std::numeric_limits<Index>::max()}) {
-  tbb::parallel_for(node_range(grid, range, 1 << 12), [&](const auto& r) {
-    for (Index i = r.begin(); i != r.end(); ++i) {
+void update_grid_velocity(Grid<Dim>& grid, const TransferSettings<Dim>& s, Real dt, NodeRuns nodes = {}) {
+  for_each_node_block(grid.size(), nodes, 1 << 12, [&](Index begin, Index end) {
+    for (Index i = begin; i != end; ++i) {
       const NodeRecord<Dim>& n = grid.node[i];
       NodeVelocity<Dim>& v = grid.velocity[i];
       if (n.mass > s.mass_cutoff) {

@@ -23,12 +23,9 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     auto& grid = ctx.grid;
     {
       PhaseTimer timer(ctx.profile, StepPhase::p2g);
-      for (auto& body : ctx.bodies) {
-        bin_by_tile(body.particles, grid.geometry, Shape::slab_cells, body.bins);
-        if (body.bins.outside >= 0) ctx.guard_tripped = true;
-      }
+      kernels::bin_bodies<Dim, Shape>(ctx);
       kernels::reset_grid(grid, ctx.active_nodes);
-      kernels::reset_own_grids(ctx.bodies);
+      kernels::reset_own_grids(ctx.bodies, ctx.active_nodes);
       for (auto& body : ctx.bodies) kernels::particles_to_grid<Dim, Shape, true, false, Coords>(body, grid);
     }
     {
@@ -86,8 +83,8 @@ class Usf final : public ShapedScheme<Dim, Shape> {
   /// updated = mapped + dt (f/m + g), with the small-mass cut-off.
   static void momentum_update(StepContext<Dim>& ctx) {
     auto& grid = ctx.grid;
-    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
-      for (Index i = r.begin(); i != r.end(); ++i) {
+    for_each_node_block(grid.size(), ctx.active_nodes, 1 << 12, [&](Index begin, Index end) {
+      for (Index i = begin; i != end; ++i) {
         const NodeRecord<Dim>& n = grid.node[i];
         NodeVelocity<Dim>& v = grid.velocity[i];
         if (n.mass > ctx.settings.mass_cutoff)
