@@ -286,6 +286,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     fmt::print(log, "warning: {}\n", message);
   };
 
+  constexpr unsigned checkpoint_due = 1, stop_requested = 2;  // Simulation::step_flags
   const auto start = Clock::now();
   const Index first_step = sim->step();  // 0, or the step a restart continues
   auto last_print = start;
@@ -295,13 +296,11 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     check_energy(s);
     if (s.step() % 50 == 0) check_state(s);
     // A wall-clock checkpoint interval expires, and a signal arrives, at different steps on the ranks: all write
-    // when any is due and all stop after the step where any one received a signal; both flags in one reduction.
-    debug_raise_at_step(s.step());  // the tests' signal "during" this step
+    // when any is due and all stop after the step where any one received a signal. Both flags were asked at the end
+    // of the step (step_flags below) and merged over the ranks in the step's own reduction.
     debug_fail_at_step(comm ? comm->rank() : 0, s.step());
-    std::array<double, 2> due{checkpoints.due(s.time()) ? 1.0 : 0.0, StopSignals::requested() != 0 ? 1.0 : 0.0};
-    if (comm) comm->max(due);
-    if (due[0] != 0) write_checkpoint(s);
-    if (due[1] != 0) throw StopRequested{};
+    if (s.step_flags() & checkpoint_due) write_checkpoint(s);
+    if (s.step_flags() & stop_requested) throw StopRequested{};
     if (!options.progress) return;
     const auto now = Clock::now();
     if (now - last_print < std::chrono::milliseconds(500)) return;
@@ -316,6 +315,14 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
     log.flush();
   };
   try {
+    sim->set_step_flags([&](Index step, Real time) {
+      debug_raise_at_step(step);  // the tests' signal "during" this step
+      return (checkpoints.due(time) ? checkpoint_due : 0u) | (StopSignals::requested() != 0 ? stop_requested : 0u);
+    });
+    struct Unset {  // the replays of the flight recorder and the last frame's writes ask no flags
+      Simulation<Dim>& sim;
+      ~Unset() { sim.set_step_flags({}); }
+    } unset{*sim};
     sim->run(after_step, options.steps ? std::optional<Index>(*options.steps) : std::nullopt);
   } catch (const StabilityError& e) {
     writer.write(*sim);  // the simulation was rolled back to the last good step

@@ -40,6 +40,10 @@ namespace {
 /// sum over the bodies of m_p b_p . v_p, or 0 when no body carries the field "body_force".
 template <int Dim>
 Real body_force_power(const std::vector<Body<Dim>>& bodies, Communicator* comm) {
+  // Whether a body has the field is the same on every rank (the layout is the scene's): without one, no reduction.
+  if (std::none_of(bodies.begin(), bodies.end(),
+                   [](const Body<Dim>& b) { return b.particles.has_field(keys::body_force<Dim>); }))
+    return 0;
   ExactSum power;
   for (const auto& b : bodies) {
     const auto& p = b.particles;
@@ -71,6 +75,7 @@ void EnergySentinel<Dim>::before_step(StepContext<Dim>& ctx) {
 template <int Dim>
 void EnergySentinel<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) {
   if (stage != GridStage::updated) return;  // the nodal forces of the step are final here in every scheme
+  if (!ctx.boundary.does_work()) return;    // held faces at rest, no traction: zero on every rank, no reduction
   ExactSum work = ctx.boundary.work(ctx.grid.node, ctx.grid.velocity, ctx.settings.gravity, ctx.settings.mass_cutoff,
                                     ctx.time, ctx.dt, ctx.owned_nodes);
   if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(&work, 1));  // each rank summed the nodes it owns

@@ -123,17 +123,28 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   scheme_->advance(ctx);
   hooks_.end_of_step(ctx);
   bool tripped = ctx.guard_tripped.load();
+  unsigned flags = step_flags_fn_ ? step_flags_fn_(step_ + 1, time_ + dt) : 0u;
+  bool migrating = false;
   if (comm_) {  // the roll-back is collective: every rank replays the same steps
-    // One reduction for both: the wave-speed bound (as reduce_wave_speed) and the guard's flag (a max of 0 and 1).
-    std::array<double, Dim + 2> v{};
+    // The step's one reduction (a max): the wave-speed bound (as reduce_wave_speed), the guard's flag, whether any
+    // particle must migrate (no rank has a leaver on most steps: then no all-to-all either), and the caller's flags
+    // (set_step_flags), each flag a max of 0 and 1.
+    std::array<double, Dim + 3 + step_flag_bits> v{};
     for (int d = 0; d < Dim; ++d) v[d] = ctx.wave_speed.max_speed[d];
     v[Dim] = ctx.wave_speed.finite ? 0 : 1;
     v[Dim + 1] = tripped ? 1 : 0;
+    v[Dim + 2] = !tripped && scheme_->reorders_particles() && has_leavers() ? 1 : 0;
+    for (int b = 0; b < step_flag_bits; ++b) v[Dim + 3 + b] = (flags >> b) & 1u;
     comm_->max(v);
     for (int d = 0; d < Dim; ++d) ctx.wave_speed.max_speed[d] = v[d];
     ctx.wave_speed.finite = v[Dim] == 0;
     tripped = v[Dim + 1] != 0;
+    migrating = v[Dim + 2] != 0;
+    flags = 0;
+    for (int b = 0; b < step_flag_bits; ++b)
+      if (v[Dim + 3 + b] != 0) flags |= 1u << b;
   }
+  step_flags_ = flags;
   if (guard && tripped) {
     failure_ = std::make_unique<Snapshot>(snapshot_);  // for the flight recorder (replay_failure)
     failure_->dts_since.push_back(dt);
@@ -151,7 +162,7 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
     // TLMPM's particles belong to the rank of their reference position: they never migrate, its balance never
     // decays.
     if (scheme_->reorders_particles()) {
-      {
+      if (migrating) {
         PhaseTimer timer(ctx.profile, StepPhase::migrate);
         migrate();
       }

@@ -157,23 +157,38 @@ void Simulation<Dim>::reassign_tiles(std::vector<int> owner) {
 }
 
 template <int Dim>
+bool Simulation<Dim>::keeps(const VecU<Dim>& x) const {
+  const auto& g = grid_.geometry;
+  const HaloPlan& plan = halo_->plan();
+  // A rank that owns a box of tiles (the bisection's) keeps a particle exactly when its cell lies in the box's cells
+  // on every axis: no lookup of the tile's owner for the particles that stay.
+  if (!plan.is_box)
+    return halo_->owners()[static_cast<std::size_t>(tile_of<Dim>(x, g, halo_->tiles()))] == comm_->rank();
+  bool in = true;
+  for (int d = 0; d < Dim; ++d) {
+    const int c = cell_on_axis<Dim>(x, g, d);
+    in = in && c >= plan.cell_box[d].first && c < plan.cell_box[d].second;
+  }
+  return in;
+}
+
+template <int Dim>
+bool Simulation<Dim>::has_leavers() const {
+  for (const auto& b : bodies_) {
+    const VecU<Dim>* x = owner_positions(*scheme_, b.particles);
+    for (Index i = 0, n = b.particles.size(); i < n; ++i)
+      if (!keeps(x[i])) return true;
+  }
+  return false;
+}
+
+template <int Dim>
 bool Simulation<Dim>::migrate() {
   const auto& g = grid_.geometry;
   const TileGrid& tiles = halo_->tiles();
-  const HaloPlan& plan = halo_->plan();
   const std::vector<int>& owner = halo_->owners();
   const int me = comm_->rank(), ranks = comm_->size();
-  // A rank that owns a box of tiles (the bisection's) keeps a particle exactly when its cell lies in the box's cells
-  // on every axis: no lookup of the tile's owner for the particles that stay.
-  const auto stays = [&](const VecU<Dim>& x) {
-    if (!plan.is_box) return owner[static_cast<std::size_t>(tile_of<Dim>(x, g, tiles))] == me;
-    bool in = true;
-    for (int d = 0; d < Dim; ++d) {
-      const int c = cell_on_axis<Dim>(x, g, d);
-      in = in && c >= plan.cell_box[d].first && c < plan.cell_box[d].second;
-    }
-    return in;
-  };
+  const auto stays = [&](const VecU<Dim>& x) { return keeps(x); };
   bool moved = false;
   for (auto& b : bodies_) {
     auto& p = b.particles;
@@ -288,6 +303,8 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) {
   template void Simulation<D>::reassign_tiles(std::vector<int>);                   \
   template TileGrid Simulation<D>::tile_grid() const;                              \
   template bool Simulation<D>::migrate();                                          \
+  template bool Simulation<D>::has_leavers() const;                                \
+  template bool Simulation<D>::keeps(const VecU<D>&) const;                        \
   template std::vector<double> Simulation<D>::tile_costs() const;                  \
   template void Simulation<D>::rebalance();                                        \
   template void Simulation<D>::use_owners(const std::vector<int>&);                \

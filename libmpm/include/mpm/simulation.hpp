@@ -79,6 +79,14 @@ class Simulation {
     settings_.sparse_grid = on;
     active_tiles_.forget();
   }
+  /// Flags of the caller that every rank must agree on after a step (the run loop: a checkpoint is due, a stop signal
+  /// arrived): `flags(step, time)` is asked at the end of each step (its number and the time it reached), before the
+  /// step's reduction, and step_flags() is then the bitwise OR over the ranks of its lowest `step_flag_bits` bits. They
+  /// travel in the step's one reduction with the wave speed, the guard's flag and the migration's (docs/distributed.md
+  /// §5.4). An empty function: no flags.
+  static constexpr int step_flag_bits = 4;
+  void set_step_flags(std::function<unsigned(Index step, Real time)> flags) { step_flags_fn_ = std::move(flags); }
+  unsigned step_flags() const { return step_flags_; }
   /// The occupied tiles of the last step and the nodes the grid kernels visited (one process, sparse_grid).
   const ActiveTiles& active_tiles() const { return active_tiles_; }
   /// The owner of each tile that balances the particles of all ranks: boxes of tiles by recursive bisection
@@ -187,6 +195,10 @@ class Simulation {
   /// Returns whether a particle left or arrived on this rank (the all-to-all is collective, the answer is not: a
   /// caller that needs every rank's takes the `any`; the step's migration does not, saving a reduction per step).
   bool migrate();
+  /// Distributed run: whether a particle of this rank now lies in another rank's tile (migrate() would send it).
+  bool has_leavers() const;
+  /// Distributed run: whether this rank owns the tile of a particle at x.
+  bool keeps(const VecU<Dim>& x) const;
   /// Distributed run: deals the tiles anew when the most loaded rank exceeds the mean by more than 10%.
   void rebalance();
   /// Distributed run: the halo of the tile assignment `owner` (a restored snapshot's), without migrating.
@@ -214,7 +226,9 @@ class Simulation {
   StepProfile profile_;
   std::shared_ptr<Communicator> comm_;  ///< null in one process
   std::unique_ptr<TileHalo> halo_;
-  ActiveTiles active_tiles_;           ///< one process, sparse_grid: the occupied tiles of the last step
+  ActiveTiles active_tiles_;
+  std::function<unsigned(Index, Real)> step_flags_fn_;
+  unsigned step_flags_ = 0;            ///< one process, sparse_grid: the occupied tiles of the last step
   std::size_t halo_bytes_before_ = 0;  ///< sent by the halos of earlier tile assignments
 };
 
