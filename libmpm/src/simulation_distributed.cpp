@@ -188,7 +188,6 @@ bool Simulation<Dim>::migrate() {
   const TileGrid& tiles = halo_->tiles();
   const std::vector<int>& owner = halo_->owners();
   const int me = comm_->rank(), ranks = comm_->size();
-  const auto stays = [&](const VecU<Dim>& x) { return keeps(x); };
   bool moved = false;
   for (auto& b : bodies_) {
     auto& p = b.particles;
@@ -196,7 +195,7 @@ bool Simulation<Dim>::migrate() {
     const Index n = p.size();
     // Most steps no particle leaves: one pass that only reads the positions finds the first that does.
     Index first_leaving = 0;
-    while (first_leaving < n && stays(x[first_leaving])) ++first_leaving;
+    while (first_leaving < n && keeps(x[first_leaving])) ++first_leaving;
     std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(ranks));
     std::vector<Index> keep;
     if (first_leaving < n) {
@@ -204,7 +203,7 @@ bool Simulation<Dim>::migrate() {
       for (Index i = 0; i < first_leaving; ++i) keep[static_cast<std::size_t>(i)] = i;
       keep.reserve(static_cast<std::size_t>(n));
       for (Index i = first_leaving; i < n; ++i) {
-        if (stays(x[i])) {
+        if (keeps(x[i])) {
           keep.push_back(i);
           continue;
         }
