@@ -336,7 +336,7 @@ void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage
     });
     // The body's own face conditions (contact.body_boundaries) instead of the scene's, if it has them.
     const GridBoundary<Dim>& boundary = body_boundary_[k] ? *body_boundary_[k] : ctx.boundary;
-    if (!boundary.empty()) boundary.apply(own.velocity, member, t);
+    if (!boundary.empty()) boundary.apply(own.velocity, member, t, ctx.active_nodes);
   }
 }
 

@@ -54,10 +54,28 @@ void reached_node_runs(const TileGrid& grid, std::span<const std::uint8_t> marke
   }
 }
 
+namespace {
+
+/// The maximal stretches of [0, nodes) outside `runs` (ascending, disjoint) that hold a node of `before`.
+void stretches_left(const std::vector<NodeRun>& runs, const std::vector<NodeRun>& before, Index nodes,
+                    std::vector<NodeRun>& left) {
+  left.clear();
+  auto b = before.begin();
+  Index gap_first = 0;
+  for (std::size_t k = 0; k <= runs.size(); ++k) {
+    const Index gap_end = k < runs.size() ? runs[k].first : nodes;
+    while (b != before.end() && b->second <= gap_first) ++b;  // runs of `before` wholly below the gap
+    if (gap_end > gap_first && b != before.end() && b->first < gap_end) left.emplace_back(gap_first, gap_end);
+    if (k < runs.size()) gap_first = runs[k].second;
+  }
+}
+
+}  // namespace
+
 NodeRuns ActiveTiles::update(const TileGrid& grid, std::span<const TileBins* const> bins) {
   const auto tiles = static_cast<std::size_t>(grid.tile_count());
-  const bool same_tiling = known_ && grid == grid_;
-  if (!same_tiling) now_.assign(tiles, 0);
+  const bool same_tiling = known_ && (zero_ || grid == grid_);
+  if (!same_tiling || zero_) now_.assign(tiles, 0);
   either_ = now_;  // the previous step's marks (zero when unknown)
   std::fill(now_.begin(), now_.end(), 0);
   for (const TileBins* b : bins) {
@@ -67,10 +85,23 @@ NodeRuns ActiveTiles::update(const TileGrid& grid, std::span<const TileBins* con
       if (b->offsets[t + 1] > b->offsets[t]) now_[t] = 1;
   }
   for (std::size_t t = 0; t < tiles; ++t) either_[t] |= now_[t];
+  // What the kernels visited at the previous step: every node after a dense step, nothing on a zero grid.
+  previous_.clear();
+  if (known_ && !zero_) {
+    if (dense_)
+      previous_.emplace_back(0, grid_.node_count());
+    else
+      previous_.swap(runs_);
+  }
   grid_ = grid;
   dense_ = !same_tiling;
   known_ = true;
-  if (!dense_) reached_node_runs(grid, either_, runs_);
+  zero_ = false;
+  left_.clear();
+  if (!dense_) {
+    reached_node_runs(grid, either_, runs_);
+    stretches_left(runs_, previous_, grid.node_count(), left_);
+  }
   return nodes();
 }
 

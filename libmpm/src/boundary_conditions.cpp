@@ -53,11 +53,11 @@ template <int Dim>
 GridBoundary<Dim>& GridBoundary<Dim>::operator=(GridBoundary&&) noexcept = default;
 
 template <int Dim>
-void GridBoundary<Dim>::apply(std::vector<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member,
-                              Real t) const {
+void GridBoundary<Dim>::apply(NodeArray<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member, Real t,
+                              NodeRuns nodes) const {
   for (const auto& k : constraints_) {
     const Real value = k.value ? (*k.value)(0, 0, 0, t) : 0;  // evaluated once per face, not per node
-    for (Index n : k.nodes) (velocity[n].*member)[k.component] = value;
+    for_each_listed_node(k.nodes, nodes, [&](std::size_t j) { (velocity[k.nodes[j]].*member)[k.component] = value; });
   }
 }
 
@@ -69,29 +69,30 @@ bool GridBoundary<Dim>::constrains_face(int face) const {
 }
 
 template <int Dim>
-void GridBoundary<Dim>::reactions(int face, const std::vector<NodeRecord<Dim>>& node, const Vec<Dim>& gravity,
-                                  Real mass_cutoff, Real t, Real dt,
-                                  const std::function<void(Index, int, Real)>& f) const {
+void GridBoundary<Dim>::reactions(int face, const NodeArray<NodeRecord<Dim>>& node, const Vec<Dim>& gravity,
+                                  Real mass_cutoff, Real t, Real dt, const std::function<void(Index, int, Real)>& f,
+                                  NodeRuns nodes) const {
   for (const auto& k : constraints_) {
     if (k.face != face) continue;
     // The prescribed acceleration over the step (zero for a constant velocity).
     const Real a = k.value ? ((*k.value)(0, 0, 0, t + dt) - (*k.value)(0, 0, 0, t)) / dt : 0;
     const int c = k.component;
-    for (Index n : k.nodes) {
+    for_each_listed_node(k.nodes, nodes, [&](std::size_t j) {
+      const Index n = k.nodes[j];
       const NodeRecord<Dim>& r = node[n];
       if (r.mass > mass_cutoff) f(n, c, r.mass * a - (r.force[c] + r.mass * gravity[c]));
-    }
+    });
   }
 }
 
 template <int Dim>
-void GridBoundary<Dim>::apply_traction(std::vector<NodeRecord<Dim>>& node, Real t) const {
+void GridBoundary<Dim>::apply_traction(NodeArray<NodeRecord<Dim>>& node, Real t, NodeRuns nodes) const {
   for (const auto& k : tractions_) {
     const Real value = (*k.value)(0, 0, 0, t);
-    for (std::size_t j = 0; j < k.nodes.size(); ++j) {
+    for_each_listed_node(k.nodes, nodes, [&](std::size_t j) {
       NodeRecord<Dim>& n = node[k.nodes[j]];
       if (n.mass > 0) n.force[k.component] += value * k.area[j];
-    }
+    });
   }
 }
 
@@ -102,9 +103,9 @@ bool GridBoundary<Dim>::does_work() const {
 }
 
 template <int Dim>
-ExactSum GridBoundary<Dim>::work(const std::vector<NodeRecord<Dim>>& node,
-                                 const std::vector<NodeVelocity<Dim>>& velocity, const Vec<Dim>& gravity,
-                                 Real mass_cutoff, Real t, Real dt, NodeMask owned) const {
+ExactSum GridBoundary<Dim>::work(const NodeArray<NodeRecord<Dim>>& node, const NodeArray<NodeVelocity<Dim>>& velocity,
+                                 const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt, NodeMask owned,
+                                 NodeRuns nodes) const {
   auto mine = [&](Index n) { return owned.contains(n); };
   ExactSum w;
   for (const auto& k : constraints_) {
@@ -113,15 +114,17 @@ ExactSum GridBoundary<Dim>::work(const std::vector<NodeRecord<Dim>>& node,
     if (v == 0) continue;
     const Real a = ((*k.value)(0, 0, 0, t + dt) - (*k.value)(0, 0, 0, t)) / dt;
     const int c = k.component;
-    for (Index n : k.nodes)
-      if (const NodeRecord<Dim>& r = node[n]; r.mass > mass_cutoff && mine(n))
-        w += (r.mass * a - (r.force[c] + r.mass * gravity[c])) * v * dt;
+    for_each_listed_node(k.nodes, nodes, [&](std::size_t j) {
+      if (const Index n = k.nodes[j]; node[n].mass > mass_cutoff && mine(n))
+        w += (node[n].mass * a - (node[n].force[c] + node[n].mass * gravity[c])) * v * dt;
+    });
   }
   for (const auto& k : tractions_) {
     const Real value = (*k.value)(0, 0, 0, t);
-    for (std::size_t j = 0; j < k.nodes.size(); ++j)
+    for_each_listed_node(k.nodes, nodes, [&](std::size_t j) {
       if (const Index n = k.nodes[j]; node[n].mass > 0 && mine(n))
         w += value * k.area[j] * 0.5 * (velocity[n].mapped[k.component] + velocity[n].updated[k.component]) * dt;
+    });
   }
   return w;
 }

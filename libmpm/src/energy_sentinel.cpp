@@ -77,7 +77,7 @@ void EnergySentinel<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStage stag
   if (stage != GridStage::updated) return;  // the nodal forces of the step are final here in every scheme
   if (!ctx.boundary.does_work()) return;    // held faces at rest, no traction: zero on every rank, no reduction
   ExactSum work = ctx.boundary.work(ctx.grid.node, ctx.grid.velocity, ctx.settings.gravity, ctx.settings.mass_cutoff,
-                                    ctx.time, ctx.dt, ctx.owned_nodes);
+                                    ctx.time, ctx.dt, ctx.owned_nodes, ctx.active_nodes);
   if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(&work, 1));  // each rank summed the nodes it owns
   work_ += work.value();
 }

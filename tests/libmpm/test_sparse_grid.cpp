@@ -3,10 +3,14 @@
 // the same scene twice, sparse (the default) and dense (SimulationSettings::sparse_grid = false), and after every
 // step the energy audit, and at the end every particle field of every body and the whole grid (the nodal records
 // and velocities the grid output writes, contact's per-body grids included) must be byte-equal. The sparse run must
-// also have visited fewer nodes than the grid has, or the comparison would prove nothing.
+// also have visited fewer nodes than the grid has, or the comparison would prove nothing. Outside the nodes a step
+// visits, the face conditions are not written (no particle reads them there), so velocities are compared on those.
+// MemoryFollowsTheParticles: the node arrays hold memory only for the pages of the nodes a step visits.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
+#include <iostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -14,6 +18,7 @@
 #include "mpm/active_tiles.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/reserved_pages.hpp"
 #include "mpm/scene_loader.hpp"
 
 namespace {
@@ -113,13 +118,18 @@ std::string audit_bytes(double time, const EnergyBalance& e) {
   return std::string(reinterpret_cast<const char*>(values), sizeof values);
 }
 
-/// The first node whose record differs in bytes, or -1 (so that a failure names a node, not a megabyte of bytes).
-template <class T>
-Index first_different_node(const std::vector<T>& a, const std::vector<T>& b) {
+/// The first node of `only` whose record differs in bytes, or -1 (so that a failure names a node, not a megabyte of
+/// bytes).
+template <class Array>
+Index first_different_node(const Array& a, const Array& b, NodeRuns only = {}) {
   if (a.size() != b.size()) return 0;
-  for (std::size_t n = 0; n < a.size(); ++n)
-    if (std::memcmp(&a[n], &b[n], sizeof(T)) != 0) return static_cast<Index>(n);
-  return -1;
+  Index first = -1;
+  for_each_node_in_order(static_cast<Index>(a.size()), only, [&](Index n) {
+    if (first < 0 && std::memcmp(&a[static_cast<std::size_t>(n)], &b[static_cast<std::size_t>(n)],
+                                 sizeof(typename Array::value_type)) != 0)
+      first = n;
+  });
+  return first;
 }
 
 template <int Dim>
@@ -162,13 +172,17 @@ void expect_sparse_equals_dense(const Case& c) {
     }
   }
   EXPECT_EQ(first_different_node(sparse->grid().node, dense->grid().node), -1) << "nodal mass, momentum and force";
-  EXPECT_EQ(first_different_node(sparse->grid().velocity, dense->grid().velocity), -1) << "nodal velocities";
+  // Velocities where the last step's kernels wrote them: outside, the dense grid also holds the face conditions'
+  // values, which the sparse grid writes only where a particle can read them (GridBoundary::apply).
+  const NodeRuns visited = sparse->active_tiles().nodes();
+  EXPECT_EQ(first_different_node(sparse->grid().velocity, dense->grid().velocity, visited), -1) << "nodal velocities";
   for (std::size_t b = 0; b < dense->bodies().size(); ++b)
     if (const Grid<Dim>* own = dense->bodies()[b].own_grid) {
       const Grid<Dim>* mine = sparse->bodies()[b].own_grid;
       ASSERT_NE(mine, nullptr);
       EXPECT_EQ(first_different_node(mine->node, own->node), -1) << "body " << b << "'s own grid (contact)";
-      EXPECT_EQ(first_different_node(mine->velocity, own->velocity), -1) << "body " << b << "'s own grid velocities";
+      EXPECT_EQ(first_different_node(mine->velocity, own->velocity, visited), -1)
+          << "body " << b << "'s own grid velocities";
     }
 }
 
@@ -198,5 +212,79 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"flying_block_3d_usl_linear", "", 3, 80, SchemeKind::usl, "linear", 1, flying_block(3)},
         Case{"thermal_taylor_3d", "11_thermal_taylor/musl.yaml", 3, 5, SchemeKind::musl, "linear", 1}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+// ---- memory follows the particles (reserved_pages.hpp) ----
+
+TEST(ReservedPages, UnwrittenPagesCostNothingAndReleasedPagesReadAsZeros) {
+  const std::size_t page = page_bytes();
+  NodeArray<NodeRecord<3>> a(200000);  // 11.2 MB of address space
+  const std::size_t bytes = sizeof(NodeRecord<3>) * a.size();
+  EXPECT_EQ(resident_bytes(a.data(), bytes), 0u) << "a new array must not touch its pages";
+  a[100000].mass = 2.5;
+  EXPECT_EQ(resident_bytes(a.data(), bytes), page) << "one write, one page";
+  release_pages(a.data(), bytes);
+  EXPECT_EQ(resident_bytes(a.data(), bytes), 0u);
+  EXPECT_EQ(a[100000].mass, 0.0) << "a released page reads as zeros";
+  // Reading maps the system's shared zero page (no memory, though mincore counts it): a fresh array reads as zeros.
+  EXPECT_EQ(a[123456].mass, 0.0);
+  EXPECT_EQ(a[123456].force[2], 0.0);
+}
+
+/// The pages of `array` that hold a node of `runs`.
+template <class Array>
+std::size_t pages_of(const Array& array, NodeRuns runs) {
+  const std::size_t page = page_bytes();
+  const auto base = reinterpret_cast<std::uintptr_t>(array.data());
+  const std::size_t record = sizeof(typename Array::value_type);
+  std::size_t count = 0, last = static_cast<std::size_t>(-1);
+  for (const auto& [first, end] : runs.runs) {
+    std::size_t p0 = (base + static_cast<std::size_t>(first) * record) / page;
+    const std::size_t p1 = (base + static_cast<std::size_t>(end) * record - 1) / page;
+    if (p0 == last) ++p0;
+    if (p1 >= p0) count += p1 - p0 + 1;
+    last = p1;
+  }
+  return count * page;
+}
+
+// A block crossing a 3D grid with held faces on every side: at every step the node arrays have memory for the pages
+// of the visited nodes and no more (a write of the face conditions outside them, or pages of the stretches left
+// behind kept, breaks the bound), far less than the dense grid, whose pages are all in memory.
+TEST(SparseGrid, MemoryFollowsTheParticles) {
+  app::register_modules();
+  const SceneDescription scene = parse_scene(
+      "dimension: 3\n"
+      "grid: {origin: [0, 0, 0], extent: [1.2, 0.4, 0.4], cell_size: 0.02, boundary: {x_min: slip, x_max: slip, "
+      "y_min: slip, y_max: slip, z_min: fixed, z_max: slip}}\n"
+      "materials: {soft: {model: neo_hookean, density: 1000, youngs_modulus: 1.0e4, poisson_ratio: 0.3}}\n"
+      "bodies:\n"
+      "  - {name: block, material: soft, shape: {type: box, min: [0.04, 0.04, 0.04], max: [0.12, 0.12, 0.12]}, "
+      "velocity: [\"3\", \"1\", \"1.5\"]}\n"
+      "solver: {scheme: musl, shape_function: linear, cfl: 0.5, end_time: 1}\n",
+      "flying_block_walls.yaml");
+  auto sparse = app::build_simulation<3>(scene);
+  auto dense = app::build_simulation<3>(scene);
+  dense->use_sparse_grid(false);
+  const auto& g = sparse->grid();
+  const std::size_t whole = sizeof(NodeRecord<3>) * g.node.size() + sizeof(NodeVelocity<3>) * g.velocity.size();
+  EXPECT_EQ(g.resident_bytes(), 0u) << "before the first step";
+  std::size_t most = 0;
+  for (int s = 0; s < 100; ++s) {
+    const Real dt = dense->next_time_step();
+    dense->advance(dt);
+    sparse->advance(dt);
+    const NodeRuns visited = sparse->active_tiles().nodes();
+    ASSERT_FALSE(visited.all) << "step " << s + 1;
+    const std::size_t bound = pages_of(g.node, visited) + pages_of(g.velocity, visited);
+    ASSERT_LE(g.resident_bytes(), bound) << "step " << s + 1 << ": pages in memory beyond the visited nodes'";
+    most = std::max(most, g.resident_bytes());
+  }
+  EXPECT_GT(sparse->bodies()[0].particles.x[0][0], 0.4) << "the block crossed the grid";
+  EXPECT_GE(dense->grid().resident_bytes(), whole) << "the dense grid writes every page";
+  // A row of 61 nodes along x is about one page, so the pages follow the rows the block's tiles reach: about 27%.
+  EXPECT_LT(most, whole / 3) << "most bytes in memory at a step: " << most << " of " << whole;
+  std::cout << "node arrays: " << whole << " bytes, at most " << most << " in memory (sparse)\n";
+  EXPECT_EQ(sparse->bodies()[0].particles.x, dense->bodies()[0].particles.x) << "positions differ from the dense run";
+}
 
 }  // namespace

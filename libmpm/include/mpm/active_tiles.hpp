@@ -29,21 +29,31 @@ void reached_node_runs(const TileGrid& grid, std::span<const std::uint8_t> marke
 class ActiveTiles {
  public:
   /// Marks the tiles holding a particle of any of `bins` (binned on `grid`'s tiles) and returns the nodes that the
-  /// particles of this step's and the previous step's marked tiles reach. The first step, and any step whose tiling
-  /// differs from the previous one's, returns every node (the previous marks say nothing then).
+  /// particles of this step's and the previous step's marked tiles reach. A step whose tiling differs from the previous
+  /// one's, and the first after forget(), returns every node (the previous marks say nothing then); the first step
+  /// of a new simulation knows that no tile was marked before (its grid is zero).
   NodeRuns update(const TileGrid& grid, std::span<const TileBins* const> bins);
   /// The nodes the last update returned.
   NodeRuns nodes() const { return dense_ ? NodeRuns{} : NodeRuns::of(runs_); }
+  /// The stretches of nodes the last update left: maximal runs between the nodes it returned (before the first, after
+  /// the last) that hold a node the update before returned. No particle reaches them now and the kernels visit them
+  /// no more; what they hold is zero or no longer read, so their whole pages can go back to the system
+  /// (release_nodes in grid.hpp). Empty after a dense update.
+  std::span<const NodeRun> left() const { return left_; }
   /// Forgets the previous marks: the next update returns every node (after the grid was written by other means: a
-  /// restored snapshot).
-  void forget() { known_ = false; }
+  /// restored snapshot, a run on the dense grid).
+  void forget() {
+    known_ = false;
+    zero_ = false;
+  }
 
  private:
   TileGrid grid_;
-  bool known_ = false;  ///< whether `now_` holds the marks of the previous update, on grid_
+  bool known_ = true;  ///< whether `now_` holds the marks of the previous update, on grid_ (or zero_)
+  bool zero_ = true;   ///< the grid was never written (a new simulation's zero-filled arrays): no tile marked before
   bool dense_ = true;
   std::vector<std::uint8_t> now_, either_;
-  std::vector<NodeRun> runs_;
+  std::vector<NodeRun> runs_, previous_, left_;
 };
 
 }  // namespace mpm

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mpm/coordinates.hpp"
+#include "mpm/reserved_pages.hpp"
 #include "mpm/types.hpp"
 
 namespace mpm {
@@ -94,18 +95,34 @@ struct NodeVelocity {
   VecU<Dim> updated;
 };
 
+/// An array of node records whose pages get memory only where a kernel writes (reserved_pages.hpp): with sparse
+/// tiles, the nodes no particle reaches cost no memory.
+template <class T>
+using NodeArray = std::vector<T, ReservedPages<T>>;
+
 /// The background grid: geometry plus nodal fields, reset every step.
 template <int Dim>
 struct Grid {
   GridGeometry<Dim> geometry;
-  std::vector<NodeRecord<Dim>> node;        ///< mass (kg), momentum (kg m/s), force (N)
-  std::vector<NodeVelocity<Dim>> velocity;  ///< m/s
+  NodeArray<NodeRecord<Dim>> node;        ///< mass (kg), momentum (kg m/s), force (N)
+  NodeArray<NodeVelocity<Dim>> velocity;  ///< m/s
   /// Nodal scalar fields that optional modules keep (the thermal module's "temperature", K), by name; written
   /// with the grid output. Empty unless a module fills it.
   std::map<std::string, std::vector<Real>> node_fields;
 
   explicit Grid(const GridGeometry<Dim>& g = {}) : geometry(g), node(g.node_count()), velocity(g.node_count()) {}
   Index size() const { return static_cast<Index>(node.size()); }
+  /// Gives the whole memory pages of nodes [first, end) of `node` and `velocity` back to the system (they read as
+  /// zeros afterwards): for nodes whose content is zero or no longer read (ActiveTiles::left).
+  void release_nodes(Index first, Index end) {
+    release_pages(node.data() + first, sizeof(NodeRecord<Dim>) * static_cast<std::size_t>(end - first));
+    release_pages(velocity.data() + first, sizeof(NodeVelocity<Dim>) * static_cast<std::size_t>(end - first));
+  }
+  /// Bytes of `node` and `velocity` in memory (reserved_pages.hpp: pages no kernel wrote cost none).
+  std::size_t resident_bytes() const {
+    return mpm::resident_bytes(node.data(), sizeof(NodeRecord<Dim>) * node.size()) +
+           mpm::resident_bytes(velocity.data(), sizeof(NodeVelocity<Dim>) * velocity.size());
+  }
 };
 
 }  // namespace mpm

@@ -73,4 +73,21 @@ void for_each_node_in_order(Index nodes, NodeRuns set, Visit&& visit) {
     for (Index n = first, stop = std::min(end, nodes); n < stop; ++n) visit(n);
 }
 
+/// Calls visit(j) for each position j of the ascending node list `list` (a face's nodes) whose node is in `set`, in
+/// ascending order: a face condition then writes only the nodes the step's kernels visit, and the rest of the face
+/// costs neither time nor memory (reserved_pages.hpp).
+template <class Visit>
+void for_each_listed_node(std::span<const Index> list, NodeRuns set, Visit&& visit) {
+  if (set.all) {
+    for (std::size_t j = 0; j < list.size(); ++j) visit(j);
+    return;
+  }
+  auto at = list.begin();
+  for (const auto& [first, end] : set.runs) {
+    at = std::lower_bound(at, list.end(), first);
+    for (; at != list.end() && *at < end; ++at) visit(static_cast<std::size_t>(at - list.begin()));
+    if (at == list.end()) return;
+  }
+}
+
 }  // namespace mpm

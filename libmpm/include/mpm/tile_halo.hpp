@@ -33,8 +33,8 @@ namespace mpm {
 struct HaloArray {
   std::byte* base = nullptr;
   std::size_t bytes_per_node = 0;
-  template <class T>
-  static HaloArray of(std::vector<T>& nodes) {
+  template <class T, class Alloc>
+  static HaloArray of(std::vector<T, Alloc>& nodes) {
     return {reinterpret_cast<std::byte*>(nodes.data()), sizeof(T)};
   }
 };

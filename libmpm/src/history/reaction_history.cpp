@@ -75,17 +75,19 @@ class ReactionRecorder final : public Module<Dim> {
     std::array<ExactSum, Dim> force;
     std::array<ExactSum, 3> moment;
     const auto& g = ctx.grid.geometry;
-    ctx.boundary.reactions(face_, ctx.grid.node, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time, ctx.dt,
-                           [&](Index n, int c, Real R) {
-                             if (!ctx.owned_nodes.contains(n)) return;
-                             force[c] += R;
-                             Vec3 r = Vec3::Zero(), f = Vec3::Zero();
-                             r.template head<Dim>() = g.node_position(g.node_indices(n));
-                             r -= about_;
-                             f[c] = R;
-                             const Vec3 m = r.cross(f);
-                             for (int k = 0; k < 3; ++k) moment[k] += m[k];
-                           });
+    ctx.boundary.reactions(
+        face_, ctx.grid.node, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time, ctx.dt,
+        [&](Index n, int c, Real R) {
+          if (!ctx.owned_nodes.contains(n)) return;
+          force[c] += R;
+          Vec3 r = Vec3::Zero(), f = Vec3::Zero();
+          r.template head<Dim>() = g.node_position(g.node_indices(n));
+          r -= about_;
+          f[c] = R;
+          const Vec3 m = r.cross(f);
+          for (int k = 0; k < 3; ++k) moment[k] += m[k];
+        },
+        ctx.active_nodes);
     if (ctx.comm) {  // every rank's nodes
       std::array<ExactSum, Dim + 3> all;
       std::copy(force.begin(), force.end(), all.begin());

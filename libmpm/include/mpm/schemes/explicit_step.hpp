@@ -24,12 +24,12 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
     for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape, true, true, Coords>(body, ctx.grid);
   }
   PhaseTimer timer(ctx.profile, StepPhase::grid_update);
-  if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(ctx.grid.node, ctx.time);
+  if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(ctx.grid.node, ctx.time, ctx.active_nodes);
   ctx.hooks.after_p2g(ctx);
   update_grid_velocity(ctx.grid, ctx.settings, ctx.dt, ctx.active_nodes);
   if (!ctx.boundary.empty()) {
-    ctx.boundary.apply(ctx.grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
-    ctx.boundary.apply(ctx.grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);
+    ctx.boundary.apply(ctx.grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time, ctx.active_nodes);
+    ctx.boundary.apply(ctx.grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt, ctx.active_nodes);
   }
   ctx.hooks.grid_velocity(ctx, GridStage::mapped);
   ctx.hooks.grid_velocity(ctx, GridStage::updated);

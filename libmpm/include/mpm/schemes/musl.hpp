@@ -111,7 +111,8 @@ class Musl final : public ShapedScheme<Dim, Shape> {
           grid.velocity[i].mapped.setZero();
       }
     });
-    if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time + ctx.dt);
+    if (!ctx.boundary.empty())
+      ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time + ctx.dt, ctx.active_nodes);
     ctx.hooks.grid_velocity(ctx, GridStage::remapped);
   }
 

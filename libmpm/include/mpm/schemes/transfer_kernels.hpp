@@ -63,6 +63,12 @@ void bin_bodies(StepContext<Dim>& ctx) {
   for (const auto& body : ctx.bodies) bins.push_back(&body.bins);
   ctx.active_nodes = ctx.active_tiles->update(
       make_tile_grid(g, Shape::slab_cells, Shape::slab_reach_below, Shape::slab_reach_above), bins);
+  // Memory follows the particles: the pages of the stretches the particles left go back to the system.
+  for (const auto& [first, end] : ctx.active_tiles->left()) {
+    ctx.grid.release_nodes(first, end);
+    for (auto& body : ctx.bodies)
+      if (body.own_grid) body.own_grid->release_nodes(first, end);
+  }
 }
 
 /// The on-demand particle field "body_force" (acceleration b_p, m/s^2, set by a module before the step),

@@ -31,7 +31,8 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     {
       PhaseTimer timer(ctx.profile, StepPhase::grid_update);
       kernels::update_grid_velocity(grid, ctx.settings, ctx.dt, ctx.active_nodes);  // mapped = v^t (force still 0)
-      if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
+      if (!ctx.boundary.empty())
+        ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time, ctx.active_nodes);
       ctx.hooks.grid_velocity(ctx, GridStage::mapped);
     }
 
@@ -44,10 +45,11 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     }
     {
       PhaseTimer timer(ctx.profile, StepPhase::grid_update);
-      if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time);
+      if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time, ctx.active_nodes);
       ctx.hooks.after_p2g(ctx);
       momentum_update(ctx);
-      if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);
+      if (!ctx.boundary.empty())
+        ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt, ctx.active_nodes);
       ctx.hooks.grid_velocity(ctx, GridStage::updated);
     }
     PhaseTimer timer(ctx.profile, StepPhase::g2p);

@@ -161,7 +161,7 @@ class ImplicitScheme final : public Scheme<Dim> {
       }
     }
     // held components: what the wall conditions set to zero (all are at rest: the loader refuses the rest)
-    std::vector<NodeVelocity<Dim>> probe(nodes, NodeVelocity<Dim>{VecU<Dim>::Ones(), VecU<Dim>::Ones()});
+    NodeArray<NodeVelocity<Dim>> probe(nodes, NodeVelocity<Dim>{VecU<Dim>::Ones(), VecU<Dim>::Ones()});
     ctx.boundary.apply(probe, &NodeVelocity<Dim>::mapped, ctx.time);
     dofs_.build(g, touched, fraction, options_.weak_node_fraction,
                 [&](Index a, int d) { return probe[a].mapped[d] == 0; });
