@@ -203,9 +203,13 @@ io::ImageGrid OutputWriter<Dim>::grid_image(const Simulation<Dim>& sim, const io
     image.nodes[d] = g.geometry.nodes[d];
   }
   io::FieldArray mass{"mass", 1, {}}, velocity{"velocity", 3, {}}, force{"force", 3, {}};
+  const VecU<Dim> none = VecU<Dim>::Zero();
   for (Index n = 0; n < g.size(); ++n) {
     mass.values.push_back(g.node[n].mass);
-    append_padded<Dim>(velocity.values, g.velocity[n].mapped);
+    // A node without mass has no velocity: zero there, whatever a face condition wrote. Kernels with sparse tiles
+    // write a face's nodes only where particles reach (GridBoundary::apply), so without this the file would show
+    // the prescribed velocities of the empty face nodes some particles once reached and not of the others.
+    append_padded<Dim>(velocity.values, g.node[n].mass > 0 ? g.velocity[n].mapped : none);
     append_padded<Dim>(force.values, g.node[n].force);
   }
   if (g.geometry.coordinates == Coordinates::axisymmetric)

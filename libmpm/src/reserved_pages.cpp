@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 namespace mpm {
@@ -50,21 +51,57 @@ void free_reserved(void* p, std::size_t bytes) noexcept {
     munmap(p, bytes);
 }
 
-void release_pages(void* first, std::size_t bytes) noexcept {
+/// The pages of [first, first + bytes) as offsets from `first`: `inner_*` the whole pages inside, `outer_*` every
+/// page the range touches (offsets, so that no integer becomes a pointer again).
+struct PageSpan {
+  std::ptrdiff_t inner_first, inner_end, outer_first, outer_end;
+};
+PageSpan page_span(const void* first, std::size_t bytes) {
   const std::size_t page = page_bytes();
   const auto a = reinterpret_cast<std::uintptr_t>(first);
-  const std::uintptr_t lo = round_up(a, page), hi = round_down(a + bytes, page);
+  const auto offset = [a](std::uintptr_t at) {
+    return static_cast<std::ptrdiff_t>(at) - static_cast<std::ptrdiff_t>(a);
+  };
+  return {offset(round_up(a, page)), offset(round_down(a + bytes, page)), offset(round_down(a, page)),
+          offset(round_up(a + bytes, page))};
+}
+
+void release_pages(void* first, std::size_t bytes) noexcept {
+  const PageSpan s = page_span(first, bytes);
   // MADV_DONTNEED on private anonymous memory: the pages are dropped and read as zeros when touched again.
-  if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
+  if (s.inner_end > s.inner_first)
+    madvise(static_cast<std::byte*>(first) + s.inner_first, static_cast<std::size_t>(s.inner_end - s.inner_first),
+            MADV_DONTNEED);
+}
+
+void zero_bytes(void* first, std::size_t bytes) noexcept {
+  auto* base = static_cast<std::byte*>(first);
+  const PageSpan s = page_span(first, bytes);
+  const auto size = static_cast<std::ptrdiff_t>(bytes);
+  // A part of a page at either end is written only if its page is in memory: one that is not reads as zeros
+  // already, and writing it would bring it in.
+  const auto clear = [&](std::ptrdiff_t from, std::ptrdiff_t to) {
+    const auto n = static_cast<std::size_t>(to - from);
+    if (to > from && resident_bytes(base + from, n) > 0) std::memset(base + from, 0, n);
+  };
+  if (s.inner_end <= s.inner_first) {
+    clear(0, size);
+    return;
+  }
+  clear(0, s.inner_first);
+  clear(s.inner_end, size);
+  release_pages(base + s.inner_first, static_cast<std::size_t>(s.inner_end - s.inner_first));
 }
 
 std::size_t resident_bytes(const void* first, std::size_t bytes) {
   if (bytes == 0) return 0;
   const std::size_t page = page_bytes();
-  const auto a = reinterpret_cast<std::uintptr_t>(first);
-  const std::uintptr_t lo = round_down(a, page), hi = round_up(a + bytes, page);
-  std::vector<unsigned char> in((hi - lo) / page);
-  if (mincore(reinterpret_cast<void*>(lo), hi - lo, in.data()) != 0) return 0;
+  const PageSpan s = page_span(first, bytes);
+  const auto span = static_cast<std::size_t>(s.outer_end - s.outer_first);
+  std::vector<unsigned char> in(span / page);
+  // mincore wants a page-aligned start: the page that holds `first`.
+  void* start = const_cast<std::byte*>(static_cast<const std::byte*>(first) + s.outer_first);
+  if (mincore(start, span, in.data()) != 0) return span;  // unknown: say all
   std::size_t n = 0;
   for (unsigned char c : in) n += c & 1;
   return n * page;

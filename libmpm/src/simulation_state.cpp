@@ -201,7 +201,17 @@ std::vector<std::string> Simulation<Dim>::restore_state(const StateArchive& arch
   for (int d = 0; d < Dim; ++d) wave_speed_.max_speed[d] = speed[d];
   wave_speed_.finite = archive.integer("simulation/wave_speed_finite") != 0;
   for (const auto& m : hooks_.all()) m->restore_state(archive, module_prefix(*m));
-  active_tiles_.forget();  // the grid holds what this simulation wrote before, not the archive's step: one dense step
+  // The grid holds what this simulation wrote before, not the archive's step. With sparse tiles it is zeroed (its
+  // pages given back) as a new simulation's, so that a restart does not write every node once; otherwise the next
+  // step is dense.
+  if (settings_.sparse_grid && !comm_) {
+    grid_.clear();
+    for (auto& body : bodies_)
+      if (body.own_grid) body.own_grid->clear();
+    active_tiles_.zeroed();
+  } else {
+    active_tiles_.forget();
+  }
   take_snapshot();
   return notes;
 }

@@ -20,6 +20,7 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/reserved_pages.hpp"
 #include "mpm/scene_loader.hpp"
+#include "mpm/state_archive.hpp"
 
 namespace {
 
@@ -250,9 +251,9 @@ std::size_t pages_of(const Array& array, NodeRuns runs) {
 // A block crossing a 3D grid with held faces on every side: at every step the node arrays have memory for the pages
 // of the visited nodes and no more (a write of the face conditions outside them, or pages of the stretches left
 // behind kept, breaks the bound), far less than the dense grid, whose pages are all in memory.
-TEST(SparseGrid, MemoryFollowsTheParticles) {
+SceneDescription flying_block_between_walls() {
   app::register_modules();
-  const SceneDescription scene = parse_scene(
+  return parse_scene(
       "dimension: 3\n"
       "grid: {origin: [0, 0, 0], extent: [1.2, 0.4, 0.4], cell_size: 0.02, boundary: {x_min: slip, x_max: slip, "
       "y_min: slip, y_max: slip, z_min: fixed, z_max: slip}}\n"
@@ -262,6 +263,19 @@ TEST(SparseGrid, MemoryFollowsTheParticles) {
       "velocity: [\"3\", \"1\", \"1.5\"]}\n"
       "solver: {scheme: musl, shape_function: linear, cfl: 0.5, end_time: 1}\n",
       "flying_block_walls.yaml");
+}
+
+/// Pages of the node arrays in memory, at most those of the nodes the last step visited.
+void expect_pages_of_the_visited_nodes(const Simulation<3>& sim, int step) {
+  const NodeRuns visited = sim.active_tiles().nodes();
+  ASSERT_FALSE(visited.all) << "step " << step;
+  const auto& g = sim.grid();
+  ASSERT_LE(g.resident_bytes(), pages_of(g.node, visited) + pages_of(g.velocity, visited))
+      << "step " << step << ": pages in memory beyond the visited nodes'";
+}
+
+TEST(SparseGrid, MemoryFollowsTheParticles) {
+  const SceneDescription scene = flying_block_between_walls();
   auto sparse = app::build_simulation<3>(scene);
   auto dense = app::build_simulation<3>(scene);
   dense->use_sparse_grid(false);
@@ -273,10 +287,8 @@ TEST(SparseGrid, MemoryFollowsTheParticles) {
     const Real dt = dense->next_time_step();
     dense->advance(dt);
     sparse->advance(dt);
-    const NodeRuns visited = sparse->active_tiles().nodes();
-    ASSERT_FALSE(visited.all) << "step " << s + 1;
-    const std::size_t bound = pages_of(g.node, visited) + pages_of(g.velocity, visited);
-    ASSERT_LE(g.resident_bytes(), bound) << "step " << s + 1 << ": pages in memory beyond the visited nodes'";
+    expect_pages_of_the_visited_nodes(*sparse, s + 1);
+    if (HasFatalFailure()) return;
     most = std::max(most, g.resident_bytes());
   }
   EXPECT_GT(sparse->bodies()[0].particles.x[0][0], 0.4) << "the block crossed the grid";
@@ -285,6 +297,31 @@ TEST(SparseGrid, MemoryFollowsTheParticles) {
   EXPECT_LT(most, whole / 3) << "most bytes in memory at a step: " << most << " of " << whole;
   std::cout << "node arrays: " << whole << " bytes, at most " << most << " in memory (sparse)\n";
   EXPECT_EQ(sparse->bodies()[0].particles.x, dense->bodies()[0].particles.x) << "positions differ from the dense run";
+}
+
+// A restored checkpoint zeroes the grid (Grid::clear) instead of stepping dense once: the simulation it is restored
+// into has written its grid before, yet no page beyond the visited nodes' comes into memory, and the run continues
+// with the bits of the uninterrupted one.
+TEST(SparseGrid, ARestoredStateStepsSparse) {
+  const SceneDescription scene = flying_block_between_walls();
+  auto run = app::build_simulation<3>(scene);
+  for (int s = 0; s < 40; ++s) run->advance(run->next_time_step());
+  StateArchive archive;
+  run->save_state(archive);
+  auto restored = app::build_simulation<3>(scene);
+  for (int s = 0; s < 60; ++s) restored->advance(restored->next_time_step());  // writes its grid elsewhere
+  restored->restore_state(archive);
+  EXPECT_LE(restored->grid().resident_bytes(), 4 * page_bytes()) << "the ends of the two arrays at most";
+  for (int s = 0; s < 40; ++s) {
+    const Real dt = run->next_time_step();
+    ASSERT_EQ(restored->next_time_step(), dt) << "step " << s + 1;
+    run->advance(dt);
+    restored->advance(dt);
+    expect_pages_of_the_visited_nodes(*restored, s + 1);
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_EQ(restored->bodies()[0].particles.x, run->bodies()[0].particles.x) << "positions";
+  EXPECT_EQ(restored->bodies()[0].particles.v, run->bodies()[0].particles.v) << "velocities";
 }
 
 }  // namespace

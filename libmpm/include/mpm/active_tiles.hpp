@@ -46,6 +46,11 @@ class ActiveTiles {
     known_ = false;
     zero_ = false;
   }
+  /// The grid was zeroed (Grid::clear): the next update knows that no tile was marked before, as on a new grid.
+  void zeroed() {
+    known_ = true;
+    zero_ = true;
+  }
 
  private:
   TileGrid grid_;

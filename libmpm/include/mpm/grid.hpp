@@ -118,6 +118,11 @@ struct Grid {
     release_pages(node.data() + first, sizeof(NodeRecord<Dim>) * static_cast<std::size_t>(end - first));
     release_pages(velocity.data() + first, sizeof(NodeVelocity<Dim>) * static_cast<std::size_t>(end - first));
   }
+  /// Zeroes every node record and velocity, giving the whole pages back (a grid as new: ActiveTiles::zeroed).
+  void clear() {
+    zero_bytes(node.data(), sizeof(NodeRecord<Dim>) * node.size());
+    zero_bytes(velocity.data(), sizeof(NodeVelocity<Dim>) * velocity.size());
+  }
   /// Bytes of `node` and `velocity` in memory (reserved_pages.hpp: pages no kernel wrote cost none).
   std::size_t resident_bytes() const {
     return mpm::resident_bytes(node.data(), sizeof(NodeRecord<Dim>) * node.size()) +

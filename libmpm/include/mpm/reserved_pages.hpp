@@ -29,6 +29,10 @@ void free_reserved(void* p, std::size_t bytes) noexcept;
 /// storage from reserve_zeroed whose content there is zero or no longer needed.
 void release_pages(void* first, std::size_t bytes) noexcept;
 
+/// Zeroes [first, first + bytes): the whole pages inside are given back (release_pages), the parts of pages at the
+/// two ends written.
+void zero_bytes(void* first, std::size_t bytes) noexcept;
+
 /// Bytes of [first, first + bytes) whose pages are in memory (counted per whole page that the range touches).
 std::size_t resident_bytes(const void* first, std::size_t bytes);
 
