@@ -2,7 +2,9 @@
 /// \file active_tiles.hpp
 /// Sparse tiles in one process (issue 18): the grid kernels of a step visit only the nodes that the particles of the
 /// occupied tiles reach, so a grid much larger than its bodies (a Taylor anvil's free flight, a dam break's empty
-/// tank) costs its particles' nodes in the grid update, not its bounding box. The node arrays stay allocated whole.
+/// tank) costs its particles' nodes in the grid update, not its bounding box. The node arrays are reserved address
+/// space (reserved_pages.hpp): pages no kernel writes cost no memory, and the pages of the stretches the particles
+/// left are given back (left()).
 ///
 /// **Why this step's and the previous step's tiles.** A node the particles leave keeps its mass and velocity until
 /// something clears it; a dense grid clears it at the next reset and gives it zero velocity at the next update. So
