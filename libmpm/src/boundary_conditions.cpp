@@ -115,8 +115,8 @@ ExactSum GridBoundary<Dim>::work(const NodeArray<NodeRecord<Dim>>& node, const N
     const Real a = ((*k.value)(0, 0, 0, t + dt) - (*k.value)(0, 0, 0, t)) / dt;
     const int c = k.component;
     for_each_listed_node(k.nodes, nodes, [&](std::size_t j) {
-      if (const Index n = k.nodes[j]; node[n].mass > mass_cutoff && mine(n))
-        w += (node[n].mass * a - (node[n].force[c] + node[n].mass * gravity[c])) * v * dt;
+      if (const NodeRecord<Dim>& r = node[k.nodes[j]]; r.mass > mass_cutoff && mine(k.nodes[j]))
+        w += (r.mass * a - (r.force[c] + r.mass * gravity[c])) * v * dt;
     });
   }
   for (const auto& k : tractions_) {
