@@ -8,9 +8,11 @@
 /// checked (bench/README.md).
 ///
 ///   ./build/bench/bench_sparse_grid [--case taylor_anvil|two_disks_200|all] [--steps N] [--rounds N] [--threads N]
+///                                   [--cells N]
 ///
 /// Cases: the 3D Taylor anvil (examples/05_taylor_anvil/musl.yaml: MUSL, hat functions) as it is, and the two
-/// disks (examples/02_two_disks) at 200 cells per side.
+/// disks (examples/02_two_disks) at 200 cells per side (`--cells N`: N per side, 4 particles per cell, for the
+/// memory of a larger grid, whose rows span more pages).
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 
@@ -98,11 +100,14 @@ void run_case(const std::string& name, const mpm::SceneDescription& scene, int s
 
 int main(int argc, char** argv) {
   std::string which = "all";
-  int steps = 20, rounds = 3, threads = 1;
-  mpm::bench::BenchOptions cli("bench_sparse_grid",
-                               "[--case taylor_anvil|two_disks_200|all] [--steps N] [--rounds N] [--threads N]");
-  cli.option("--case", which).option("--steps", steps).option("--rounds", rounds).threads(threads);
+  int steps = 20, rounds = 3, threads = 1, cells = 200;
+  mpm::bench::BenchOptions cli(
+      "bench_sparse_grid",
+      "[--case taylor_anvil|two_disks_200|all] [--steps N] [--rounds N] [--threads N] [--cells N]");
+  cli.option("--case", which).option("--steps", steps).option("--rounds", rounds).option("--cells", cells);
+  cli.threads(threads);
   cli.require([&] { return steps >= 1 && rounds >= 1; }, "--steps and --rounds must be >= 1");
+  cli.require([&] { return cells >= 20 && cells <= 4000; }, "--cells must be between 20 and 4000");
   cli.require([&] { return which == "all" || which == "taylor_anvil" || which == "two_disks_200"; },
               "--case must be taylor_anvil, two_disks_200 or all");
   if (const auto status = cli.parse(argc, argv)) return *status;
@@ -115,10 +120,10 @@ int main(int argc, char** argv) {
   if (which == "all" || which == "two_disks_200") {
     mpm::SceneDescription scene = mpm::load_scene(examples + "02_two_disks/scene.yaml");
     for (int d = 0; d < 2; ++d) {
-      scene.grid.cell_size[d] = 1.0 / 200;
-      scene.grid.cells[d] = 200;
+      scene.grid.cell_size[d] = 1.0 / cells;
+      scene.grid.cells[d] = cells;
     }
-    run_case<2>("two_disks_200 (2D MUSL hat, 200 x 200 cells)", scene, steps, rounds);
+    run_case<2>(fmt::format("two_disks_{} (2D MUSL hat, {} x {} cells)", cells, cells, cells), scene, steps, rounds);
   }
   return 0;
 }

@@ -409,11 +409,14 @@ TEST(ApicFluid, DamBreakImpactLossFallsWithTheCell) {
 
 // Cause of the FSI example's loss with APIC (examples/14_fsi_obstacle/README.md): its no-slip floor. The review's dam
 // break to 0.45 s (before the wall impact) with the floor `fixed` instead of `slip`: the floor nodes are set to zero
-// velocity every step and APIC's particles take the interpolated (PIC) velocity, so the first cell of water is braked
+// velocity every step and the floor's rest reaches the water through the transfer, so the first cell of water is braked
 // every step, a boundary layer a cell thick (water's own, sqrt(nu t), is 0.6 mm) whose loss does not fall with the cell
-// (the finer grid takes more steps). Measured energy change at 0.45 s: APIC -1.70% (35 cells) and -2.12% (70) against
-// -1.08% and -0.32% with the slip floor; FLIP +0.01% with either floor (its particles keep their slip velocity).
-// Asserted (4 s): APIC loses more than 1.5% at 70 cells, and not less than at 35; FLIP within 0.1%.
+// (the finer grid takes more steps). Most of it travels with the affine momentum m_p C_p (x_I - x_p) of P2G, not with
+// the PIC velocity of G2P: giving the particles FLIP's velocity and keeping C_p (trial code) still lost 1.66% at 70
+// cells (physics/fluids/README.md, "Which half of the transfer loses it"). Measured energy change at 0.45 s: APIC
+// -1.70% (35 cells) and -2.12% (70) against -1.08% and -0.32% with the slip floor; FLIP +0.01% with either floor (its
+// particles keep their slip velocity). Asserted (4 s): APIC loses more than 1.5% at 70 cells, and not less than at 35;
+// FLIP within 0.1%.
 TEST(ApicFluid, NoSlipFloorDissipatesWithoutConverging) {
   auto fixed_floor = [](std::string scene, const std::string& transfer) {
     scene.replace(scene.find("y_min: slip"), 11, "y_min: fixed");
