@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "mpm/axisymmetric.hpp"
@@ -37,6 +38,7 @@ Simulation<Dim>::Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<
 
 template <int Dim>
 void Simulation<Dim>::particles_changed() {
+  near_cut_known_ = false;
   wave_speed_ = WaveSpeedBound<Dim>{};
   for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
   if (comm_) reduce_wave_speed(wave_speed_, *comm_);
@@ -119,6 +121,13 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   ctx.dt = dt;
   ctx.step = step_ + 1;
   ctx.profile = profiling_ ? &profile_ : nullptr;
+  if (halo_) {
+    // MPM_DEBUG_ALWAYS_EXCHANGE=1: every scatter exchanges, as before session 16 (the same bits; for the benchmark's
+    // before/after pairs, PERFORMANCE.md §16.4)
+    static const bool always = std::getenv("MPM_DEBUG_ALWAYS_EXCHANGE") != nullptr;
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      bodies_[b].bins.exchange = always || !near_cut_known_ || near_cut_[b] != 0;
+  }
   hooks_.before_step(ctx);
   scheme_->advance(ctx);
   hooks_.end_of_step(ctx);
@@ -128,14 +137,20 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   if (comm_) {  // the roll-back is collective: every rank replays the same steps
     // The step's one reduction (a max): the wave-speed bound (as reduce_wave_speed), the guard's flag, whether any
     // particle must migrate (no rank has a leaver on most steps: then no all-to-all either), and the caller's flags
-    // (set_step_flags), each flag a max of 0 and 1.
-    std::array<double, Dim + 3 + step_flag_bits> v{};
+    // (set_step_flags), each flag a max of 0 and 1, and per body whether the next step's scatters exchange ghost
+    // nodes (TileBins::exchange).
+    constexpr std::size_t first_body = Dim + 3 + step_flag_bits;
+    std::vector<double> v(first_body + bodies_.size(), 0.0);
     for (int d = 0; d < Dim; ++d) v[d] = ctx.wave_speed.max_speed[d];
     v[Dim] = ctx.wave_speed.finite ? 0 : 1;
     v[Dim + 1] = tripped ? 1 : 0;
-    v[Dim + 2] = !tripped && scheme_->reorders_particles() && has_leavers() ? 1 : 0;
+    const bool leaving = scan_particles(std::span<double>(v).subspan(first_body));
+    v[Dim + 2] = !tripped && leaving ? 1 : 0;
     for (int b = 0; b < step_flag_bits; ++b) v[Dim + 3 + b] = (flags >> b) & 1u;
     comm_->max(v);
+    near_cut_.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) near_cut_[b] = v[first_body + b] != 0 ? 1 : 0;
+    near_cut_known_ = true;
     for (int d = 0; d < Dim; ++d) ctx.wave_speed.max_speed[d] = v[d];
     ctx.wave_speed.finite = v[Dim] == 0;
     tripped = v[Dim + 1] != 0;
@@ -231,6 +246,7 @@ void Simulation<Dim>::take_snapshot() {
 template <int Dim>
 void Simulation<Dim>::roll_back_to_previous_step() {
   const std::vector<Real> replay = snapshot_.dts_since;
+  near_cut_known_ = false;
   for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b].particles = snapshot_.particles[b];
   time_ = snapshot_.time;
   step_ = snapshot_.step;
@@ -248,6 +264,7 @@ template <int Dim>
 bool Simulation<Dim>::replay_failure(const std::function<void(const Simulation&)>& after_step) {
   if (!failure_) return false;
   const Snapshot start = *failure_;
+  near_cut_known_ = false;
   for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b].particles = start.particles[b];
   time_ = start.time;
   step_ = start.step;

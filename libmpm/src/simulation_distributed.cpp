@@ -85,6 +85,7 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
   for (const auto& m : hooks_.all()) m->set_writes_files(comm_->rank() == 0);
   const TileGrid tiles = tile_grid();
   halo_ = std::make_unique<TileHalo>(*comm_, tiles, balanced_owners());
+  near_cut_known_ = false;
   for (auto& b : bodies_) b.bins.halo = halo_.get();
   // Every rank holds every particle: each keeps its own (the all-to-all of migrate() then moves nothing).
   const int me = comm_->rank();
@@ -143,6 +144,7 @@ void Simulation<Dim>::rebalance() {
 
 template <int Dim>
 void Simulation<Dim>::use_owners(const std::vector<int>& owner) {
+  near_cut_known_ = false;  // the tiles that write shared nodes change with the owners
   if (owner == halo_->owners()) return;
   halo_bytes_before_ += halo_->bytes_sent();
   halo_ = std::make_unique<TileHalo>(*comm_, tile_grid(), owner);
@@ -173,13 +175,39 @@ bool Simulation<Dim>::keeps(const VecU<Dim>& x) const {
 }
 
 template <int Dim>
-bool Simulation<Dim>::has_leavers() const {
-  for (const auto& b : bodies_) {
-    const VecU<Dim>* x = owner_positions(*scheme_, b.particles);
-    for (Index i = 0, n = b.particles.size(); i < n; ++i)
-      if (!keeps(x[i])) return true;
+bool Simulation<Dim>::scan_particles(std::span<double> near_cut) const {
+  const auto& g = grid_.geometry;
+  const HaloPlan& plan = halo_->plan();
+  const TileHalo& halo = *halo_;
+  const bool movable = scheme_->reorders_particles();
+  bool leaving = false;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const VecU<Dim>* x = owner_positions(*scheme_, bodies_[b].particles);
+    bool near = false;
+    for (Index i = 0, n = bodies_[b].particles.size(); i < n; ++i) {
+      // keeps(x[i]) and the particle's tile (TileGrid's numbering, bin_by_tile's) from the same cells
+      Index t = 0;
+      bool in = true;
+      for (int d = 0; d < Dim; ++d) {
+        const int c = cell_on_axis<Dim>(x[i], g, d);
+        in = in && c >= plan.cell_box[d].first && c < plan.cell_box[d].second;
+        t += halo.tile_term(d, c);
+      }
+      if (!plan.is_box) in = halo.owners()[static_cast<std::size_t>(t)] == comm_->rank();
+      near = near || !in || halo.writes_shared(t);
+      leaving = leaving || (movable && !in);
+      if (near && (leaving || !movable)) break;  // nothing more to learn from this body
+    }
+    near_cut[b] = near ? 1 : 0;
   }
-  return false;
+  return leaving;
+}
+
+template <int Dim>
+std::size_t Simulation<Dim>::exchanging_bodies() const {
+  if (!halo_) return 0;
+  if (!near_cut_known_) return bodies_.size();
+  return static_cast<std::size_t>(std::count(near_cut_.begin(), near_cut_.end(), std::uint8_t{1}));
 }
 
 template <int Dim>
@@ -302,7 +330,8 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) {
   template void Simulation<D>::reassign_tiles(std::vector<int>);                   \
   template TileGrid Simulation<D>::tile_grid() const;                              \
   template bool Simulation<D>::migrate();                                          \
-  template bool Simulation<D>::has_leavers() const;                                \
+  template bool Simulation<D>::scan_particles(std::span<double>) const;            \
+  template std::size_t Simulation<D>::exchanging_bodies() const;                   \
   template bool Simulation<D>::keeps(const VecU<D>&) const;                        \
   template std::vector<double> Simulation<D>::tile_costs() const;                  \
   template void Simulation<D>::rebalance();                                        \

@@ -201,6 +201,7 @@ std::vector<std::string> Simulation<Dim>::restore_state(const StateArchive& arch
   for (int d = 0; d < Dim; ++d) wave_speed_.max_speed[d] = speed[d];
   wave_speed_.finite = archive.integer("simulation/wave_speed_finite") != 0;
   for (const auto& m : hooks_.all()) m->restore_state(archive, module_prefix(*m));
+  near_cut_known_ = false;  // the particles moved: every body exchanges in the next step
   // The grid holds what this simulation wrote before, not the archive's step. With sparse tiles it is zeroed (its
   // pages given back) as a new simulation's, so that a restart does not write every node once; otherwise the next
   // step is dense.

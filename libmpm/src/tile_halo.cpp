@@ -235,6 +235,39 @@ TileHalo::TileHalo(Communicator& comm, const TileGrid& grid, std::vector<int> ow
     if (o < 0 || o >= comm.size())
       throw std::invalid_argument("TileHalo: a tile's owner " + std::to_string(o) + " is not a rank");
   plan_ = plan_halo(grid_, owner_, comm.rank());
+  // Tiles whose reach overlaps the reach of another rank's tile, on every axis (tiles are at least a reach wide, so
+  // only neighbours overlap; two tiles on each side are checked all the same).
+  writes_shared_.assign(static_cast<std::size_t>(grid_.tile_count()), 0);
+  const auto overlap = [&](int d, int a, int b) {
+    const auto [a0, a1] = grid_.reach(d, a);
+    const auto [b0, b1] = grid_.reach(d, b);
+    return a0 <= b1 && b0 <= a1;
+  };
+  for (Index t = 0; t < grid_.tile_count(); ++t) {
+    const auto c = grid_.coordinates(t);
+    std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0}, n{};
+    for (int d = 0; d < grid_.dim; ++d) {
+      lo[d] = std::max(0, c[d] - 2);
+      hi[d] = std::min(grid_.tiles[d] - 1, c[d] + 2);
+    }
+    bool shared = false;
+    for (n[2] = lo[2]; n[2] <= hi[2] && !shared; ++n[2])
+      for (n[1] = lo[1]; n[1] <= hi[1] && !shared; ++n[1])
+        for (n[0] = lo[0]; n[0] <= hi[0] && !shared; ++n[0]) {
+          if (owner_[static_cast<std::size_t>(grid_.index(n))] == owner_[static_cast<std::size_t>(t)]) continue;
+          bool all = true;
+          for (int d = 0; d < grid_.dim; ++d) all = all && overlap(d, c[d], n[d]);
+          shared = all;
+        }
+    writes_shared_[static_cast<std::size_t>(t)] = shared ? 1 : 0;
+  }
+  Index stride = 1;
+  for (int d = 0; d < grid_.dim; ++d) {
+    tile_term_[d].resize(static_cast<std::size_t>(grid_.cells[d]));
+    for (int k = 0; k < grid_.cells[d]; ++k)
+      tile_term_[d][static_cast<std::size_t>(k)] = stride * std::min(k / grid_.tile_cells[d], grid_.tiles[d] - 1);
+    stride *= grid_.tiles[d];
+  }
   send_.resize(plan_.sends.size());
   receive_.resize(plan_.receives.size());
   sending_.resize(plan_.sends.size());
@@ -268,6 +301,7 @@ void TileHalo::begin_scatter(std::span<const HaloArray> arrays) const {
     receiving_[k] = comm_->start_receive({m.peer, receive_[k]});
   }
   applied_ = 0;
+  ++exchanges_;
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

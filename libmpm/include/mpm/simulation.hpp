@@ -5,9 +5,11 @@
 /// scene, or by hand in tests.
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -71,6 +73,10 @@ class Simulation {
   void reassign_tiles(std::vector<int> owner);
   /// Bytes of ghost nodes this rank has sent (every tile assignment's), for the halo model's test.
   std::size_t halo_bytes_sent() const { return halo_bytes_before_ + (halo_ ? halo_->bytes_sent() : 0); }
+  /// Distributed run: the bodies whose scatters exchange ghost nodes in the next step (TileBins::exchange): those
+  /// with a particle in a tile that writes a node of several ranks at the end of the last step, or all of them when
+  /// that is not known (the first step, after a restore, a roll-back or a new tile assignment).
+  std::size_t exchanging_bodies() const;
   /// Steps between balance checks of a distributed run (SimulationSettings::rebalance_interval; 0: never).
   void set_rebalance_interval(int steps) { settings_.rebalance_interval = steps; }
   /// One process: whether the grid kernels visit only the nodes the particles reach (SimulationSettings::sparse_grid;
@@ -195,8 +201,10 @@ class Simulation {
   /// Returns whether a particle left or arrived on this rank (the all-to-all is collective, the answer is not: a
   /// caller that needs every rank's takes the `any`; the step's migration does not, saving a reduction per step).
   bool migrate();
-  /// Distributed run: whether a particle of this rank now lies in another rank's tile (migrate() would send it).
-  bool has_leavers() const;
+  /// Distributed run, after a step: whether a particle of this rank now lies in another rank's tile (migrate() would
+  /// send it; false for schemes whose particles never migrate), and per body (near_cut, 1 or 0) whether one of its
+  /// particles here sits in a tile that writes a node several ranks hold or leaves this rank. One pass.
+  bool scan_particles(std::span<double> near_cut) const;
   /// Distributed run: whether this rank owns the tile of a particle at x.
   bool keeps(const VecU<Dim>& x) const;
   /// Distributed run: deals the tiles anew when the most loaded rank exceeds the mean by more than 10%.
@@ -230,6 +238,10 @@ class Simulation {
   std::function<unsigned(Index, Real)> step_flags_fn_;
   unsigned step_flags_ = 0;            ///< one process, sparse_grid: the occupied tiles of the last step
   std::size_t halo_bytes_before_ = 0;  ///< sent by the halos of earlier tile assignments
+  /// Distributed run: per body, whether its particles reached a tile that writes shared nodes at the end of the last
+  /// step (every rank's, from the step's reduction); valid only while near_cut_known_ (TileBins::exchange).
+  std::vector<std::uint8_t> near_cut_;
+  bool near_cut_known_ = false;
 };
 
 /// The wave-speed bound of every rank's particles (a distributed run): max over ranks, exact.

@@ -63,6 +63,12 @@ struct TileBins {
   /// Distributed run: this rank's tiles and the ghost-node exchange after each colour (tile_halo.hpp); null in one
   /// process.
   const TileHalo* halo = nullptr;
+  /// Distributed run: whether this step's scatters of these particles exchange ghost nodes. False when no particle
+  /// of the body, on any rank, sits in a tile that writes a node several ranks hold (TileHalo::writes_shared): then
+  /// the scatter leaves every ghost node as it was, equal on its holders, and waiting for the other ranks' rounds
+  /// would only serialise the ranks (two bodies on two ranks: each rank waited for the other's body). Agreed by the
+  /// step's one reduction (Simulation::take_step), true whenever that is not known.
+  bool exchange = true;
 
   Index tile_count() const { return tiles_per_slab * slab_count; }
   /// 2^dim colours; colour c's tiles of slab parity c >> (dim - 1).
@@ -256,6 +262,13 @@ void for_each_tile_coloured(const TileBins& bins, std::span<const HaloArray> wri
   }
   if (halo->tiles().tile_count() != bins.tile_count())
     throw std::logic_error("for_each_tile_coloured: the bins and the halo tile the grid differently");
+  if (!bins.exchange) {  // no ghost node changes: the same tiles in the same order, no message
+    for (int colour = 0; colour < bins.colours(); ++colour) {
+      detail::scatter_tiles(bins, halo->boundary_tiles(colour), body);
+      detail::scatter_tiles(bins, halo->inner_tiles(colour), body);
+    }
+    return;
+  }
   halo->begin_scatter(written);
   for (int colour = 0; colour < bins.colours(); ++colour) {
     halo->before_round(colour);

@@ -144,6 +144,13 @@ class TileHalo {
   NodeRuns held_nodes() const { return NodeRuns::of(plan_.held); }
   const std::vector<Index>& boundary_tiles(int colour) const { return plan_.boundary_tiles[colour]; }
   const std::vector<Index>& inner_tiles(int colour) const { return plan_.inner_tiles[colour]; }
+  /// Whether the particles of tile t can write a node that more than one rank holds: a tile whose reach overlaps
+  /// the reach of a tile of another rank (the same answer on every rank). A body none of whose particles sits in
+  /// such a tile changes no ghost node in a scatter, which then needs no exchange (TileBins::exchange).
+  bool writes_shared(Index t) const { return writes_shared_[static_cast<std::size_t>(t)] != 0; }
+  /// The tile-number term of cell c on axis d (coordinate x the axis's tile stride): a tile's number is the sum
+  /// over the axes, a table lookup per axis instead of a division.
+  Index tile_term(int d, int c) const { return tile_term_[d][static_cast<std::size_t>(c)]; }
 
   /// The exchange of one scatter of `arrays` (for_each_tile_coloured), each message started as early as its data
   /// exists and waited for only when its data is needed, so that the ranks compute while they travel:
@@ -158,8 +165,10 @@ class TileHalo {
   void send(int colour) const;
   void end_scatter() const;
 
-  /// Bytes this rank sent in exchanges so far (the halo model's count: plan().bytes_per_scatter per scatter).
+  /// Bytes this rank sent in exchanges so far (the halo model's count: plan().bytes_per_scatter per exchange).
   std::size_t bytes_sent() const { return bytes_sent_; }
+  /// Scatters that exchanged ghost nodes so far (begin_scatter .. end_scatter; skipped ones not counted).
+  std::size_t exchanges() const { return exchanges_; }
   std::size_t model_bytes_per_scatter(std::size_t bytes_per_node) const {
     return plan_.bytes_per_scatter(bytes_per_node);
   }
@@ -173,12 +182,15 @@ class TileHalo {
   TileGrid grid_;
   std::vector<int> owner_;
   HaloPlan plan_;
+  std::vector<std::uint8_t> writes_shared_;      ///< per tile
+  std::array<std::vector<Index>, 3> tile_term_;  ///< per axis and cell
   mutable std::vector<std::vector<std::byte>> send_, receive_;
   // The scatter in progress (begin_scatter .. end_scatter): its arrays and the messages in flight.
   mutable std::vector<HaloArray> arrays_;
   mutable std::vector<std::unique_ptr<Communicator::Transfer>> sending_, receiving_;
   mutable std::size_t applied_ = 0;  ///< receives applied so far in this scatter (they are in colour order)
   mutable std::size_t bytes_sent_ = 0;
+  mutable std::size_t exchanges_ = 0;
   mutable double seconds_ = 0;
 };
 
