@@ -246,7 +246,6 @@ void Simulation<Dim>::take_snapshot() {
 template <int Dim>
 void Simulation<Dim>::roll_back_to_previous_step() {
   const std::vector<Real> replay = snapshot_.dts_since;
-  near_cut_known_ = false;
   for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b].particles = snapshot_.particles[b];
   time_ = snapshot_.time;
   step_ = snapshot_.step;
@@ -264,7 +263,6 @@ template <int Dim>
 bool Simulation<Dim>::replay_failure(const std::function<void(const Simulation&)>& after_step) {
   if (!failure_) return false;
   const Snapshot start = *failure_;
-  near_cut_known_ = false;
   for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b].particles = start.particles[b];
   time_ = start.time;
   step_ = start.step;

@@ -85,7 +85,6 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
   for (const auto& m : hooks_.all()) m->set_writes_files(comm_->rank() == 0);
   const TileGrid tiles = tile_grid();
   halo_ = std::make_unique<TileHalo>(*comm_, tiles, balanced_owners());
-  near_cut_known_ = false;
   for (auto& b : bodies_) b.bins.halo = halo_.get();
   // Every rank holds every particle: each keeps its own (the all-to-all of migrate() then moves nothing).
   const int me = comm_->rank();
@@ -144,7 +143,9 @@ void Simulation<Dim>::rebalance() {
 
 template <int Dim>
 void Simulation<Dim>::use_owners(const std::vector<int>& owner) {
-  near_cut_known_ = false;  // the tiles that write shared nodes change with the owners
+  // The tiles that write shared nodes change with the owners, and a roll-back or replay (which come through here)
+  // moved the particles: every body exchanges in the next step.
+  near_cut_known_ = false;
   if (owner == halo_->owners()) return;
   halo_bytes_before_ += halo_->bytes_sent();
   halo_ = std::make_unique<TileHalo>(*comm_, tile_grid(), owner);

@@ -301,7 +301,6 @@ void TileHalo::begin_scatter(std::span<const HaloArray> arrays) const {
     receiving_[k] = comm_->start_receive({m.peer, receive_[k]});
   }
   applied_ = 0;
-  ++exchanges_;
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -167,8 +167,6 @@ class TileHalo {
 
   /// Bytes this rank sent in exchanges so far (the halo model's count: plan().bytes_per_scatter per exchange).
   std::size_t bytes_sent() const { return bytes_sent_; }
-  /// Scatters that exchanged ghost nodes so far (begin_scatter .. end_scatter; skipped ones not counted).
-  std::size_t exchanges() const { return exchanges_; }
   std::size_t model_bytes_per_scatter(std::size_t bytes_per_node) const {
     return plan_.bytes_per_scatter(bytes_per_node);
   }
@@ -190,7 +188,6 @@ class TileHalo {
   mutable std::vector<std::unique_ptr<Communicator::Transfer>> sending_, receiving_;
   mutable std::size_t applied_ = 0;  ///< receives applied so far in this scatter (they are in colour order)
   mutable std::size_t bytes_sent_ = 0;
-  mutable std::size_t exchanges_ = 0;
   mutable double seconds_ = 0;
 };
 
