@@ -9,8 +9,10 @@ Model of the stepping time of one rank holding N_r particles on T threads (USL, 
     t = c_p N_r [ f_s / min(T, k_r) + (1 - f_s) / T ] / e_T      compute: particle-updates, the scatter share f_s
                                                                    limited to k_r concurrent scatters (slabs or
                                                                    tiles of one colour on the rank)
-      + w c_p N_r / T                                            waiting at the colour rounds (load imbalance, w
-                                                                   fitted at 2 ranks)
+      + w c_p N_r / T                                            waiting at the colour rounds and the step's
+                                                                   reduction (unequal loads or cores; w fitted at
+                                                                   2 ranks: halo beyond the transfer + other_max
+                                                                   - other_min)
       + n_rounds alpha + bytes_r / beta                          halo: colour rounds x latency + bytes / bandwidth
       + c_m N_r / T                                              migration: scanning the owners of the particles
 
@@ -56,10 +58,22 @@ def median_row(rows, case, ranks, threads):
     return m
 
 
+def compute_spread(m):
+    """How much longer the slowest rank computed than the fastest (P2G + grid + G2P + stress): with equal particle
+    counts, the cores' unequal speed (a shared machine) or an unequal load; '-' for one rank or an older CSV."""
+    lo, hi = m.get("compute_min", 0.0), m.get("compute_max", 0.0)
+    return f"{hi / lo - 1:.1%}" if m["ranks"] > 1 and lo > 0 else "-"
+
+
+def other_range(m):
+    lo, hi = m.get("other_min", m["other"]), m.get("other_max", m["other"])
+    return f"{m['other']:.3f}" if m["ranks"] == 1 or hi == lo else f"{lo:.3f}-{hi:.3f}"
+
+
 def table(rows):
     out = ["| case | ranks x threads | particles | wall (median) | runs | load | updates/s | speed-up | P2G | grid | "
-           "G2P | stress | halo (max) | migrate (max) | rebalance | other |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "G2P | stress | halo (max) | migrate (max) | rebalance | other (min-max) | compute spread |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for case in ["strong2d", "strong2d_baseline", "strong3d", "strong3d_baseline", "weak", "weak_baseline"]:
         base = median_row(rows, case.replace("_baseline", ""), 1, 1) if case.endswith("_baseline") else None
         for ranks, threads in [(1, 1), (1, 2), (2, 1)]:
@@ -79,7 +93,8 @@ def table(rows):
                 f"{', '.join(f'{w:.2f}' for w in sorted(m['walls']))} | "
                 f"{min(m['loads']):.1f}-{max(m['loads']):.1f} | {rate:.3g} | {label} | {m['p2g']:.3f} | "
                 f"{m['grid']:.3f} | {m['g2p']:.3f} | {m['stress']:.3f} | {m['halo']:.3f} ({m['halo_max']:.3f}) | "
-                f"{m['migrate']:.3f} ({m['migrate_max']:.3f}) | {m['rebalance']:.3f} | {m['other']:.3f} |")
+                f"{m['migrate']:.3f} ({m['migrate_max']:.3f}) | {m['rebalance']:.3f} | {other_range(m)} | "
+                f"{compute_spread(m)} |")
     return "\n".join(out)
 
 
@@ -95,7 +110,11 @@ def fit(rows, case, bytes_per_message):
         transfer = exchanges / 2 * (ALPHA + bytes_per_message / BETA)  # a rank sends in one of the two rounds
         f["halo_measured"] = two_r["halo_max"]
         f["halo_transfer"] = transfer
-        f["w"] = max(0.0, two_r["halo_max"] - transfer) / (f["c_p"] * updates_r)
+        # The waiting: in the exchanges beyond the transfer, and at the step's reduction, where the faster rank's
+        # "other" exceeds the slower's (other_max - other_min; 0 in an older CSV without the ranks' spread).
+        f["reduce_wait"] = two_r.get("other_max", 0.0) - two_r.get("other_min", 0.0)
+        f["compute_spread"] = compute_spread(two_r)
+        f["w"] = (max(0.0, two_r["halo_max"] - transfer) + f["reduce_wait"]) / (f["c_p"] * updates_r)
         f["c_m"] = two_r["migrate_max"] / updates_r
         f["rebalance"] = two_r["rebalance"]
         f["speedup_2r"] = one["wall"] / two_r["wall"]
@@ -213,7 +232,8 @@ def main():
         if "w" in c:
             s += (f"; 2 ranks: speed-up {c['speedup_2r']:.2f}x, halo {c['halo_measured']:.3f} s of which transfer "
                   f"(rounds x latency + bytes / bandwidth) {c['halo_transfer'] * 1e3:.2f} ms, waiting w = "
-                  f"{c['w']:.3f} of compute; migration c_m = {c['c_m'] * 1e9:.2f} ns per particle-update; "
+                  f"{c['w']:.3f} of compute (of which waiting at the step's reduction {c['reduce_wait']:.3f} s; "
+                  f"the ranks' compute differed by {c['compute_spread']}); migration c_m = {c['c_m'] * 1e9:.2f} ns per particle-update; "
                   f"halo + migration {c['share_2r']:.1%} of the step; rebalance checks {c['rebalance']:.4f} s")
         print(s)
     weak1, weak2 = median_row(rows, "weak", 1, 1), median_row(rows, "weak", 2, 1)

@@ -84,8 +84,9 @@ fi
 
 load() { cut -d' ' -f1 /proc/loadavg; }
 
-# One run: prints "wall particles p2g grid g2p stress halo migrate rebalance other halo_max migrate_max" (rank 0's
-# phases; *_max over the ranks) from the log of `mpm run`.
+# One run: prints "wall particles p2g grid g2p stress halo migrate rebalance other halo_max migrate_max compute_min
+# compute_max other_min other_max" (rank 0's phases; *_min, *_max over the ranks; compute = P2G + grid + G2P + stress:
+# with equal particle counts, unequal compute means unequal cores) from the log of `mpm run`.
 one_run() {  # ranks threads scene [env assignment]
   local log=$work/run.log
   # OpenMPI binds each rank to one core by default (up to two ranks): a rank with several threads must be unbound,
@@ -103,15 +104,18 @@ for name in ["P2G", "grid update", "G2P", "stress update", "halo", "migrate", "r
     m = re.search(r"^" + re.escape(name) + r"\s+([0-9.]+)\s", text, re.M)
     phase[name] = float(m.group(1)) if m else 0.0
 spread = {}
-for name in ["halo", "migrate", "stepping"]:
+compute = sum(phase[k] for k in ["P2G", "grid update", "G2P", "stress update"])
+for name, alone in [("halo", phase["halo"]), ("migrate", phase["migrate"]), ("compute", compute),
+                    ("other", phase["other"])]:
     m = re.search(r"^ranks' " + re.escape(name) + r": min ([0-9.]+) s, max ([0-9.]+) s", text, re.M)
-    spread[name] = (float(m.group(1)), float(m.group(2))) if m else (phase.get(name, 0.0), phase.get(name, 0.0))
+    spread[name] = (float(m.group(1)), float(m.group(2))) if m else (alone, alone)
 print(done.group(1), done.group(2), *[f"{phase[k]:.4f}" for k in phase],
-      f"{spread['halo'][1]:.4f}", f"{spread['migrate'][1]:.4f}")
+      f"{spread['halo'][1]:.4f}", f"{spread['migrate'][1]:.4f}", *[f"{v:.4f}" for v in spread["compute"]],
+      *[f"{v:.4f}" for v in spread["other"]])
 EOF
 }
 
-echo "case,ranks,threads,particles,steps,run,load,wall,p2g,grid,g2p,stress,halo,migrate,rebalance,other,halo_max,migrate_max" > "$csv"
+echo "case,ranks,threads,particles,steps,run,load,wall,p2g,grid,g2p,stress,halo,migrate,rebalance,other,halo_max,migrate_max,compute_min,compute_max,other_min,other_max" > "$csv"
 run_case() {  # label ranks threads scene
   for k in $(seq 1 "$repeat"); do
     for variant in "" baseline; do
@@ -133,7 +137,7 @@ if [[ $only == *pingpong* ]]; then
     line=$("$mpirun" --oversubscribe -np 2 "$pingpong" | grep '^model:')
     lat=$(echo "$line" | sed -E 's/.*latency ([0-9.]+) us.*/\1/')
     bw=$(echo "$line" | sed -E 's/.*bandwidth ([0-9.]+) MB.*/\1/')
-    echo "pingpong,2,1,0,0,$k,$l,0,$lat,$bw,0,0,0,0,0,0,0,0" >> "$csv"
+    echo "pingpong,2,1,0,0,$k,$l,0,$lat,$bw,0,0,0,0,0,0,0,0,0,0,0,0" >> "$csv"
     echo "  pingpong run $k: latency $lat us, bandwidth $bw MB/s (load $l)" >&2
   done
 fi

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <ostream>
 #include <stdexcept>
+#include <string_view>
 
 #include "mpm/app/flight_recorder.hpp"
 #include "mpm/app/memory_estimate.hpp"
@@ -375,13 +376,25 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
                format_profile(summary.profile));
     if (comm && comm->size() > 1) {  // where the ranks differ: the waiting of one is the other's extra work
       const StepProfile& p = summary.profile;
-      std::array<double, 3> most{p[StepPhase::halo], p[StepPhase::migrate], p.stepping_seconds()};
-      std::array<double, 3> least = most;
+      // Every phase, then the compute (the four phases of the particles and the grid: equal particle counts and
+      // unequal compute mean unequal cores), the stepping total and the particles on the rank.
+      constexpr int n = step_phase_count + 3;
+      std::array<double, n> most{};
+      for (int k = 0; k < step_phase_count; ++k) most[k] = p[static_cast<StepPhase>(k)];
+      most[step_phase_count] =
+          p[StepPhase::p2g] + p[StepPhase::grid_update] + p[StepPhase::g2p] + p[StepPhase::stress_update];
+      most[step_phase_count + 1] = p.stepping_seconds();
+      most[n - 1] = static_cast<double>(sim->particle_count());
+      std::array<double, n> least = most;
       comm->max(most);
       comm->min(least);
-      const std::array<const char*, 3> names{"halo", "migrate", "stepping"};
-      for (std::size_t k = 0; k < names.size(); ++k)
-        fmt::print(log, "ranks' {}: min {:.4f} s, max {:.4f} s\n", names[k], least[k], most[k]);
+      for (int k = 0; k < n - 1; ++k) {
+        const std::string_view name = k < step_phase_count    ? step_phase_names[k]
+                                      : k == step_phase_count ? std::string_view("compute")
+                                                              : std::string_view("stepping");
+        fmt::print(log, "ranks' {}: min {:.4f} s, max {:.4f} s\n", name, least[k], most[k]);
+      }
+      fmt::print(log, "ranks' particles at the end: min {:.0f}, max {:.0f}\n", least[n - 1], most[n - 1]);
     }
   }
   return summary;

@@ -97,6 +97,14 @@ void Simulation<Dim>::distribute(std::shared_ptr<Communicator> comm) {
     p.gather(keep);
   }
   scheme_->particles_redistributed(bodies_, grid_);
+  // The cut flags of the first step (TileBins::exchange): its scatters then skip the exchanges of the bodies away
+  // from the cuts too, instead of every rank waiting, body after body, for the owner of each body's particles.
+  std::vector<double> near(bodies_.size(), 0.0);
+  scan_particles(near);
+  comm_->max(near);
+  near_cut_.assign(bodies_.size(), 0);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) near_cut_[b] = near[b] != 0 ? 1 : 0;
+  near_cut_known_ = true;
   take_snapshot();
 }
 
