@@ -84,6 +84,10 @@ NodeRuns ActiveTiles::update(const TileGrid& grid, std::span<const TileBins* con
     for (std::size_t t = 0; t < tiles; ++t)
       if (b->offsets[t + 1] > b->offsets[t]) now_[t] = 1;
   }
+  if (!always_.empty()) {
+    if (always_.size() != tiles) throw std::logic_error("ActiveTiles: the always-marked tiles are of another grid");
+    for (std::size_t t = 0; t < tiles; ++t) now_[t] |= always_[t];
+  }
   for (std::size_t t = 0; t < tiles; ++t) either_[t] |= now_[t];
   // What the kernels visited at the previous step: every node after a dense step, nothing on a zero grid.
   previous_.clear();

@@ -329,6 +329,13 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) {
   ctx.comm = comm_.get();
   ctx.owned_nodes = halo_->owned_nodes();
   ctx.active_nodes = halo_->held_nodes();
+  // Sparse tiles on a rank (docs/distributed.md §5.11): the nodes its particles reach, now or at the previous step, and
+  // always the reach of its tiles that write shared nodes (what the exchanges write, what other ranks' particles
+  // reach of its own nodes). Outside them the rank's grid is zero or never read.
+  if (settings_.sparse_grid) {
+    active_tiles_.always_mark(halo_->own_shared_tiles());
+    ctx.active_tiles = &active_tiles_;
+  }
 }
 
 #define MPM_SIMULATION_DISTRIBUTED(D)                                              \

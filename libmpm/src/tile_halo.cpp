@@ -261,6 +261,9 @@ TileHalo::TileHalo(Communicator& comm, const TileGrid& grid, std::vector<int> ow
         }
     writes_shared_[static_cast<std::size_t>(t)] = shared ? 1 : 0;
   }
+  own_shared_.assign(writes_shared_.size(), 0);
+  for (std::size_t t = 0; t < own_shared_.size(); ++t)
+    own_shared_[t] = writes_shared_[t] != 0 && owner_[t] == comm.rank() ? 1 : 0;
   Index stride = 1;
   for (int d = 0; d < grid_.dim; ++d) {
     tile_term_[d].resize(static_cast<std::size_t>(grid_.cells[d]));

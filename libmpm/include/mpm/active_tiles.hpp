@@ -35,6 +35,10 @@ class ActiveTiles {
   /// one's, and the first after forget(), returns every node (the previous marks say nothing then); the first step
   /// of a new simulation knows that no tile was marked before (its grid is zero).
   NodeRuns update(const TileGrid& grid, std::span<const TileBins* const> bins);
+  /// Tiles marked at every update besides the occupied ones (one mark per tile of the next update's grid, or empty):
+  /// a distributed run's tiles of this rank that write shared nodes (TileHalo::own_shared_tiles), whose nodes the
+  /// exchanges write and other ranks' particles reach. The span must live until the next update.
+  void always_mark(std::span<const std::uint8_t> marks) { always_ = marks; }
   /// The nodes the last update returned.
   NodeRuns nodes() const { return dense_ ? NodeRuns{} : NodeRuns::of(runs_); }
   /// The stretches of nodes the last update left: maximal runs between the nodes it returned (before the first, after
@@ -60,6 +64,7 @@ class ActiveTiles {
   bool zero_ = true;   ///< the grid was never written (a new simulation's zero-filled arrays): no tile marked before
   bool dense_ = true;
   std::vector<std::uint8_t> now_, either_;
+  std::span<const std::uint8_t> always_;
   std::vector<NodeRun> runs_, previous_, left_;
 };
 

@@ -148,6 +148,10 @@ class TileHalo {
   /// the reach of a tile of another rank (the same answer on every rank). A body none of whose particles sits in
   /// such a tile changes no ghost node in a scatter, which then needs no exchange (TileBins::exchange).
   bool writes_shared(Index t) const { return writes_shared_[static_cast<std::size_t>(t)] != 0; }
+  /// Per tile, 1 for this rank's tiles that write shared nodes: with sparse tiles the grid kernels always visit their
+  /// reach, which holds every node an exchange writes on this rank and every node it owns that another rank's
+  /// particles reach (ActiveTiles::always_mark).
+  std::span<const std::uint8_t> own_shared_tiles() const { return own_shared_; }
   /// The tile-number term of cell c on axis d (coordinate x the axis's tile stride): a tile's number is the sum
   /// over the axes, a table lookup per axis instead of a division.
   Index tile_term(int d, int c) const { return tile_term_[d][static_cast<std::size_t>(c)]; }
@@ -181,6 +185,7 @@ class TileHalo {
   std::vector<int> owner_;
   HaloPlan plan_;
   std::vector<std::uint8_t> writes_shared_;      ///< per tile
+  std::vector<std::uint8_t> own_shared_;         ///< per tile: this rank's and writes_shared
   std::array<std::vector<Index>, 3> tile_term_;  ///< per axis and cell
   mutable std::vector<std::vector<std::byte>> send_, receive_;
   // The scatter in progress (begin_scatter .. end_scatter): its arrays and the messages in flight.

@@ -61,8 +61,12 @@ void bin_bodies(StepContext<Dim>& ctx) {
   std::vector<const TileBins*> bins;
   bins.reserve(ctx.bodies.size());
   for (const auto& body : ctx.bodies) bins.push_back(&body.bins);
-  ctx.active_nodes = ctx.active_tiles->update(
-      make_tile_grid(g, Shape::slab_cells, Shape::slab_reach_below, Shape::slab_reach_above), bins);
+  // A dense update (a new tiling, after forget()) keeps the context's set: every node in one process, the rank's held
+  // nodes in a distributed run.
+  if (const NodeRuns nodes = ctx.active_tiles->update(
+          make_tile_grid(g, Shape::slab_cells, Shape::slab_reach_below, Shape::slab_reach_above), bins);
+      !nodes.all)
+    ctx.active_nodes = nodes;
   // Memory follows the particles: the pages of the stretches the particles left go back to the system.
   for (const auto& [first, end] : ctx.active_tiles->left()) {
     ctx.grid.release_nodes(first, end);
