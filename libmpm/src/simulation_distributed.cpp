@@ -21,11 +21,20 @@ void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_
 
 namespace {
 
-/// The cell of x on axis d (clamped into the grid; NaN: cell 0, the guard has tripped).
+/// The cell of coordinate `xd` on axis d: clamped into the grid before the conversion (so that no value is out of
+/// int's range), NaN to cell 0 (the guard has tripped then). Branch-free: scan_particles' loop vectorises.
+template <int Dim>
+int cell_on_axis(Real xd, const GridGeometry<Dim>& g, int d) {
+  Real xi = (xd - g.origin[d]) * g.inv_h[d];
+  xi = xi > 0 ? xi : 0;  // NaN: 0
+  const auto top = static_cast<Real>(g.cells(d) - 1);
+  xi = xi < top ? xi : top;
+  return static_cast<int>(xi);
+}
+
 template <int Dim>
 int cell_on_axis(const VecU<Dim>& x, const GridGeometry<Dim>& g, int d) {
-  const Real xi = (x[d] - g.origin[d]) * g.inv_h[d];
-  return std::isfinite(xi) ? std::clamp(static_cast<int>(xi), 0, g.cells(d) - 1) : 0;
+  return cell_on_axis<Dim>(x[d], g, d);
 }
 
 /// The tile holding x (TileGrid's numbering, bin_by_tile's).
@@ -189,23 +198,39 @@ bool Simulation<Dim>::scan_particles(std::span<double> near_cut) const {
   const HaloPlan& plan = halo_->plan();
   const TileHalo& halo = *halo_;
   const bool movable = scheme_->reorders_particles();
+  const int me = comm_->rank();
+  std::array<const std::uint8_t*, Dim> flags{};
+  if (plan.is_box)
+    for (int d = 0; d < Dim; ++d) flags[d] = plan.cell_flags[static_cast<std::size_t>(d)].data();
+  // Per particle, bit 1: outside this rank's tiles (keeps() is false), bit 2: in a tile that writes shared nodes.
+  // The cells give both; a box of tiles answers with a lookup per axis (HaloPlan::cell_flags), other tile sets by
+  // the particle's tile. Blocks without a branch inside (this pass runs after every step over every particle of the
+  // rank), the early exit between blocks.
+  const auto block_flags = [&](const VecU<Dim>* x, Index first, Index end) {
+    unsigned any = 0;
+    if (plan.is_box) {
+      for (Index i = first; i < end; ++i)
+        for (int d = 0; d < Dim; ++d) any |= flags[d][cell_on_axis<Dim>(x[i][d], g, d)];
+      return any;
+    }
+    for (Index i = first; i < end; ++i) {
+      Index t = 0;  // TileGrid's numbering, bin_by_tile's
+      for (int d = 0; d < Dim; ++d) t += halo.tile_term(d, cell_on_axis<Dim>(x[i][d], g, d));
+      any |=
+          static_cast<unsigned>(halo.owners()[static_cast<std::size_t>(t)] != me) | (halo.writes_shared(t) ? 2u : 0u);
+    }
+    return any;
+  };
+  constexpr Index block = 2048;
   bool leaving = false;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const VecU<Dim>* x = owner_positions(*scheme_, bodies_[b].particles);
     bool near = false;
-    for (Index i = 0, n = bodies_[b].particles.size(); i < n; ++i) {
-      // keeps(x[i]) and the particle's tile (TileGrid's numbering, bin_by_tile's) from the same cells
-      Index t = 0;
-      bool in = true;
-      for (int d = 0; d < Dim; ++d) {
-        const int c = cell_on_axis<Dim>(x[i], g, d);
-        in = in && c >= plan.cell_box[d].first && c < plan.cell_box[d].second;
-        t += halo.tile_term(d, c);
-      }
-      if (!plan.is_box) in = halo.owners()[static_cast<std::size_t>(t)] == comm_->rank();
-      near = near || !in || halo.writes_shared(t);
-      leaving = leaving || (movable && !in);
+    for (Index i0 = 0, n = bodies_[b].particles.size(); i0 < n; i0 += block) {
       if (near && (leaving || !movable)) break;  // nothing more to learn from this body
+      const unsigned any = block_flags(x, i0, std::min(n, i0 + block));
+      near = near || any != 0;
+      leaving = leaving || (movable && (any & 1u) != 0);
     }
     near_cut[b] = near ? 1 : 0;
   }

@@ -119,6 +119,35 @@ std::vector<int> bisect_tiles(const TileGrid& grid, std::span<const double> cost
   return owner;
 }
 
+std::vector<std::uint8_t> shared_writing_tiles(const TileGrid& grid, std::span<const int> owner) {
+  // Tiles are at least a reach wide, so only neighbours overlap; two tiles on each side are checked all the same.
+  std::vector<std::uint8_t> shared(static_cast<std::size_t>(grid.tile_count()), 0);
+  const auto overlap = [&](int d, int a, int b) {
+    const auto [a0, a1] = grid.reach(d, a);
+    const auto [b0, b1] = grid.reach(d, b);
+    return a0 <= b1 && b0 <= a1;
+  };
+  for (Index t = 0; t < grid.tile_count(); ++t) {
+    const auto c = grid.coordinates(t);
+    std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0}, n{};
+    for (int d = 0; d < grid.dim; ++d) {
+      lo[d] = std::max(0, c[d] - 2);
+      hi[d] = std::min(grid.tiles[d] - 1, c[d] + 2);
+    }
+    bool found = false;
+    for (n[2] = lo[2]; n[2] <= hi[2] && !found; ++n[2])
+      for (n[1] = lo[1]; n[1] <= hi[1] && !found; ++n[1])
+        for (n[0] = lo[0]; n[0] <= hi[0] && !found; ++n[0]) {
+          if (owner[static_cast<std::size_t>(grid.index(n))] == owner[static_cast<std::size_t>(t)]) continue;
+          bool all = true;
+          for (int d = 0; d < grid.dim; ++d) all = all && overlap(d, c[d], n[d]);
+          found = all;
+        }
+    shared[static_cast<std::size_t>(t)] = found ? 1 : 0;
+  }
+  return shared;
+}
+
 HaloPlan plan_halo(const TileGrid& grid, std::span<const int> owner, int rank) {
   if (static_cast<Index>(owner.size()) != grid.tile_count())
     throw std::invalid_argument("plan_halo: one owner per tile");
@@ -143,6 +172,28 @@ HaloPlan plan_halo(const TileGrid& grid, std::span<const int> owner, int rank) {
   plan.is_box = Index{tile_hi[0] - tile_lo[0]} * (tile_hi[1] - tile_lo[1]) * (tile_hi[2] - tile_lo[2]) == mine;
   for (int d = 0; d < 3; ++d)
     plan.cell_box[d] = {tile_lo[d] * grid.tile_cells[d], std::min(grid.cells[d], tile_hi[d] * grid.tile_cells[d])};
+  if (plan.is_box) {
+    // A tile of the box writes shared nodes iff on some axis a tile outside the box, within two tiles along that axis
+    // only, has an overlapping reach (the test of TileHalo's constructor: a tile differing on other axes too lies
+    // outside on one axis, and the tile across on that axis alone overlaps as well).
+    for (int d = 0; d < grid.dim; ++d) {
+      auto& flags = plan.cell_flags[static_cast<std::size_t>(d)];
+      flags.assign(static_cast<std::size_t>(grid.cells[d]), 0);
+      for (int c = 0; c < grid.cells[d]; ++c) {
+        const int tc = c / grid.tile_cells[d];
+        if (tc < tile_lo[d] || tc >= tile_hi[d]) {
+          flags[static_cast<std::size_t>(c)] = 1;
+          continue;
+        }
+        const auto [a0, a1] = grid.reach(d, tc);
+        for (int n = std::max(0, tc - 2); n <= std::min(grid.tiles[d] - 1, tc + 2); ++n) {
+          if (n >= tile_lo[d] && n < tile_hi[d]) continue;
+          const auto [b0, b1] = grid.reach(d, n);
+          if (a0 <= b1 && b0 <= a1) flags[static_cast<std::size_t>(c)] = 2;
+        }
+      }
+    }
+  }
   const auto node_index = [&](const std::array<int, 3>& k) {
     return k[0] + Index{grid.nodes[0]} * (k[1] + Index{grid.nodes[1]} * k[2]);
   };
@@ -235,32 +286,7 @@ TileHalo::TileHalo(Communicator& comm, const TileGrid& grid, std::vector<int> ow
     if (o < 0 || o >= comm.size())
       throw std::invalid_argument("TileHalo: a tile's owner " + std::to_string(o) + " is not a rank");
   plan_ = plan_halo(grid_, owner_, comm.rank());
-  // Tiles whose reach overlaps the reach of another rank's tile, on every axis (tiles are at least a reach wide, so
-  // only neighbours overlap; two tiles on each side are checked all the same).
-  writes_shared_.assign(static_cast<std::size_t>(grid_.tile_count()), 0);
-  const auto overlap = [&](int d, int a, int b) {
-    const auto [a0, a1] = grid_.reach(d, a);
-    const auto [b0, b1] = grid_.reach(d, b);
-    return a0 <= b1 && b0 <= a1;
-  };
-  for (Index t = 0; t < grid_.tile_count(); ++t) {
-    const auto c = grid_.coordinates(t);
-    std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0}, n{};
-    for (int d = 0; d < grid_.dim; ++d) {
-      lo[d] = std::max(0, c[d] - 2);
-      hi[d] = std::min(grid_.tiles[d] - 1, c[d] + 2);
-    }
-    bool shared = false;
-    for (n[2] = lo[2]; n[2] <= hi[2] && !shared; ++n[2])
-      for (n[1] = lo[1]; n[1] <= hi[1] && !shared; ++n[1])
-        for (n[0] = lo[0]; n[0] <= hi[0] && !shared; ++n[0]) {
-          if (owner_[static_cast<std::size_t>(grid_.index(n))] == owner_[static_cast<std::size_t>(t)]) continue;
-          bool all = true;
-          for (int d = 0; d < grid_.dim; ++d) all = all && overlap(d, c[d], n[d]);
-          shared = all;
-        }
-    writes_shared_[static_cast<std::size_t>(t)] = shared ? 1 : 0;
-  }
+  writes_shared_ = shared_writing_tiles(grid_, owner_);
   own_shared_.assign(writes_shared_.size(), 0);
   for (std::size_t t = 0; t < own_shared_.size(); ++t)
     own_shared_[t] = writes_shared_[t] != 0 && owner_[t] == comm.rank() ? 1 : 0;

@@ -174,6 +174,45 @@ TEST(TileHalo, BisectedBoxesGiveTheOneProcessSums) {
   for (int ranks : {2, 4, 8}) run_and_compare(g3, mpm::bisect_tiles(g3, cost3, ranks), ranks);
 }
 
+// The per-axis cell flags of a box plan (HaloPlan::cell_flags, the post-step pass over the particles) answer, for
+// every cell of the grid, what the cell's tile answers: outside the rank's box (bit 1), or outside or writing shared
+// nodes (any bit). Bisected boxes in 2D and 3D with the reach of hats, quadratic and cubic B-splines, 2 to 8 ranks.
+TEST(TileHalo, CellFlagsOfABoxAgreeWithTheTilesThatWriteSharedNodes) {
+  const auto check = [](const TileGrid& g, int ranks) {
+    std::vector<double> cost(static_cast<std::size_t>(g.tile_count()));
+    for (std::size_t t = 0; t < cost.size(); ++t) cost[t] = 1.0 + static_cast<double>(t % 5);
+    const auto owner = mpm::bisect_tiles(g, cost, ranks);
+    const auto shared = mpm::shared_writing_tiles(g, owner);
+    int compared = 0, writing = 0;
+    for (int r = 0; r < ranks; ++r) {
+      const HaloPlan plan = mpm::plan_halo(g, owner, r);
+      ASSERT_TRUE(plan.is_box);
+      std::array<int, 3> c{0, 0, 0};
+      for (c[2] = 0; c[2] < (g.dim > 2 ? g.cells[2] : 1); ++c[2])
+        for (c[1] = 0; c[1] < g.cells[1]; ++c[1])
+          for (c[0] = 0; c[0] < g.cells[0]; ++c[0]) {
+            unsigned any = 0;
+            std::array<int, 3> tile{0, 0, 0};
+            for (int d = 0; d < g.dim; ++d) {
+              any |= plan.cell_flags[static_cast<std::size_t>(d)][static_cast<std::size_t>(c[d])];
+              tile[d] = c[d] / g.tile_cells[d];
+            }
+            const auto t = static_cast<std::size_t>(g.index(tile));
+            const bool outside = owner[t] != r;
+            ASSERT_EQ((any & 1u) != 0, outside) << ranks << " ranks, rank " << r << ", tile " << t;
+            ASSERT_EQ(any != 0, outside || shared[t] != 0) << ranks << " ranks, rank " << r << ", tile " << t;
+            ++compared;
+            writing += !outside && shared[t] != 0 ? 1 : 0;
+          }
+    }
+    EXPECT_GT(writing, 0);  // the case has cells in tiles that write shared nodes, and others
+    EXPECT_LT(writing, compared);
+  };
+  for (const auto& [below, above] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{2, 3}})
+    for (int ranks : {2, 3, 4, 7}) check(grid_2d(45, 37, 3, 8, below, above), ranks);
+  for (int ranks : {2, 4, 8}) check(grid_3d(17, 3, 8, 1, 2), ranks);
+}
+
 // Tiles dealt at random (the debug reassignment of the MPI tests): a node's writers on up to 2^d ranks.
 TEST(TileHalo, TilesDealtAtRandomGiveTheOneProcessSums) {
   std::mt19937 rng(7);

@@ -111,6 +111,12 @@ struct HaloPlan {
   /// Whether this rank's tiles are exactly a box of tile coordinates; `cell_box` is then its cells, [lo, hi) per axis.
   bool is_box = false;
   std::array<std::pair<int, int>, 3> cell_box{};
+  /// Box plans only, per axis and cell of the grid: bit 1 when the cell lies outside cell_box on that axis, bit 2 when
+  /// it lies inside and its tile's reach overlaps the reach of a tile across a face of the box on that axis (which
+  /// another rank owns). For the cells (c_0 .. c_d-1) of a particle: it is outside the box iff some flag has bit 1,
+  /// and it is outside or in a tile that writes shared nodes (TileHalo::writes_shared) iff some flag is non-zero: the
+  /// post-step pass over the particles (Simulation::scan_particles) needs a lookup per axis and nothing else.
+  std::array<std::vector<std::uint8_t>, 3> cell_flags;
   /// The halo model: bytes this rank sends per scatter of arrays of `bytes_per_node` in all.
   std::size_t bytes_per_scatter(std::size_t bytes_per_node) const {
     std::size_t n = 0;
@@ -118,6 +124,10 @@ struct HaloPlan {
     return n * bytes_per_node;
   }
 };
+
+/// Per tile, 1 when its reach overlaps the reach of a tile of another owner on every axis: its particles can write a
+/// node that more than one rank holds (TileHalo::writes_shared).
+std::vector<std::uint8_t> shared_writing_tiles(const TileGrid& grid, std::span<const int> owner);
 
 /// The plan of rank `rank` when tile t belongs to `owner[t]`; throws std::invalid_argument when that rank owns no tile.
 HaloPlan plan_halo(const TileGrid& grid, std::span<const int> owner, int rank);
