@@ -65,15 +65,31 @@ def compute_spread(m):
     return f"{hi / lo - 1:.1%}" if m["ranks"] > 1 and lo > 0 else "-"
 
 
+def paired(rows, case, ranks, threads):
+    """The median over the rounds (the CSV's run column) of the round's 1 x 1 wall time over this configuration's (weak:
+    the efficiency); '-' for 1 x 1 or without a common round. The script runs every configuration once per round,
+    so a pair saw the same machine."""
+    if (ranks, threads) == (1, 1):
+        return "-"
+    base = case.replace("_baseline", "")
+    one = {r["run"]: r["wall"] for r in rows if r["case"] == base and r["ranks"] == 1 and r["threads"] == 1}
+    ratios = sorted(one[r["run"]] / r["wall"] for r in rows
+                    if r["case"] == case and r["ranks"] == ranks and r["threads"] == threads and r["run"] in one)
+    if not ratios:
+        return "-"
+    suffix = "" if case.startswith("weak") else "x"
+    return f"{statistics.median(ratios):.2f}{suffix} ({', '.join(f'{q:.2f}' for q in ratios)})"
+
+
 def other_range(m):
     lo, hi = m.get("other_min", m["other"]), m.get("other_max", m["other"])
     return f"{m['other']:.3f}" if m["ranks"] == 1 or hi == lo else f"{lo:.3f}-{hi:.3f}"
 
 
 def table(rows):
-    out = ["| case | ranks x threads | particles | wall (median) | runs | load | updates/s | speed-up | P2G | grid | "
+    out = ["| case | ranks x threads | particles | wall (median) | runs | load | updates/s | speed-up | paired | P2G | grid | "
            "G2P | stress | halo (max) | migrate (max) | rebalance | other (min-max) | compute spread |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for case in ["strong2d", "strong2d_baseline", "strong3d", "strong3d_baseline", "weak", "weak_baseline"]:
         base = median_row(rows, case.replace("_baseline", ""), 1, 1) if case.endswith("_baseline") else None
         for ranks, threads in [(1, 1), (1, 2), (2, 1)]:
@@ -91,7 +107,8 @@ def table(rows):
             out.append(
                 f"| {case} | {ranks:.0f} x {threads:.0f} | {m['particles']:.0f} | {m['wall']:.3f} s | "
                 f"{', '.join(f'{w:.2f}' for w in sorted(m['walls']))} | "
-                f"{min(m['loads']):.1f}-{max(m['loads']):.1f} | {rate:.3g} | {label} | {m['p2g']:.3f} | "
+                f"{min(m['loads']):.1f}-{max(m['loads']):.1f} | {rate:.3g} | {label} | "
+                f"{paired(rows, case, ranks, threads)} | {m['p2g']:.3f} | "
                 f"{m['grid']:.3f} | {m['g2p']:.3f} | {m['stress']:.3f} | {m['halo']:.3f} ({m['halo_max']:.3f}) | "
                 f"{m['migrate']:.3f} ({m['migrate_max']:.3f}) | {m['rebalance']:.3f} | {other_range(m)} | "
                 f"{compute_spread(m)} |")

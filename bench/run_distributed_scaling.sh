@@ -12,12 +12,13 @@
 #   weak  5e5 particles per rank: the 2D scene at 707^2 cells (~5.0e5) on 1 rank, at 1000^2 (1.0e6) on 2 ranks
 #   pingpong  bench_pingpong (one-way time 8 B .. 8 MB; latency and bandwidth)
 # Scenes are written from examples/02_two_disks/scene.yaml into a temporary directory (removed at the end).
-# Each run is repeated N times (default 3) and the median stepping wall time is reported, with its phases (s) and
-# the machine's 1-minute load (uptime) before the run: the machine may be shared, so say how loaded it was.
+# Each case runs N rounds (default 3), each round every configuration once (so that a drift of the machine's speed
+# reaches all alike); the median stepping wall time is reported with its phases (s) and the machine's 1-minute load
+# (uptime) before the run, and the speed-up both of the medians and paired (the median over the rounds of the
+# round's 1 x 1 time over the configuration's): the machine may be shared, so say how loaded it was.
 # `mpm run` prints rank 0's profile; with several ranks it also prints each phase's min and max over the ranks.
-# --baseline: every multi-rank run is followed by the same run with MPM_DEBUG_SLAB_BASELINE=1 (the blocking halo
-# exchange and the full owner scan of the migration from before the overlap; same bits), rows "<case>_baseline":
-# a before/after comparison under the same load. --quick: scenes 4x (2D) and ~3x (3D) smaller, a smoke test.
+# --baseline: every multi-rank run is followed by the same run with MPM_DEBUG_ALWAYS_EXCHANGE=1 (every scatter
+# exchanges, as before session 16; same bits), rows "<case>_baseline": a before/after comparison under the same load. --quick: scenes 4x (2D) and ~3x (3D) smaller, a smoke test.
 #
 # Environment: MPM_BUILD_DIR (default build), MPM_BIN (default $MPM_BUILD_DIR/apps/mpm), MPIRUN (default mpirun). As root the OMPI_ALLOW_RUN_AS_ROOT pair is
 # set here. Needs a build with MPM_WITH_MPI and the targets mpm and bench_pingpong.
@@ -116,17 +117,24 @@ EOF
 }
 
 echo "case,ranks,threads,particles,steps,run,load,wall,p2g,grid,g2p,stress,halo,migrate,rebalance,other,halo_max,migrate_max,compute_min,compute_max,other_min,other_max" > "$csv"
-run_case() {  # label ranks threads scene
+# Every configuration of a case once per round, the rounds repeated: the machine's speed drifts over minutes (a shared
+# VM), and runs of one configuration in a row would each see another machine. The model pairs the runs of a round.
+run_cases() {  # label "ranks threads scene" ...
+  local label=$1; shift
+  local k cfg ranks threads scene variant name setting l r wall particles rest
   for k in $(seq 1 "$repeat"); do
-    for variant in "" baseline; do
-      [ -z "$variant" ] || { [ "$baseline" = 1 ] && [ "$2" -gt 1 ]; } || continue
-      local label=$1 setting=""
-      [ -z "$variant" ] || { label=${1}_baseline; setting=MPM_DEBUG_SLAB_BASELINE=1; }
-      local l; l=$(load)
-      local r; r=$(one_run "$2" "$3" "$4" $setting)
-      read -r wall particles rest <<< "$r"
-      echo "$label,$2,$3,$particles,$steps,$k,$l,$wall,$(echo "$rest" | tr ' ' ',')" >> "$csv"
-      echo "  $label np $2 x $3 threads, run $k: $wall s (load $l)" >&2
+    for cfg in "$@"; do
+      read -r ranks threads scene <<< "$cfg"
+      for variant in "" baseline; do
+        [ -z "$variant" ] || { [ "$baseline" = 1 ] && [ "$ranks" -gt 1 ]; } || continue
+        name=$label setting=""
+        [ -z "$variant" ] || { name=${label}_baseline; setting=MPM_DEBUG_ALWAYS_EXCHANGE=1; }
+        l=$(load)
+        r=$(one_run "$ranks" "$threads" "$scene" $setting)
+        read -r wall particles rest <<< "$r"
+        echo "$name,$ranks,$threads,$particles,$steps,$k,$l,$wall,$(echo "$rest" | tr ' ' ',')" >> "$csv"
+        echo "  $name np $ranks x $threads threads, round $k: $wall s (load $l)" >&2
+      done
     done
   done
 }
@@ -141,8 +149,8 @@ if [[ $only == *pingpong* ]]; then
     echo "  pingpong run $k: latency $lat us, bandwidth $bw MB/s (load $l)" >&2
   done
 fi
-if [[ $only == *2d* ]]; then for rt in "1 1" "1 2" "2 1"; do run_case strong2d $rt strong2d; done; fi
-if [[ $only == *3d* ]]; then for rt in "1 1" "1 2" "2 1"; do run_case strong3d $rt strong3d; done; fi
-if [[ $only == *weak* ]]; then run_case weak 1 1 weak1; run_case weak 2 1 weak2; fi
+if [[ $only == *2d* ]]; then run_cases strong2d "1 1 strong2d" "1 2 strong2d" "2 1 strong2d"; fi
+if [[ $only == *3d* ]]; then run_cases strong3d "1 1 strong3d" "1 2 strong3d" "2 1 strong3d"; fi
+if [[ $only == *weak* ]]; then run_cases weak "1 1 weak1" "2 1 weak2"; fi
 echo "machine after: $(uptime)" >&2
 /usr/bin/python3 "$here/bench/distributed_model.py" "$csv"
