@@ -115,8 +115,9 @@ struct HaloPlan {
   /// it lies inside and its tile's reach overlaps the reach of a tile across a face of the box on that axis (which
   /// another rank owns). For the cells (c_0 .. c_d-1) of a particle: it is outside the box iff some flag has bit 1,
   /// and it is outside or in a tile that writes shared nodes (TileHalo::writes_shared) iff some flag is non-zero: the
-  /// post-step pass over the particles (Simulation::scan_particles) needs a lookup per axis and nothing else.
-  std::array<std::vector<std::uint8_t>, 3> cell_flags;
+  /// post-step pass over the particles (Simulation::scan_particles) needs a lookup per axis and nothing else (32-bit
+  /// entries: the lookups vectorise as gathers, which bytes do not).
+  std::array<std::vector<std::uint32_t>, 3> cell_flags;
   /// The halo model: bytes this rank sends per scatter of arrays of `bytes_per_node` in all.
   std::size_t bytes_per_scatter(std::size_t bytes_per_node) const {
     std::size_t n = 0;
