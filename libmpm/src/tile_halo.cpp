@@ -119,14 +119,20 @@ std::vector<int> bisect_tiles(const TileGrid& grid, std::span<const double> cost
   return owner;
 }
 
+namespace {
+
+/// Whether the node reaches of tiles a and b (coordinates on axis d) overlap.
+bool reaches_overlap(const TileGrid& grid, int d, int a, int b) {
+  const auto [a0, a1] = grid.reach(d, a);
+  const auto [b0, b1] = grid.reach(d, b);
+  return a0 <= b1 && b0 <= a1;
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> shared_writing_tiles(const TileGrid& grid, std::span<const int> owner) {
   // Tiles are at least a reach wide, so only neighbours overlap; two tiles on each side are checked all the same.
   std::vector<std::uint8_t> shared(static_cast<std::size_t>(grid.tile_count()), 0);
-  const auto overlap = [&](int d, int a, int b) {
-    const auto [a0, a1] = grid.reach(d, a);
-    const auto [b0, b1] = grid.reach(d, b);
-    return a0 <= b1 && b0 <= a1;
-  };
   for (Index t = 0; t < grid.tile_count(); ++t) {
     const auto c = grid.coordinates(t);
     std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0}, n{};
@@ -140,7 +146,7 @@ std::vector<std::uint8_t> shared_writing_tiles(const TileGrid& grid, std::span<c
         for (n[0] = lo[0]; n[0] <= hi[0] && !found; ++n[0]) {
           if (owner[static_cast<std::size_t>(grid.index(n))] == owner[static_cast<std::size_t>(t)]) continue;
           bool all = true;
-          for (int d = 0; d < grid.dim; ++d) all = all && overlap(d, c[d], n[d]);
+          for (int d = 0; d < grid.dim; ++d) all = all && reaches_overlap(grid, d, c[d], n[d]);
           found = all;
         }
     shared[static_cast<std::size_t>(t)] = found ? 1 : 0;
@@ -185,12 +191,9 @@ HaloPlan plan_halo(const TileGrid& grid, std::span<const int> owner, int rank) {
           flags[static_cast<std::size_t>(c)] = 1;
           continue;
         }
-        const auto [a0, a1] = grid.reach(d, tc);
-        for (int n = std::max(0, tc - 2); n <= std::min(grid.tiles[d] - 1, tc + 2); ++n) {
-          if (n >= tile_lo[d] && n < tile_hi[d]) continue;
-          const auto [b0, b1] = grid.reach(d, n);
-          if (a0 <= b1 && b0 <= a1) flags[static_cast<std::size_t>(c)] = 2;
-        }
+        for (int n = std::max(0, tc - 2); n <= std::min(grid.tiles[d] - 1, tc + 2); ++n)
+          if ((n < tile_lo[d] || n >= tile_hi[d]) && reaches_overlap(grid, d, tc, n))
+            flags[static_cast<std::size_t>(c)] = 2;
       }
     }
   }
