@@ -12,6 +12,7 @@
 #include <cstring>
 #include <iostream>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,27 @@ TEST(ActiveTiles, RunsHoldExactlyTheNodesTheMarkedTilesReach) {
       expect_runs_are_the_reached_set(make_tile_grid(g3, slab, below, above), rng, fraction);
     }
   }
+}
+
+// A distributed rank's tiles that write shared nodes (ActiveTiles::always_mark) are visited at every update, with or
+// without particles, and a mark per tile of another grid is refused.
+TEST(ActiveTiles, AlwaysMarkedTilesAreVisitedAtEveryUpdate) {
+  const GridGeometry<2> g(Vec<2>::Zero(), Vec<2>::Constant(0.1), {37, 22});
+  const TileGrid grid = make_tile_grid(g, 2, 0, 1);
+  std::vector<std::uint8_t> marks(static_cast<std::size_t>(grid.tile_count()), 0);
+  marks[3] = marks[static_cast<std::size_t>(grid.tile_count()) - 1] = 1;
+  std::vector<NodeRun> expected;
+  reached_node_runs(grid, marks, expected);
+  ActiveTiles active;
+  active.always_mark(marks);
+  for (int update = 0; update < 2; ++update) {
+    const NodeRuns nodes = active.update(grid, {});
+    ASSERT_FALSE(nodes.all);
+    EXPECT_EQ(std::vector<NodeRun>(nodes.runs.begin(), nodes.runs.end()), expected) << "update " << update;
+  }
+  const std::vector<std::uint8_t> other(marks.size() + 1, 0);
+  active.always_mark(other);
+  EXPECT_THROW(active.update(grid, {}), std::logic_error);
 }
 
 // ---- sparse against dense, whole runs ----
