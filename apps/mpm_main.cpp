@@ -89,8 +89,8 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   run_cmd->add_flag(
       "--profile", profile,
-      "time the phases of every step (P2G, grid update, G2P, stress update, halo, migrate, rebalance, output, "
-      "other) and print the breakdown at the end (under mpirun: rank 0's, and the ranks' spread)");
+      "time the phases of every step (P2G, grid update, G2P, stress update, halo, migrate, rebalance, sort, "
+      "output, other) and print the breakdown at the end (under mpirun: rank 0's, and the ranks' spread)");
   auto* steps_opt = run_cmd
                         ->add_option("--steps", steps,
                                      "stop after N steps (N >= 1), or at the end time if sooner: to try a scene "

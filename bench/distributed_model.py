@@ -88,8 +88,8 @@ def other_range(m):
 
 def table(rows):
     out = ["| case | ranks x threads | particles | wall (median) | runs | load | updates/s | speed-up | paired | P2G | grid | "
-           "G2P | stress | halo (max) | migrate (max) | rebalance | other (min-max) | compute spread |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "G2P | stress | halo (max) | migrate (max) | rebalance | sort | other (min-max) | compute spread |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for case in ["strong2d", "strong2d_baseline", "strong3d", "strong3d_baseline", "weak", "weak_baseline"]:
         base = median_row(rows, case.replace("_baseline", ""), 1, 1) if case.endswith("_baseline") else None
         for ranks, threads in [(1, 1), (1, 2), (2, 1)]:
@@ -110,7 +110,8 @@ def table(rows):
                 f"{min(m['loads']):.1f}-{max(m['loads']):.1f} | {rate:.3g} | {label} | "
                 f"{paired(rows, case, ranks, threads)} | {m['p2g']:.3f} | "
                 f"{m['grid']:.3f} | {m['g2p']:.3f} | {m['stress']:.3f} | {m['halo']:.3f} ({m['halo_max']:.3f}) | "
-                f"{m['migrate']:.3f} ({m['migrate_max']:.3f}) | {m['rebalance']:.3f} | {other_range(m)} | "
+                f"{m['migrate']:.3f} ({m['migrate_max']:.3f}) | {m['rebalance']:.3f} | {m.get('sort', 0.0):.3f} | "
+                f"{other_range(m)} | "
                 f"{compute_spread(m)} |")
     return "\n".join(out)
 

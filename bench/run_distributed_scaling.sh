@@ -85,7 +85,7 @@ fi
 
 load() { cut -d' ' -f1 /proc/loadavg; }
 
-# One run: prints "wall particles p2g grid g2p stress halo migrate rebalance other halo_max migrate_max compute_min
+# One run: prints "wall particles p2g grid g2p stress halo migrate rebalance sort other halo_max migrate_max compute_min
 # compute_max other_min other_max" (rank 0's phases; *_min, *_max over the ranks; compute = P2G + grid + G2P + stress:
 # with equal particle counts, unequal compute means unequal cores) from the log of `mpm run`.
 one_run() {  # ranks threads scene [env assignment]
@@ -101,7 +101,7 @@ import re, sys
 text = open(sys.argv[1]).read()
 done = re.search(r"done: \d+ steps .* in ([0-9.]+) s wall, .* particle-updates/s, (\d+) particles", text)
 phase = {}
-for name in ["P2G", "grid update", "G2P", "stress update", "halo", "migrate", "rebalance", "other"]:
+for name in ["P2G", "grid update", "G2P", "stress update", "halo", "migrate", "rebalance", "sort", "other"]:
     m = re.search(r"^" + re.escape(name) + r"\s+([0-9.]+)\s", text, re.M)
     phase[name] = float(m.group(1)) if m else 0.0
 spread = {}
@@ -116,7 +116,7 @@ print(done.group(1), done.group(2), *[f"{phase[k]:.4f}" for k in phase],
 EOF
 }
 
-echo "case,ranks,threads,particles,steps,run,load,wall,p2g,grid,g2p,stress,halo,migrate,rebalance,other,halo_max,migrate_max,compute_min,compute_max,other_min,other_max" > "$csv"
+echo "case,ranks,threads,particles,steps,run,load,wall,p2g,grid,g2p,stress,halo,migrate,rebalance,sort,other,halo_max,migrate_max,compute_min,compute_max,other_min,other_max" > "$csv"
 # Every configuration of a case once per round, the rounds repeated: the machine's speed drifts over minutes (a shared
 # VM), and runs of one configuration in a row would each see another machine. The model pairs the runs of a round.
 run_cases() {  # label "ranks threads scene" ...

@@ -110,11 +110,14 @@ Real Simulation<Dim>::time_step_toward(Real target_time) const {
 
 template <int Dim>
 void Simulation<Dim>::take_step(Real dt, bool guard) {
-  if (scheme_->reorders_particles() && settings_.sort_interval > 0 && step_ % settings_.sort_interval == 0)
+  if (scheme_->reorders_particles() && settings_.sort_interval > 0 && step_ % settings_.sort_interval == 0) {
+    PhaseTimer timer(profiling_ ? &profile_ : nullptr, StepPhase::sort);
     for (auto& b : bodies_) {
-      b.particles.gather(order_by_cell(b.particles, grid_.geometry, scheme_->slab_cells()));
+      if (b.particles.size() == 0) continue;  // a body held by other ranks
+      b.particles.gather(order_by_cell(b.particles, grid_.geometry, scheme_->slab_cells(), sort_buffers_));
       if (comm_) set_scatter_keys(b.particles, grid_.geometry, scheme_->slab_cells());
     }
+  }
   StepContext<Dim> ctx{grid_, bodies_, settings_.transfer, boundary_, hooks_};
   attach(ctx);
   ctx.time = time_;
@@ -199,8 +202,8 @@ void Simulation<Dim>::advance(Real dt) {
     r.detail = fmt::format("time step {} is not a positive finite number", dt);
     throw StabilityError(r);
   }
-  // With profiling, whatever the phases of the step did not account for (reordering, hooks, the guard's
-  // snapshot) is "other".
+  // With profiling, whatever the phases of the step did not account for (hooks, the guard's snapshot, a distributed
+  // run's post-step scan and reduction) is "other".
   const auto start = profiling_ ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
   const double accounted = profiling_ ? profile_.total_seconds() : 0;
   const double halo_before = halo_ ? halo_->seconds() : 0;

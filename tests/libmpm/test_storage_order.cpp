@@ -76,6 +76,53 @@ TEST(ScatterOrder, SortFollowsCellThenIdIn2D) { check_sort_follows_cell_and_id<2
 TEST(ScatterOrder, SortFollowsCellThenIdIn3D) { check_sort_follows_cell_and_id<3>(3000, 3); }
 TEST(ScatterOrder, SortOfAShuffledCrowdFollowsCellThenId) { check_sort_follows_cell_and_id<2>(20000, 1); }
 
+/// The periodic sort keeps its arrays between sorts (CellSortBuffers): sets of other sizes sorted in between, an
+/// empty one among them, leave the next sort's order the one fresh arrays give.
+TEST(ScatterOrder, KeptBuffersSortLikeFreshOnes) {
+  std::mt19937 rng(5);
+  const GridGeometry<2> g(Vec<2>::Zero(), Vec<2>::Constant(0.1), {10, 10});
+  ParticleSet<2> big = random_particles<2>(4000, rng), small = random_particles<2>(300, rng), empty;
+  CellSortBuffers buffers;
+  for (int round = 0; round < 3; ++round) {
+    for (ParticleSet<2>* p : {&big, &empty, &small}) {
+      std::vector<Index> perm(static_cast<std::size_t>(p->size()));
+      std::iota(perm.begin(), perm.end(), 0);
+      std::shuffle(perm.begin(), perm.end(), rng);
+      p->gather(perm);
+      const std::vector<Index> fresh = order_by_cell(*p, g, 2);
+      EXPECT_EQ(order_by_cell(*p, g, 2, buffers), fresh) << "round " << round << ", " << p->size() << " particles";
+    }
+  }
+}
+
+/// Reordering hands its scratch array to the reordered field, except to a smaller one, which takes a copy (the
+/// scratch then stays large enough for the larger set's next sort); either way every value lands where the order
+/// says, also when the order leaves particles out (migration).
+TEST(ScatterOrder, GatherAfterASmallerOrLargerSetMovesEveryValue) {
+  std::mt19937 rng(6);
+  ParticleSet<2> big = random_particles<2>(5000, rng), small = random_particles<2>(200, rng);
+  const auto check = [](ParticleSet<2>& p, const std::vector<Index>& order) {
+    const std::vector<VecU<2>> x(p.x.begin(), p.x.end());
+    const std::vector<std::uint32_t> id = p.id;
+    p.gather(order);
+    ASSERT_EQ(p.size(), static_cast<Index>(order.size()));
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      ASSERT_EQ(p.id[k], id[static_cast<std::size_t>(order[k])]) << k;
+      ASSERT_EQ(p.x[k], x[static_cast<std::size_t>(order[k])]) << k;
+    }
+  };
+  const auto reversed = [](Index n, Index keep) {
+    std::vector<Index> o;
+    for (Index i = n - 1; i >= 0 && static_cast<Index>(o.size()) < keep; --i) o.push_back(i);
+    return o;
+  };
+  check(big, reversed(big.size(), big.size()));
+  check(small, reversed(small.size(), small.size()));  // the scratch is larger: a copy
+  check(big, reversed(big.size(), big.size()));        // the scratch is still large enough
+  check(small, reversed(small.size(), 150));           // fewer than before (migration), by copy
+  check(big, reversed(big.size(), 4000));              // fewer than before, by swap
+}
+
 // ---- whole runs ----
 
 fs::path scratch(const std::string& name) {

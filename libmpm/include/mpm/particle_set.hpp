@@ -12,6 +12,7 @@
 /// pack_field/unpack_field, pack/append_packed): checkpoints and the migration of particles between ranks
 /// use that one mechanism, so a new field is checkpointed and migrated without code of its own.
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstring>
@@ -35,13 +36,21 @@ namespace mpm {
 
 namespace detail {
 /// Reorders v; the previous buffer is kept as per-thread scratch for the next reordering, so that
-/// periodic sorting does not allocate (and page-fault) a fresh array every time.
+/// periodic sorting does not allocate (and page-fault) a fresh array every time. The scratch never gives its storage
+/// to a smaller array: swapped into a smaller body's field (or an empty one: a body held by another rank), it left
+/// the scratch too small for the larger body's next sort, which then faulted in fresh pages (PERFORMANCE.md §16.6);
+/// such an array takes a copy instead.
 template <class T>
 void gather_vector(std::vector<T>& v, const std::vector<Index>& order) {
   thread_local std::vector<T> out;
   out.resize(order.size());
   for (std::size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
-  v.swap(out);
+  if (out.capacity() <= v.capacity())
+    v.swap(out);
+  else {
+    v.resize(out.size());  // a gather may leave particles out (migration): never longer
+    std::copy(out.begin(), out.end(), v.begin());
+  }
 }
 /// The values of `which` (in that order) as bytes at `out`, sizeof(T) each. Fields are plain values
 /// (numbers, fixed-size Eigen matrices, structs of them): copied byte for byte.

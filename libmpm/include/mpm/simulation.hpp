@@ -232,6 +232,7 @@ class Simulation {
   std::unique_ptr<Snapshot> failure_;
   bool profiling_ = false;
   StepProfile profile_;
+  CellSortBuffers sort_buffers_;        ///< order_by_cell's arrays, kept between the periodic sorts
   std::shared_ptr<Communicator> comm_;  ///< null in one process
   std::unique_ptr<TileHalo> halo_;
   ActiveTiles active_tiles_;

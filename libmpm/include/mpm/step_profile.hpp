@@ -16,11 +16,11 @@
 
 namespace mpm {
 
-enum class StepPhase : int { p2g, grid_update, g2p, stress_update, halo, migrate, rebalance, output, other };
-inline constexpr int step_phase_count = 9;
+enum class StepPhase : int { p2g, grid_update, g2p, stress_update, halo, migrate, rebalance, sort, output, other };
+inline constexpr int step_phase_count = 10;
 /// Printed names, in the order of StepPhase.
 inline constexpr std::array<std::string_view, step_phase_count> step_phase_names = {
-    "P2G", "grid update", "G2P", "stress update", "halo", "migrate", "rebalance", "output", "other"};
+    "P2G", "grid update", "G2P", "stress update", "halo", "migrate", "rebalance", "sort", "output", "other"};
 
 /// Wall seconds per phase, summed over the steps. Phases are timed on the calling thread around the
 /// parallel loops, so they are wall time whatever the thread count.
@@ -32,8 +32,11 @@ inline constexpr std::array<std::string_view, step_phase_count> step_phase_names
 ///   migrate: a distributed run's migration of particles between ranks after every step;
 ///   rebalance: a distributed run's balance check every --rebalance-every steps (slab costs summed over the
 ///     ranks) and, when it deals the slabs anew, the migration that follows;
+///   sort: the reordering of the particles by cell every `solver.sort_interval` steps (order_by_cell and the
+///     gather of every field; a distributed run's scatter keys);
 ///   output: writing frames (added by the run loop);
-///   other: the rest of Simulation::advance (periodic reordering, the guard's snapshots, other hooks).
+///   other: the rest of Simulation::advance (the guard's snapshots, other hooks; a distributed run's post-step scan
+///     and the step's reduction, waiting for the slower rank included).
 struct StepProfile {
   using Clock = std::chrono::steady_clock;
 

@@ -290,6 +290,15 @@ void for_each_tile_coloured(const TileBins& bins, Body&& body) {
   for_each_tile_coloured(bins, {}, std::forward<Body>(body));
 }
 
+/// The working arrays of order_by_cell, kept between sorts. Fresh arrays cost a page fault per 4 KiB page on first
+/// touch (memset and faults were 0.13-0.20 s of a 40-step run of a rank on this VM, more than the sort itself:
+/// docs/PERFORMANCE.md §16.6); kept, a sort touches memory it already owns.
+struct CellSortBuffers {
+  std::vector<std::uint64_t> key, sorted;
+  std::vector<Index> start;
+  std::vector<Index> order;  ///< the result: new[i] = old[order[i]]
+};
+
 /// Permutation that sorts particles by their scatter key (the place of their cell in ScatterCellOrder, then id):
 /// after it the storage order, and so the scatter order inside a tile, depends on the particles' positions and ids
 /// only, whatever it was before. `slab_cells`: the shape function's (Shape::slab_cells, the tiles of bin_by_tile).
@@ -297,14 +306,22 @@ void for_each_tile_coloured(const TileBins& bins, Body&& body) {
 /// order, which is id order when they were sorted before and have not changed cells), then an insertion sort
 /// of the ids inside each cell, which moves a particle only past the few of its own cell with a larger id; a
 /// storage far from that order (a first sort of a shuffled input with many particles per cell) falls back to
-/// a sort of the keys beyond 8 moves per particle.
+/// a sort of the keys beyond 8 moves per particle. Returns `buffers.order`.
 template <int Dim>
-std::vector<Index> order_by_cell(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells) {
+const std::vector<Index>& order_by_cell(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells,
+                                        CellSortBuffers& buffers) {
   const Index n = p.size();
+  auto& order = buffers.order;
+  order.resize(static_cast<std::size_t>(n));
+  if (n == 0) return order;  // an empty set (a body on another rank): no pass over the cells
   const ScatterCellOrder<Dim> place(g, slab_cells);
   const Index cell_count = place.count();
-  std::vector<std::uint64_t> key(n), sorted(n);
-  std::vector<Index> start(cell_count + 1, 0), order(n);
+  auto& key = buffers.key;
+  auto& sorted = buffers.sorted;
+  auto& start = buffers.start;
+  key.resize(static_cast<std::size_t>(n));
+  sorted.resize(static_cast<std::size_t>(n));
+  start.assign(static_cast<std::size_t>(cell_count + 1), 0);
   for (Index i = 0; i < n; ++i) {
     const Index cell = place.of(p.x[i]);
     key[i] = scatter_key(cell, p.id[i]);
@@ -330,13 +347,20 @@ std::vector<Index> order_by_cell(const ParticleSet<Dim>& p, const GridGeometry<D
     sorted[j] = ki;
     moves += k - j;
     if (moves > 8 * n) {  // equal keys (repeated ids) keep their order in both sorts
-      std::vector<Index> all(static_cast<std::size_t>(n));
-      for (Index m = 0; m < n; ++m) all[m] = m;
-      std::stable_sort(all.begin(), all.end(), [&](Index a, Index b) { return key[a] < key[b]; });
-      return all;
+      for (Index m = 0; m < n; ++m) order[m] = m;
+      std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return key[a] < key[b]; });
+      return order;
     }
   }
   return order;
+}
+
+/// The same with arrays of its own (a sort that runs once: TLMPM's, tests).
+template <int Dim>
+std::vector<Index> order_by_cell(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells) {
+  CellSortBuffers buffers;
+  order_by_cell(p, g, slab_cells, buffers);
+  return std::move(buffers.order);
 }
 
 }  // namespace mpm
