@@ -145,7 +145,7 @@ if [[ $only == *pingpong* ]]; then
     line=$("$mpirun" --oversubscribe -np 2 "$pingpong" | grep '^model:')
     lat=$(echo "$line" | sed -E 's/.*latency ([0-9.]+) us.*/\1/')
     bw=$(echo "$line" | sed -E 's/.*bandwidth ([0-9.]+) MB.*/\1/')
-    echo "pingpong,2,1,0,0,$k,$l,0,$lat,$bw,0,0,0,0,0,0,0,0,0,0,0,0" >> "$csv"
+    echo "pingpong,2,1,0,0,$k,$l,0,$lat,$bw,0,0,0,0,0,0,0,0,0,0,0,0,0" >> "$csv"
     echo "  pingpong run $k: latency $lat us, bandwidth $bw MB/s (load $l)" >&2
   done
 fi

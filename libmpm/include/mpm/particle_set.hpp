@@ -12,6 +12,9 @@
 /// pack_field/unpack_field, pack/append_packed): checkpoints and the migration of particles between ranks
 /// use that one mechanism, so a new field is checkpointed and migrated without code of its own.
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -42,9 +45,14 @@ namespace detail {
 /// such an array takes a copy instead.
 template <class T>
 void gather_vector(std::vector<T>& v, const std::vector<Index>& order) {
-  thread_local std::vector<T> out;
+  thread_local std::vector<T> scratch;
+  auto& out = scratch;  // the calling thread's: a lambda naming `scratch` would reach each worker's own
   out.resize(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
+  // Threads take blocks of the new order (each value is written once, so the result is the same for any count).
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.size(), std::size_t{1} << 14),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) out[i] = v[order[i]];
+                    });
   if (out.capacity() <= v.capacity())
     v.swap(out);
   else {

@@ -302,11 +302,11 @@ struct CellSortBuffers {
 /// Permutation that sorts particles by their scatter key (the place of their cell in ScatterCellOrder, then id):
 /// after it the storage order, and so the scatter order inside a tile, depends on the particles' positions and ids
 /// only, whatever it was before. `slab_cells`: the shape function's (Shape::slab_cells, the tiles of bin_by_tile).
-/// A counting sort by cell, O(N + cells), stable (so the particles of a cell come in their previous storage
-/// order, which is id order when they were sorted before and have not changed cells), then an insertion sort
-/// of the ids inside each cell, which moves a particle only past the few of its own cell with a larger id; a
-/// storage far from that order (a first sort of a shuffled input with many particles per cell) falls back to
-/// a sort of the keys beyond 8 moves per particle. Returns `buffers.order`.
+/// A counting sort by cell, O(N + the cells from the particles' first to their last place), stable (so the particles of
+/// a cell come in their previous storage order, which is id order when they were sorted before and have not changed
+/// cells), then an insertion sort of the ids inside each cell, which moves a particle only past the few of its own cell
+/// with a larger id; a storage far from that order (a first sort of a shuffled input with many particles per cell)
+/// falls back to a sort of the keys beyond 8 moves per particle. Returns `buffers.order`.
 template <int Dim>
 const std::vector<Index>& order_by_cell(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells,
                                         CellSortBuffers& buffers) {
@@ -321,15 +321,21 @@ const std::vector<Index>& order_by_cell(const ParticleSet<Dim>& p, const GridGeo
   auto& start = buffers.start;
   key.resize(static_cast<std::size_t>(n));
   sorted.resize(static_cast<std::size_t>(n));
-  start.assign(static_cast<std::size_t>(cell_count + 1), 0);
+  // The counts cover the places from the lowest to the highest the particles hold, not the whole grid: a body in a
+  // corner, or a rank's share, zeroes and sums a fraction of the cells' counts.
+  Index lo = cell_count, hi = 0;
   for (Index i = 0; i < n; ++i) {
     const Index cell = place.of(p.x[i]);
     key[i] = scatter_key(cell, p.id[i]);
-    ++start[cell + 1];
+    lo = std::min(lo, cell);
+    hi = std::max(hi, cell);
   }
-  for (Index c = 0; c < cell_count; ++c) start[c + 1] += start[c];
+  const Index span = hi - lo + 1;
+  start.assign(static_cast<std::size_t>(span + 1), 0);
+  for (Index i = 0; i < n; ++i) ++start[static_cast<Index>(key[i] >> 32) - lo + 1];
+  for (Index c = 0; c < span; ++c) start[c + 1] += start[c];
   for (Index i = 0; i < n; ++i) {
-    const Index k = start[static_cast<Index>(key[i] >> 32)]++;
+    const Index k = start[static_cast<Index>(key[i] >> 32) - lo]++;
     order[k] = i;
     sorted[k] = key[i];
   }
