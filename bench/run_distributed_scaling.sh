@@ -11,6 +11,8 @@
 #   3d  strong scaling, 3D cubic B-spline USL, two spheres at 77^3 cells (~2.4e5 particles): (1,1), (1,2), (2,1)
 #   weak  5e5 particles per rank: the 2D scene at 707^2 cells (~5.0e5) on 1 rank, at 1000^2 (1.0e6) on 2 ranks
 #   pingpong  bench_pingpong (one-way time 8 B .. 8 MB; latency and bandwidth)
+# With 2d and 3d, every round also runs the machine's control ("0 x 1" in the table): two independent 1-rank runs
+# of half the scene at once (2D: weak1; 3D: 61^3 cells, ~1.2e5 particles), no MPI; its wall is what a 2 x 1 run could take on this machine at that moment.
 # Scenes are written from examples/02_two_disks/scene.yaml into a temporary directory (removed at the end).
 # Each case runs N rounds (default 3), each round every configuration once (so that a drift of the machine's speed
 # reaches all alike); the median stepping wall time is reported with its phases (s) and the machine's 1-minute load
@@ -77,10 +79,10 @@ EOF
 }
 if [ $quick = 1 ]; then
   make_scene strong2d 2 linear 0.002; make_scene strong3d 3 cubic_bspline 0.025; make_scene weak1 2 linear 0.0028248587570621469
-  make_scene weak2 2 linear 0.002
+  make_scene weak2 2 linear 0.002; make_scene half3d 3 cubic_bspline 0.03125
 else
   make_scene strong2d 2 linear 0.001; make_scene strong3d 3 cubic_bspline 0.012987012987012988; make_scene weak1 2 linear 0.0014144271570014145
-  make_scene weak2 2 linear 0.001
+  make_scene weak2 2 linear 0.001; make_scene half3d 3 cubic_bspline 0.01639344262295082
 fi
 
 load() { cut -d' ' -f1 /proc/loadavg; }
@@ -88,29 +90,51 @@ load() { cut -d' ' -f1 /proc/loadavg; }
 # One run: prints "wall particles p2g grid g2p stress halo migrate rebalance sort other halo_max migrate_max compute_min
 # compute_max other_min other_max" (rank 0's phases; *_min, *_max over the ranks; compute = P2G + grid + G2P + stress:
 # with equal particle counts, unequal compute means unequal cores) from the log of `mpm run`.
+# ranks = 0: the machine's control, no MPI: two independent 1-rank runs of the scene at the same time (the half
+# scenes: each what a rank of the 2 x 1 run holds); the slower one's wall and phases, the two runs' compute and other
+# as min and max. What a 2 x 1 run could reach on this machine at that moment: on this VM the two vCPUs' speeds differ
+# and drift, which no decomposition can undo (PERFORMANCE.md §16.6).
 one_run() {  # ranks threads scene [env assignment]
-  local log=$work/run.log
-  # OpenMPI binds each rank to one core by default (up to two ranks): a rank with several threads must be unbound,
-  # or its threads share one core (measured before this: 1 rank x 2 threads at 0.94x of 1 x 1).
-  local bind=""
-  [ "$2" -gt 1 ] && bind="--bind-to none"
-  env ${4:-} "$mpirun" --oversubscribe $bind -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" --profile \
-    -o "$work/out" --rebalance-every 20 > "$log" 2>&1 || { cat "$log" >&2; return 1; }
-  /usr/bin/python3 - "$log" <<'EOF'
+  local log=$work/run.log logs
+  if [ "$1" = 0 ]; then
+    env ${4:-} "$mpm" run "$work/$3.yaml" --threads 1 --steps "$steps" --profile -o "$work/out_a" > "$log" 2>&1 &
+    local a=$!
+    env ${4:-} "$mpm" run "$work/$3.yaml" --threads 1 --steps "$steps" --profile -o "$work/out_b" > "$log.b" 2>&1 ||
+      { cat "$log.b" >&2; return 1; }
+    wait $a || { cat "$log" >&2; return 1; }
+    logs="$log $log.b"
+  else
+    # OpenMPI binds each rank to one core by default (up to two ranks): a rank with several threads must be unbound,
+    # or its threads share one core (measured before this: 1 rank x 2 threads at 0.94x of 1 x 1).
+    local bind=""
+    [ "$2" -gt 1 ] && bind="--bind-to none"
+    env ${4:-} "$mpirun" --oversubscribe $bind -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" \
+      --profile -o "$work/out" --rebalance-every 20 > "$log" 2>&1 || { cat "$log" >&2; return 1; }
+    logs=$log
+  fi
+  /usr/bin/python3 - $logs <<'EOF'
 import re, sys
-text = open(sys.argv[1]).read()
-done = re.search(r"done: \d+ steps .* in ([0-9.]+) s wall, .* particle-updates/s, (\d+) particles", text)
-phase = {}
-for name in ["P2G", "grid update", "G2P", "stress update", "halo", "migrate", "rebalance", "sort", "other"]:
-    m = re.search(r"^" + re.escape(name) + r"\s+([0-9.]+)\s", text, re.M)
-    phase[name] = float(m.group(1)) if m else 0.0
-spread = {}
-compute = sum(phase[k] for k in ["P2G", "grid update", "G2P", "stress update"])
-for name, alone in [("halo", phase["halo"]), ("migrate", phase["migrate"]), ("compute", compute),
-                    ("other", phase["other"])]:
-    m = re.search(r"^ranks' " + re.escape(name) + r": min ([0-9.]+) s, max ([0-9.]+) s", text, re.M)
-    spread[name] = (float(m.group(1)), float(m.group(2))) if m else (alone, alone)
-print(done.group(1), done.group(2), *[f"{phase[k]:.4f}" for k in phase],
+def parse(path):
+    text = open(path).read()
+    done = re.search(r"done: \d+ steps .* in ([0-9.]+) s wall, .* particle-updates/s, (\d+) particles", text)
+    phase = {}
+    for name in ["P2G", "grid update", "G2P", "stress update", "halo", "migrate", "rebalance", "sort", "other"]:
+        m = re.search(r"^" + re.escape(name) + r"\s+([0-9.]+)\s", text, re.M)
+        phase[name] = float(m.group(1)) if m else 0.0
+    spread = {}
+    compute = sum(phase[k] for k in ["P2G", "grid update", "G2P", "stress update"])
+    for name, alone in [("halo", phase["halo"]), ("migrate", phase["migrate"]), ("compute", compute),
+                        ("other", phase["other"])]:
+        m = re.search(r"^ranks' " + re.escape(name) + r": min ([0-9.]+) s, max ([0-9.]+) s", text, re.M)
+        spread[name] = (float(m.group(1)), float(m.group(2))) if m else (alone, alone)
+    return float(done.group(1)), int(done.group(2)), phase, spread
+runs = [parse(p) for p in sys.argv[1:]]
+wall, particles, phase, spread = max(runs, key=lambda r: r[0])
+if len(runs) > 1:  # the control: the two runs' spread
+    for name in ["compute", "other"]:
+        spread[name] = (min(r[3][name][0] for r in runs), max(r[3][name][1] for r in runs))
+    particles = sum(r[1] for r in runs)
+print(wall, particles, *[f"{phase[k]:.4f}" for k in phase],
       f"{spread['halo'][1]:.4f}", f"{spread['migrate'][1]:.4f}", *[f"{v:.4f}" for v in spread["compute"]],
       *[f"{v:.4f}" for v in spread["other"]])
 EOF
@@ -149,8 +173,8 @@ if [[ $only == *pingpong* ]]; then
     echo "  pingpong run $k: latency $lat us, bandwidth $bw MB/s (load $l)" >&2
   done
 fi
-if [[ $only == *2d* ]]; then run_cases strong2d "1 1 strong2d" "1 2 strong2d" "2 1 strong2d"; fi
-if [[ $only == *3d* ]]; then run_cases strong3d "1 1 strong3d" "1 2 strong3d" "2 1 strong3d"; fi
+if [[ $only == *2d* ]]; then run_cases strong2d "1 1 strong2d" "1 2 strong2d" "2 1 strong2d" "0 1 weak1"; fi
+if [[ $only == *3d* ]]; then run_cases strong3d "1 1 strong3d" "1 2 strong3d" "2 1 strong3d" "0 1 half3d"; fi
 if [[ $only == *weak* ]]; then run_cases weak "1 1 weak1" "2 1 weak2"; fi
 echo "machine after: $(uptime)" >&2
 /usr/bin/python3 "$here/bench/distributed_model.py" "$csv"
