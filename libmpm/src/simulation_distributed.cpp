@@ -12,13 +12,6 @@
 
 namespace mpm {
 
-template <int Dim>
-void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells) {
-  auto& key = p.template field<std::uint64_t>(scatter_key_field);
-  const ScatterCellOrder<Dim> place(g, slab_cells);
-  for (Index i = 0; i < p.size(); ++i) key[i] = scatter_key(place.of(p.x[i]), p.id[i]);
-}
-
 namespace {
 
 /// The cells of one axis: a coordinate's cell, clamped into the grid before the conversion (so that no value is out
@@ -375,21 +368,20 @@ void Simulation<Dim>::attach(StepContext<Dim>& ctx) {
   }
 }
 
-#define MPM_SIMULATION_DISTRIBUTED(D)                                              \
-  template void set_scatter_keys<D>(ParticleSet<D>&, const GridGeometry<D>&, int); \
-  template void Simulation<D>::distribute(std::shared_ptr<Communicator>);          \
-  template std::string Simulation<D>::why_not_distributed(int) const;              \
-  template std::vector<int> Simulation<D>::balanced_owners() const;                \
-  template void Simulation<D>::reassign_tiles(std::vector<int>);                   \
-  template TileGrid Simulation<D>::tile_grid() const;                              \
-  template bool Simulation<D>::migrate();                                          \
-  template bool Simulation<D>::scan_particles(std::span<double>) const;            \
-  template std::size_t Simulation<D>::exchanging_bodies() const;                   \
-  template bool Simulation<D>::keeps(const VecU<D>&) const;                        \
-  template std::vector<double> Simulation<D>::tile_costs() const;                  \
-  template void Simulation<D>::rebalance();                                        \
-  template void Simulation<D>::use_owners(const std::vector<int>&);                \
-  template void Simulation<D>::share_report(StabilityReport&) const;               \
+#define MPM_SIMULATION_DISTRIBUTED(D)                                     \
+  template void Simulation<D>::distribute(std::shared_ptr<Communicator>); \
+  template std::string Simulation<D>::why_not_distributed(int) const;     \
+  template std::vector<int> Simulation<D>::balanced_owners() const;       \
+  template void Simulation<D>::reassign_tiles(std::vector<int>);          \
+  template TileGrid Simulation<D>::tile_grid() const;                     \
+  template bool Simulation<D>::migrate();                                 \
+  template bool Simulation<D>::scan_particles(std::span<double>) const;   \
+  template std::size_t Simulation<D>::exchanging_bodies() const;          \
+  template bool Simulation<D>::keeps(const VecU<D>&) const;               \
+  template std::vector<double> Simulation<D>::tile_costs() const;         \
+  template void Simulation<D>::rebalance();                               \
+  template void Simulation<D>::use_owners(const std::vector<int>&);       \
+  template void Simulation<D>::share_report(StabilityReport&) const;      \
   template void Simulation<D>::attach(StepContext<D>&);
 MPM_SIMULATION_DISTRIBUTED(1)
 MPM_SIMULATION_DISTRIBUTED(2)

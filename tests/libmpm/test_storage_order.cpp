@@ -95,6 +95,28 @@ TEST(ScatterOrder, KeptBuffersSortLikeFreshOnes) {
   }
 }
 
+/// After a sort `buffers.sorted` holds every particle's scatter key in the new order (a distributed run keeps them as
+/// its scatter_key_field instead of computing them again): with the insertion sort (a few particles per cell) and
+/// with the fallback (a shuffled crowd, hundreds per cell).
+TEST(ScatterOrder, SortLeavesTheKeysInTheNewOrder) {
+  std::mt19937 rng(7);
+  const GridGeometry<2> g(Vec<2>::Zero(), Vec<2>::Constant(0.1), {10, 10});
+  for (const auto& [n, slab_cells] : {std::pair{3000, 2}, std::pair{20000, 1}}) {
+    ParticleSet<2> p = random_particles<2>(n, rng);
+    std::vector<Index> perm(static_cast<std::size_t>(n));
+    std::iota(perm.begin(), perm.end(), 0);
+    std::shuffle(perm.begin(), perm.end(), rng);
+    p.gather(perm);
+    CellSortBuffers buffers;
+    p.gather(order_by_cell(p, g, slab_cells, buffers));
+    const ScatterCellOrder<2> place(g, slab_cells);
+    ASSERT_EQ(buffers.sorted.size(), static_cast<std::size_t>(n));
+    for (Index i = 0; i < n; ++i)
+      ASSERT_EQ(buffers.sorted[static_cast<std::size_t>(i)], scatter_key(place.of(p.x[i]), p.id[i]))
+          << n << " particles, particle " << i;
+  }
+}
+
 /// Reordering hands its scratch array to the reordered field, except to a smaller one, which takes a copy (the
 /// scratch then stays large enough for the larger set's next sort); either way every value lands where the order
 /// says, also when the order leaves particles out (migration).

@@ -256,11 +256,6 @@ void reduce_wave_speed(WaveSpeedBound<Dim>& bound, Communicator& comm) {
   bound.finite = v[Dim] == 0;
 }
 
-/// Sets the field scatter_key_field of every particle to its scatter key (cell, id) (after a sort by it; `slab_cells`:
-/// the scheme's, the tiles of ScatterCellOrder).
-template <int Dim>
-void set_scatter_keys(ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells);
-
 /// The particle field a distributed run keeps its storage ordered by: the scatter key (tile_binning.hpp) of the last
 /// sort, or the particle's place in the initial storage before the first.
 inline constexpr std::string_view scatter_key_field = "scatter_key";

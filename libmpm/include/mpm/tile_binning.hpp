@@ -306,7 +306,8 @@ struct CellSortBuffers {
 /// a cell come in their previous storage order, which is id order when they were sorted before and have not changed
 /// cells), then an insertion sort of the ids inside each cell, which moves a particle only past the few of its own cell
 /// with a larger id; a storage far from that order (a first sort of a shuffled input with many particles per cell)
-/// falls back to a sort of the keys beyond 8 moves per particle. Returns `buffers.order`.
+/// falls back to a sort of the keys beyond 8 moves per particle. Returns `buffers.order`; `buffers.sorted` then holds
+/// the keys in the new order (a distributed run keeps them as its particles' scatter_key_field).
 template <int Dim>
 const std::vector<Index>& order_by_cell(const ParticleSet<Dim>& p, const GridGeometry<Dim>& g, int slab_cells,
                                         CellSortBuffers& buffers) {
@@ -355,6 +356,7 @@ const std::vector<Index>& order_by_cell(const ParticleSet<Dim>& p, const GridGeo
     if (moves > 8 * n) {  // equal keys (repeated ids) keep their order in both sorts
       for (Index m = 0; m < n; ++m) order[m] = m;
       std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return key[a] < key[b]; });
+      for (Index m = 0; m < n; ++m) sorted[m] = key[order[m]];
       return order;
     }
   }
