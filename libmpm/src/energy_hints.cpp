@@ -22,24 +22,28 @@ constexpr std::array<EnergyHint, 9> rows{{
      "APIC with linear hats runs on free surfaces with MUSL and USF (the re-map takes C_p from the trial velocities, a "
      "nearly empty node enters C_p without its gradient); with USL a particle next to a nearly empty node inverts F as "
      "with FLIP: use `scheme: musl` or `usf`. APIC itself loses energy (the non-affine modes, at every transfer), it "
-     "does not gain it",
+     "does not gain it; with 2 particles per cell per axis it loses more: use 3 or more",
      "the dam break (examples/12) with APIC and hats, to 1.7 s: energy change -4.85% (MUSL), -5.02% (USF), never above "
      "E0; at 35/140/280 cells instead of 70 (MUSL): -13.4%/-2.80%/-3.23%, density warnings only at the wall impact; "
-     "USL inverts a particle at 0.065 s, FLIP with USL at 0.066 s; before the fix MUSL inverted at 0.093 s, USF at "
-     "0.068 s (physics/fluids/README.md, Limits)"},
+     "with 3/6/8 particles per cell per axis instead of 2: -3.86%/-3.08%/-2.84%; USL inverts a particle at 0.065 s, "
+     "FLIP with USL at 0.066 s; before the fix MUSL inverted at 0.093 s, USF at 0.068 s (physics/fluids/README.md, "
+     "Limits)"},
     {"PolyPIC with linear hats", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.transfer == VelocityTransfer::polypic; },
-     "PolyPIC's transfer loses nothing, so it keeps grid-scale velocity noise as FLIP does: where a splash breaks into "
-     "spray it can gain energy and invert a particle: give the water `cavitation_pressure: 0` (no tension) and "
-     "`volumetric_deformation: 1`, halve `cfl`, or use `velocity_transfer: apic` (both lose energy instead); MUSL or "
-     "USF, not USL",
+     "PolyPIC's transfer returns a node of full mass its velocity unchanged, so it keeps grid-scale velocity noise as "
+     "FLIP does: where a splash breaks into spray it can gain energy and invert a particle: give the water "
+     "`cavitation_pressure: 0` (no tension) and `volumetric_deformation: 1`, halve `cfl`, or use "
+     "`velocity_transfer: apic` (both lose energy instead); MUSL or USF, not USL; 3 particles per cell per axis, not 2 "
+     "(with 2 it loses energy in a surge)",
      "the dam break (examples/12) with PolyPIC and hats, MUSL, to 1.7 s: -5.61%/-1.75%/-1.14% at 35/70/140 cells, "
-     "never above E0 (APIC -13.4%/-4.85%/-2.80%); the FSI example (examples/14) with hats: a spray particle inverts at "
-     "0.227 s (cfl 0.5), at cfl 0.25 -25.3% (APIC -46.1%); its contact set-up (contact.yaml: slip floor, "
-     "cavitation_pressure 0, volumetric_deformation 1) runs to 0.5 s, no inverted particle, -15.6% (APIC -25.1%) at 40 "
-     "cells: the water alone in that tank loses -5.3% (APIC -10.9%), a rigid obstacle adds what a grid wall at its "
-     "place costs, the elastic one inelastic contact corrections where water and obstacle approach, not the normals "
-     "(examples/14 README, \"Where the rest goes\"); USL inverts at 0.091 s (physics/fluids/README.md, Limits)"},
+     "never above E0 (APIC -13.4%/-4.85%/-2.80%), -0.63% at 70 cells with 3 particles per cell per axis; the FSI "
+     "example (examples/14) with hats: a spray particle inverts at 0.227 s (cfl 0.5), at cfl 0.25 -25.3% (APIC "
+     "-46.1%); its contact set-up (contact.yaml: slip floor, cavitation_pressure 0, volumetric_deformation 1, 3 "
+     "particles per cell per axis) runs to 0.5 s, no inverted particle, -13.3% (APIC -17.7%) at 40 cells: the water "
+     "alone in that tank loses -1.9% (APIC -4.7%; with 2 per axis -5.7% and -10.9%), a rigid obstacle adds what a grid "
+     "wall at its place costs, the elastic one inelastic contact corrections where water and obstacle approach, not "
+     "the normals (examples/14 README, \"Where the rest goes\"); USL inverts at 0.091 s (physics/fluids/README.md, "
+     "Limits)"},
     {"USL (any shape function)", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.scheme == SchemeKind::usl; },
      "USL is the least stable explicit scheme here: use `scheme: musl` (or usf), or a smaller `cfl`",

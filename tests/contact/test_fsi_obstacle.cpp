@@ -13,10 +13,10 @@
 // approach at the start of the step.
 //
 // Measured here (10 cells): the example's set-up -17.6% at 0.5 s, never above E0, J.v^t = -11.6% of E0 (the
-// example's 40 cells: -15.6%; APIC at these 10 cells -45%); the same tank with a rigid obstacle -10.0% with
-// J.v^t = -0.31% of E0, the water alone -3.0%. Without cavitation_pressure the set-up at 20 cells inverted a water
-// particle in tension at 0.198 s; with the shared field and the no-slip floor the example lost 25.3% (PolyPIC,
-// cfl 0.25) and 46.1% (APIC) and PolyPIC inverted at cfl 0.5.
+// example's 40 cells with 2 water particles per cell per axis: -15.6%, with the 3 it has now -13.3%; APIC at these 10
+// cells -45%); the same tank with a rigid obstacle -10.0% with J.v^t = -0.31% of E0, the water alone -3.0%. Without
+// cavitation_pressure the set-up at 20 cells inverted a water particle in tension at 0.198 s; with the shared field and
+// the no-slip floor the example lost 25.3% (PolyPIC, cfl 0.25) and 46.1% (APIC) and PolyPIC inverted at cfl 0.5.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
