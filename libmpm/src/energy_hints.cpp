@@ -25,7 +25,8 @@ constexpr std::array<EnergyHint, 9> rows{{
      "does not gain it; with 2 particles per cell per axis it loses more: use 3 or more",
      "the dam break (examples/12) with APIC and hats, to 1.7 s: energy change -4.85% (MUSL), -5.02% (USF), never above "
      "E0; at 35/140/280 cells instead of 70 (MUSL): -13.4%/-2.80%/-3.23%, density warnings only at the wall impact; "
-     "with 3/6/8 particles per cell per axis instead of 2: -3.86%/-3.08%/-2.84%; USL inverts a particle at 0.065 s, "
+     "with 3/6/8 particles per cell per axis instead of 2: -3.86%/-3.08%/-2.84%, and -1.72% at 140 cells with 3 "
+     "(examples/12_dam_break/apic.yaml); USL inverts a particle at 0.065 s, "
      "FLIP with USL at 0.066 s; before the fix MUSL inverted at 0.093 s, USF at 0.068 s (physics/fluids/README.md, "
      "Limits)"},
     {"PolyPIC with linear hats", trigger_energy | trigger_guard,
