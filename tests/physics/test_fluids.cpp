@@ -18,6 +18,7 @@
 #include "mpm/fluids/tait_fluid.hpp"
 #include "mpm/material_batch.hpp"
 #include "mpm/scene_error.hpp"
+#include "mpm/tile_binning.hpp"
 #include "sod.hpp"
 #include "sod_exact.hpp"
 
@@ -501,14 +502,11 @@ std::string fsi_tank_water(const std::string& transfer, int per_axis) {
 /// cell (a smooth field varies by h |grad J| across a cell; a hydrostatic column by rho g h / (gamma K) = 3e-5 here,
 /// and with cavitation_pressure 0 a particle expands beyond J = 1 at no cost).
 double within_cell_volume_noise(const Simulation<2>& sim) {
-  const auto& g = sim.grid().geometry;
+  const ScatterCellOrder<2> place(sim.grid().geometry, 1);  // one place per cell
   const auto& p = sim.bodies().front().particles;
-  const auto cell = [&](Index i) {
-    return std::pair{static_cast<int>((p.x[i][0] - g.origin[0]) * g.inv_h[0]),
-                     static_cast<int>((p.x[i][1] - g.origin[1]) * g.inv_h[1])};
-  };
+  const auto cell = [&](Index i) { return place.of(p.x[i]); };
   const auto volume_ratio = [&](Index i) { return Mat<2>(p.F[i]).determinant(); };
-  std::map<std::pair<int, int>, std::pair<double, double>> cells;  // sum of m J, sum of m
+  std::map<Index, std::pair<double, double>> cells;  // sum of m J, sum of m
   for (Index i = 0; i < p.size(); ++i) {
     auto& [mj, m] = cells[cell(i)];
     mj += p.mass[i] * volume_ratio(i);
