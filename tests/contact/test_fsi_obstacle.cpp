@@ -130,9 +130,9 @@ TEST(FsiObstacle, RigidObstacleLosesInTheWaterNotInTheContact) {
 // Where the loss after 0.35 s starts (session 20): the jet thrown over the obstacle strikes the far wall with its
 // rounded tip at about 0.33 s, and the impact throws thin sheets up and down the wall at several times the flow's
 // speed (a blunt body striking a flat face, like the spray roots of water entry). In the example (40 cells, frames
-// every 0.01 s) the water faster than 5 m/s holds 4.6% of E0 at 0.35 s (60-80 particles, up to 14 m/s; 20 cells:
-// 6.7%), and that energy is lost where the spray strikes next: the ceiling, the obstacle's foot
-// (examples/14_fsi_obstacle/README.md, "The spray of the far wall"). Here at 10 cells with the example's 3 water
+// every 0.01 s) the water faster than 5 m/s holds 4.6% of E0 at 0.35 s (60-80 particles, up to 14 m/s; 20 cells
+// in a tank twice as high: 6.7%), and that energy is lost where the spray strikes next: the ceiling, the obstacle's
+// foot (examples/14_fsi_obstacle/README.md, "The spray of the far wall"). Here at 10 cells with the example's 3 water
 // particles per cell per axis, every step sampled: before the impact no water particle is faster than 5 m/s
 // (measured 4.41 m/s), after it the fastest is 1.4 times as fast and the water faster than 5 m/s holds 4.3% of E0
 // (at 0.361 s), all of it at the far wall.
@@ -162,9 +162,8 @@ TEST(FsiObstacle, JetImpactOnTheFarWallThrowsFastSpray) {
   });
   std::printf(
       "[ measured ] FSI contact set-up, 10 cells, 3 water particles per cell per axis: fastest water particle before "
-      "0.32 s %.3f m/s, after %.3f m/s; kinetic energy of the water faster than %.0f m/s: peak %.4f of E0 at t = %.4f "
-      "s, %.3f of it "
-      "at x > 0.5 m\n",
+      "0.32 s %.3f m/s, after %.3f m/s; kinetic energy of the water faster than %.0f m/s: peak %.4f of E0 at "
+      "t = %.4f s, %.3f of it at x > 0.5 m\n",
       before, after, fast, spray_peak / e0, spray_time, spray_near_wall / spray_peak);
   EXPECT_LT(before, fast);                       // measured 4.41 m/s
   EXPECT_GT(after, 1.25 * before);               // measured 6.26 m/s, 1.42x
