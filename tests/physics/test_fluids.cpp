@@ -474,6 +474,22 @@ TEST(PolyPicFluid, CoarseDamBreakKeepsItsEnergy) {
   EXPECT_LT(rho, 0.09);
 }
 
+/// The FSI example's water (K = 6.6e5 Pa, gamma = 7, no tension, F reduced to its volume) as one box of particles in a
+/// square tank of side `side` with slip walls, MUSL with hats; `body` adds keys to the body (an initial velocity),
+/// `solver` the transfer and the rest of the solver section.
+std::string fsi_water_in_tank(const std::string& side, const std::string& cell, const std::string& box, int per_axis,
+                              const std::string& body, const std::string& solver) {
+  return "dimension: 2\ngrid: {origin: [0, 0], extent: [" + side + ", " + side + "], cell_size: " + cell +
+         ", boundary: {x_min: slip, x_max: slip, y_min: slip, y_max: slip}}\n"
+         "materials: {water: {model: newtonian_fluid, density: 1000, bulk_modulus: 6.6e5, eos_exponent: 7, "
+         "viscosity: 1.0e-3, cavitation_pressure: 0, volumetric_deformation: 1}}\n"
+         "bodies: [{name: water, material: water, shape: {type: box, " +
+         box + "}, particles_per_cell: " + std::to_string(per_axis) + body +
+         "}]\n"
+         "solver: {scheme: musl, shape_function: linear, " +
+         solver + "}\n";
+}
+
 // What the water alone in the FSI example's tank lost (issue 21; examples/14_fsi_obstacle/README.md, fix 6): with
 // hats, APIC and PolyPIC lose energy in the column's collapse and surge with 2 particles per cell per axis and little
 // with 3; FLIP loses nothing with either. The particles carry more grid-scale noise with 2 per axis (FLIP: J's rms
@@ -485,17 +501,8 @@ TEST(PolyPicFluid, CoarseDamBreakKeepsItsEnergy) {
 // APIC -2.33% / -0.74%, FLIP +0.019% / +0.027% at 2 / 3 per axis; FLIP's J noise (mean over frames from 0.05 s)
 // 1.16e-2 / 5.9e-3.
 std::string fsi_tank_water(const std::string& transfer, int per_axis) {
-  return "dimension: 2\n"
-         "grid: {origin: [0, 0], extent: [0.584, 0.584], cell_size: 0.0146, "
-         "boundary: {x_min: slip, x_max: slip, y_min: slip, y_max: slip}}\n"
-         "materials: {water: {model: newtonian_fluid, density: 1000, bulk_modulus: 6.6e5, eos_exponent: 7, "
-         "viscosity: 1.0e-3, cavitation_pressure: 0, volumetric_deformation: 1}}\n"
-         "bodies: [{name: water, material: water, shape: {type: box, min: [0, 0], max: [0.146, 0.292]}, "
-         "particles_per_cell: " +
-         std::to_string(per_axis) +
-         "}]\n"
-         "solver: {scheme: musl, shape_function: linear, " +
-         transfer + ", cfl: 0.5, gravity: [0, -9.81], end_time: 0.25}\n";
+  return fsi_water_in_tank("0.584", "0.0146", "min: [0, 0], max: [0.146, 0.292]", per_axis, "",
+                           transfer + ", cfl: 0.5, gravity: [0, -9.81], end_time: 0.25");
 }
 
 /// The grid-scale noise of J: the mass-weighted rms of J about the mass-weighted mean J of the particles in the same
@@ -559,16 +566,8 @@ TEST(PolyPicFluid, SurgeLosesLittleWithThreeParticlesPerCellPerAxis) {
 // sheets thin as the grid is refined keeps losing. Asserted on 4 and 8 cells (3 s).
 TEST(FluidWallStrike, LossFallsWithTheCellsAcrossTheSlab) {
   const auto slab = [](const std::string& transfer, const std::string& cell) {
-    return "dimension: 2\n"
-           "grid: {origin: [0, 0], extent: [0.3, 0.3], cell_size: " +
-           cell +
-           ", boundary: {x_min: slip, x_max: slip, y_min: slip, y_max: slip}}\n"
-           "materials: {water: {model: newtonian_fluid, density: 1000, bulk_modulus: 6.6e5, eos_exponent: 7, "
-           "viscosity: 1.0e-3, cavitation_pressure: 0, volumetric_deformation: 1}}\n"
-           "bodies: [{name: slab, material: water, shape: {type: box, min: [0.26, 0.1], max: [0.28, 0.2]}, "
-           "particles_per_cell: 3, velocity: [1, 0]}]\n"
-           "solver: {scheme: musl, shape_function: linear, " +
-           transfer + ", cfl: 0.5, end_time: 0.04}\n";
+    return fsi_water_in_tank("0.3", cell, "min: [0.26, 0.1], max: [0.28, 0.2]", 3, ", velocity: [1, 0]",
+                             transfer + ", cfl: 0.5, end_time: 0.04");
   };
   std::map<std::string, double> change;
   for (const std::string transfer : {"velocity_transfer: apic", "velocity_transfer: polypic", "flip_fraction: 1"})
@@ -600,15 +599,8 @@ TEST(FluidWallStrike, LossFallsWithTheCellsAcrossTheSlab) {
 // does not bounce much either; the continuum of the scene is not resolved at this scale).
 TEST(FluidWallStrike, LoneParticleKeepsNoneOfItsEnergyWithApicOrPolyPic) {
   const auto drop = [](const std::string& transfer) {
-    return "dimension: 2\n"
-           "grid: {origin: [0, 0], extent: [0.1, 0.1], cell_size: 0.005, "
-           "boundary: {x_min: slip, x_max: slip, y_min: slip, y_max: slip}}\n"
-           "materials: {water: {model: newtonian_fluid, density: 1000, bulk_modulus: 6.6e5, eos_exponent: 7, "
-           "viscosity: 1.0e-3, cavitation_pressure: 0, volumetric_deformation: 1}}\n"
-           "bodies: [{name: drop, material: water, shape: {type: box, min: [0.0801, 0.0501], max: [0.0849, 0.0549]}, "
-           "particles_per_cell: 1, velocity: [3, 0]}]\n"
-           "solver: {scheme: musl, shape_function: linear, " +
-           transfer + ", cfl: 0.5, end_time: 0.02}\n";
+    return fsi_water_in_tank("0.1", "0.005", "min: [0.0801, 0.0501], max: [0.0849, 0.0549]", 1, ", velocity: [3, 0]",
+                             transfer + ", cfl: 0.5, end_time: 0.02");
   };
   std::map<std::string, double> kept, vx;
   for (const std::string transfer : {"velocity_transfer: apic", "velocity_transfer: polypic", "flip_fraction: 1"}) {
