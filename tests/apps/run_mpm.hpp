@@ -18,6 +18,9 @@ struct Result {
   std::string out, err;
 };
 
+/// The test data folder (bad-scene fixtures, good scenes, meshes).
+inline const fs::path data = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
+
 inline std::string slurp(const fs::path& p) {
   std::ifstream in(p);
   std::stringstream s;

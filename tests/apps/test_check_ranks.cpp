@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 using cli::mpm;
 using cli::scratch;
 
-const fs::path data = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
+using cli::data;
 
 // good_scene_2d.yaml: a 20 x 20 grid, 500 particles in 2 bodies, USL with cubic B-splines: the scatter's tiles are
 // 8 x 5 cells (3 x 4 of them), 7 of which hold particles. Two ranks on that square grid take two runs of slabs;

@@ -27,7 +27,7 @@ using cli::mpm;
 using cli::scratch;
 using cli::slurp;
 
-const fs::path data = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
+using cli::data;
 
 TEST(Cli, HelpAndVersion) {
   const auto dir = scratch("help");

@@ -23,12 +23,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path data = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
+using cli::data;
 
-using cli::mpm;
 using cli::slurp;
 
-fs::path scratch(const std::string& name) { return cli::scratch("particles_" + name); }
+fs::path particles_scratch(const std::string& name) { return cli::scratch("particles_" + name); }
 
 struct Read {
   vtkIdType points = 0, cells = 0;
@@ -54,8 +53,8 @@ Read read_vtu(const fs::path& file, bool cell_data) {
 // The unit cube mesh, cells of 0.1 m, 2 per axis: 8000 particles of total volume 1 m^3; conforming
 // tetrahedra (CPDI-Tet4 domains) also sum to 1 m^3 (1e-10).
 TEST(ParticlesCommand, MeshWithLatticeAndConformingDomains) {
-  const auto dir = scratch("mesh");
-  auto r = mpm(
+  const auto dir = particles_scratch("mesh");
+  auto r = cli::mpm(
       "particles " + (data / "meshes" / "cube.off").string() + " --spacing 0.1 -o " + (dir / "cube.vtu").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("8000 particles"), std::string::npos) << r.out;
@@ -63,9 +62,9 @@ TEST(ParticlesCommand, MeshWithLatticeAndConformingDomains) {
   EXPECT_EQ(cube.points, 8000);
   EXPECT_NEAR(cube.volume_sum, 1, 1e-12);
 
-  r = mpm("particles " + (data / "meshes" / "cube.off").string() + " --spacing 0.25 --domains conforming -o " +
-              (dir / "tets.vtu").string(),
-          dir);
+  r = cli::mpm("particles " + (data / "meshes" / "cube.off").string() + " --spacing 0.25 --domains conforming -o " +
+                   (dir / "tets.vtu").string(),
+               dir);
   ASSERT_EQ(r.status, 0) << r.err;
   const Read points = read_vtu(dir / "tets.vtu", false);
   const Read cells = read_vtu(dir / "tets_domains.vtu", true);
@@ -80,16 +79,16 @@ TEST(ParticlesCommand, MeshWithLatticeAndConformingDomains) {
 // The disk picture (radius 40 pixels of 1 cm): the particle volumes sum to the selected pixel area, which
 // is within 1% of pi 0.4^2 m^2; a 2D section of the cube mesh makes conforming triangles of area 1 m^2.
 TEST(ParticlesCommand, ImageAndSection) {
-  const auto dir = scratch("image");
-  auto r = mpm("particles " + (data / "images" / "disk.png").string() +
-                   " --pixel-size 0.01 --threshold 128 --spacing 0.05 --ppc 4 -o " + (dir / "disk.vtu").string(),
-               dir);
+  const auto dir = particles_scratch("image");
+  auto r = cli::mpm("particles " + (data / "images" / "disk.png").string() +
+                        " --pixel-size 0.01 --threshold 128 --spacing 0.05 --ppc 4 -o " + (dir / "disk.vtu").string(),
+                    dir);
   ASSERT_EQ(r.status, 0) << r.err;
   const Read disk = read_vtu(dir / "disk.vtu", false);
   EXPECT_NEAR(disk.volume_sum / (M_PI * 0.16), 1, 0.01);
-  r = mpm("particles " + (data / "meshes" / "cube.off").string() +
-              " --section 0.5 --spacing 0.1 --domains conforming -o " + (dir / "section.vtu").string(),
-          dir);
+  r = cli::mpm("particles " + (data / "meshes" / "cube.off").string() +
+                   " --section 0.5 --spacing 0.1 --domains conforming -o " + (dir / "section.vtu").string(),
+               dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NEAR(read_vtu(dir / "section_domains.vtu", true).volume_sum, 1, 1e-10);
   fs::remove_all(dir);
@@ -98,16 +97,16 @@ TEST(ParticlesCommand, ImageAndSection) {
 // A scene alone: every body as the builder makes it (here the 2D test scene), with its domains when its
 // shape function has them.
 TEST(ParticlesCommand, SceneBodies) {
-  const auto dir = scratch("scene");
+  const auto dir = particles_scratch("scene");
   const auto r =
-      mpm("particles --scene " + (data / "good_scene_2d.yaml").string() + " -o " + (dir / "p.vtu").string(), dir);
+      cli::mpm("particles --scene " + (data / "good_scene_2d.yaml").string() + " -o " + (dir / "p.vtu").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_GT(read_vtu(dir / "p.vtu", false).points, 0);
   fs::remove_all(dir);
 }
 
 TEST(ParticlesCommand, BadInputExitsWithTwoAndWritesNothing) {
-  const auto dir = scratch("bad");
+  const auto dir = particles_scratch("bad");
   const fs::path out = dir / "p.vtu";
   const struct {
     std::string args, message;
@@ -124,7 +123,7 @@ TEST(ParticlesCommand, BadInputExitsWithTwoAndWritesNothing) {
        "--domains: the scene's shape function"},
   };
   for (const auto& c : cases) {
-    const auto r = mpm("particles " + c.args + " -o " + out.string(), dir);
+    const auto r = cli::mpm("particles " + c.args + " -o " + out.string(), dir);
     EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
     EXPECT_FALSE(fs::exists(out)) << c.args;

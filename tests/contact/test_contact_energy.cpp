@@ -20,7 +20,7 @@ namespace {
 
 // The paper's box is 28 cells long (x up to 2.728); elastic cylinders rebound faster and would leave it before
 // t = 1.8, so they get 36 cells.
-const std::string cylinders = R"(
+const std::string cylinders_template = R"(
 dimension: 2
 grid: {origin: [-2.20, -1.44], extent: [@LENGTH@, 2.64], cell_size: [0.176, 0.12]}
 materials:
@@ -87,11 +87,11 @@ void print(const std::string& what, const EnergyRun& r) {
 }
 
 std::string cylinder_scene(const std::string& scheme, const std::string& onset, bool plastic) {
-  return fill(cylinders, {{"SCHEME", scheme},
-                          {"ONSET", onset},
-                          {"LENGTH", plastic ? "4.928" : "6.336"},
-                          {"MODEL", plastic ? "j2_plasticity" : "linear_elastic"},
-                          {"PLASTIC", plastic ? ", yield_stress: 10, hardening_modulus: 0.01" : ""}});
+  return fill(cylinders_template, {{"SCHEME", scheme},
+                                   {"ONSET", onset},
+                                   {"LENGTH", plastic ? "4.928" : "6.336"},
+                                   {"MODEL", plastic ? "j2_plasticity" : "linear_elastic"},
+                                   {"PLASTIC", plastic ? ", yield_stress: 10, hardening_modulus: 0.01" : ""}});
 }
 
 // Cause 1 (MUSL): the paper's second correction (Remark 33) is what made the plastic cylinders gain +5.6%. Its work,

@@ -24,7 +24,7 @@ using namespace mpm::geometry;
 
 namespace {
 
-fs::path scratch() {
+fs::path image_scratch() {
   const fs::path dir = fs::temp_directory_path() / ("mpm_geometry_image_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
@@ -87,7 +87,7 @@ double total(const ParticleSeeds<2>& s) { return s.volume * static_cast<double>(
 // A disk of radius 150 pixels of 1 mm: area pi 0.15^2 m^2 within 1% (pixelisation error ~1e-4), from the
 // PNG and from the same picture as PGM, on the grid lattice and one particle per pixel.
 TEST(ImageFill, DiskAreaFromPngAndPgm) {
-  const fs::path dir = scratch();
+  const fs::path dir = image_scratch();
   const int n = 400;
   const auto pixels = picture(n, n, 1, [&](int i, int row) { return disk(i, row, n, 150); });
   write_png(dir / "disk.png", n, n, 1, pixels);
@@ -112,7 +112,7 @@ TEST(ImageFill, DiskAreaFromPngAndPgm) {
 // Row 0 of the file is the top of the picture: a block in the top-left corner gives particles at small x
 // and large y. The origin shifts the image. Colour pictures use the mean of R, G and B.
 TEST(ImageFill, YPointsUpAndOriginShifts) {
-  const fs::path dir = scratch();
+  const fs::path dir = image_scratch();
   const auto pixels = picture(20, 10, 3, [](int i, int row) { return i < 5 && row < 2 ? 200 : 10; });
   write_png(dir / "corner.png", 20, 10, 3, pixels);
   auto shape = image_shape(dir / "corner.png", 0.1, 100);
@@ -132,7 +132,7 @@ TEST(ImageFill, YPointsUpAndOriginShifts) {
 // A label image: three disks with grey values 50, 100 and 200; each label is its own body with the area
 // of its pixels.
 TEST(ImageFill, LabelsSelectOneBodyEach) {
-  const fs::path dir = scratch();
+  const fs::path dir = image_scratch();
   const int n = 300;
   const auto pixels = picture(n, n, 1, [&](int i, int row) -> unsigned char {
     const auto in = [&](double cx, double cy, double r) {
@@ -158,7 +158,7 @@ TEST(ImageFill, LabelsSelectOneBodyEach) {
 // A 3D label stack as .vti: a ball of label 1 (radius 20 voxels of 1 mm) in a 64^3 image whose spacing
 // and origin come from the file.
 TEST(ImageFill, VtiStackGivesA3dBody) {
-  const fs::path dir = scratch();
+  const fs::path dir = image_scratch();
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(64, 64, 64);
   image->SetSpacing(1e-3, 1e-3, 1e-3);
@@ -195,7 +195,7 @@ TEST(ImageFill, VtiStackGivesA3dBody) {
 
 // Bad images: errors name the file and the problem.
 TEST(ImageFill, BadImagesAreRefused) {
-  const fs::path dir = scratch();
+  const fs::path dir = image_scratch();
   const GridGeometry<2> g(Vec<2>::Zero(), Vec<2>::Constant(0.1), {10, 10});
   const auto error = [&](const ShapeDescription& s) -> std::string {
     try {

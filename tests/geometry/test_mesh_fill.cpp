@@ -22,7 +22,7 @@ using mpm::test::TriMesh;
 
 namespace {
 
-fs::path scratch() {
+fs::path mesh_scratch() {
   const fs::path dir = fs::temp_directory_path() / ("mpm_geometry_mesh_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
@@ -58,7 +58,7 @@ std::string fill_error(const ShapeDescription& shape, const GridGeometry<3>& g) 
 // plain lattice count x sub-cell volume is within 2% of it at the stated spacing (the lattice error is
 // of the order of surface area x spacing / volume).
 TEST(MeshFill, SphereTorusCubeVolumesInEveryFormat) {
-  const fs::path dir = scratch();
+  const fs::path dir = mesh_scratch();
   struct Case {
     std::string name;
     TriMesh mesh;
@@ -89,7 +89,7 @@ TEST(MeshFill, SphereTorusCubeVolumesInEveryFormat) {
 
 // The unit cube on a grid whose sub-cell centres never touch a face: the count is exact (20^3 x 8).
 TEST(MeshFill, CubeCountIsExact) {
-  const fs::path dir = scratch();
+  const fs::path dir = mesh_scratch();
   mpm::test::write_off(dir / "cube.off", mpm::test::cube_mesh());
   const auto seeds = fill_shape<3>(mesh_shape(dir / "cube.off"), grid3(-0.5, 1.5, 0.05), {2, 2, 2}, nullptr);
   EXPECT_EQ(seeds.positions.size(), 64000u);
@@ -99,7 +99,7 @@ TEST(MeshFill, CubeCountIsExact) {
 
 // ASCII and binary STL give the same particles (coordinates exact in float).
 TEST(MeshFill, BinaryAndAsciiStlAgree) {
-  const fs::path dir = scratch();
+  const fs::path dir = mesh_scratch();
   TriMesh m = mpm::test::sphere_mesh(0.25, {0.5, 0.5, 0.5}, 12, 24);
   // Round to float through a volatile: GCC 12.2 at -O3 (SLP vectorizer) left 3 of these 798 values
   // unrounded when written as `x = static_cast<float>(x)` in this double loop.
@@ -123,7 +123,7 @@ TEST(MeshFill, BinaryAndAsciiStlAgree) {
 // Scale, rotation about x then y then z, translation: every particle lies in the analytically
 // transformed box and the count equals the count of lattice points inside it.
 TEST(MeshFill, TransformedMeshGivesTransformedParticles) {
-  const fs::path dir = scratch();
+  const fs::path dir = mesh_scratch();
   mpm::test::write_off(dir / "cube.off", mpm::test::cube_mesh());
   ShapeDescription s = mesh_shape(dir / "cube.off");
   s.scale = 0.4;
@@ -155,7 +155,7 @@ TEST(MeshFill, TransformedMeshGivesTransformedParticles) {
 // A 2D body is the section of the mesh by a plane: a torus cut through its centre plane is an annulus
 // of radii R - a and R + a (polygon area within 0.5% for 96 segments), a sphere cut at height z a disk.
 TEST(MeshFill, SectionOfAMeshIsA2dBody) {
-  const fs::path dir = scratch();
+  const fs::path dir = mesh_scratch();
   mpm::test::write_off(dir / "torus.off", mpm::test::torus_mesh(0.3, 0.1, {0.5, 0.5, 0.0}, 96, 33));
   ShapeDescription s = mesh_shape(dir / "torus.off");
   s.section = 0.001;
@@ -182,7 +182,7 @@ TEST(MeshFill, SectionOfAMeshIsA2dBody) {
 // Each bad mesh gets an error naming the file and the problem; an inside-out mesh is repaired with a
 // warning and gives the same particles as the right one.
 TEST(MeshFill, BadMeshesAreRefusedWithTheFileAndTheProblem) {
-  const fs::path dir = scratch();
+  const fs::path dir = mesh_scratch();
   const auto g = grid3(-0.5, 2.5, 0.1);
   const auto expect_error = [&](const fs::path& file, const std::string& problem) {
     const std::string message = fill_error(mesh_shape(file), g);

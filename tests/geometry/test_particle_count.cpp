@@ -14,7 +14,7 @@ using namespace mpm::geometry;
 
 namespace {
 
-ShapeDescription disk(double x, double y, double r) {
+ShapeDescription disk_shape(double x, double y, double r) {
   ShapeDescription s;
   s.type = "disk";
   s.center = {x, y, 0};
@@ -22,13 +22,13 @@ ShapeDescription disk(double x, double y, double r) {
   return s;
 }
 
-GridGeometry<2> unit_grid(int cells) {
+GridGeometry<2> unit_square_grid(int cells) {
   return GridGeometry<2>(Vec<2>::Zero(), Vec<2>::Constant(1.0 / cells), {cells, cells});
 }
 
 TEST(ParticleCount, ExactWhenTheSampleCoversTheLattice) {
-  const auto region = make_region<2>(disk(0.5, 0.5, 0.3));
-  const auto grid = unit_grid(10);
+  const auto region = make_region<2>(disk_shape(0.5, 0.5, 0.3));
+  const auto grid = unit_square_grid(10);
   const std::array<int, 3> ppc{2, 2, 1};
   const auto count = count_particles<2>(*region, grid, ppc);
   EXPECT_TRUE(count.exact);
@@ -38,8 +38,8 @@ TEST(ParticleCount, ExactWhenTheSampleCoversTheLattice) {
 
 TEST(ParticleCount, SampledCountIsWithinAPercentOfTheFill) {
   // 600 x 600 lattice points in the disk's box at 100 per cell: 360,000 > 32,768, so sampled.
-  const auto region = make_region<2>(disk(0.5, 0.5, 0.3));
-  const auto grid = unit_grid(10);
+  const auto region = make_region<2>(disk_shape(0.5, 0.5, 0.3));
+  const auto grid = unit_square_grid(10);
   const std::array<int, 3> ppc{100, 100, 1};
   const auto count = count_particles<2>(*region, grid, ppc);
   EXPECT_FALSE(count.exact);
@@ -68,7 +68,7 @@ TEST(ParticleCount, TaylorAnvilAtAHundredPerCellWithoutFillingIt) {
 }
 
 TEST(ParticleCount, LatticeOfABoxInClosedForm) {
-  const auto grid = unit_grid(10);
+  const auto grid = unit_square_grid(10);
   Box<2> box{Vec<2>(0.1, 0.2), Vec<2>(0.4, 0.3)};  // 0.3 x 0.1 m at 4 per cell: 12 x 4 sub-cell centres
   EXPECT_EQ(lattice_points_in<2>(box, grid, {4, 4, 1}), 48.0);
   Box<2> thin{Vec<2>(0.1, 0.2), Vec<2>(0.4, 0.2)};  // no thickness: no sub-cell centre inside

@@ -16,11 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string finite_text(const OutputScan& s) {
-  return s.all_finite() ? fmt::format("{} frames, all {} values finite", s.vtu_files, s.values)
-                        : fmt::format("NON-FINITE values in {}", s.bad.front());
-}
-
 /// The step of the energy sentinel's warning in the run's log ("warning: energy sentinel: at step N"), or -1.
 double sentinel_warning_step(const std::string& log) {
   const std::string key = "warning: energy sentinel: at step ";
@@ -115,7 +110,7 @@ StabilityOutcome locking(const fs::path& dir, const std::string& scheme) {
       "{} steps; pressure checkerboard amplitude {:.3g} rho g H between neighbouring particles, fitted base pressure "
       "{:.3g} rho g H (static, small strain: (1 + nu) / 3 = 0.5); smallest det F {:.6f}; "
       "the user: {}; {}",
-      o.steps, o.measured, o.measures["base_pressure"], o.output.min_det_F, told(o), finite_text(o.output));
+      o.steps, o.measured, o.measures["base_pressure"], o.output.min_det_F, told(o), o.output.finite_text());
   return o;
 }
 
@@ -153,7 +148,7 @@ StabilityOutcome impact_10km_s(const fs::path& dir, const std::string& scheme) {
   o.summary = fmt::format(
       "{}: {} steps to t = {:.3g} s; smallest det F {:.3f} (1D Hugoniot J_H = 0.486), largest pressure {:.3g} Pa "
       "(p_H = 1.524e12 Pa); total energy grows by up to {:+.3f}; the user: {}; {}",
-      held, o.steps, o.time, o.output.min_det_F, p_max, o.output.max_energy_growth(), told(o), finite_text(o.output));
+      held, o.steps, o.time, o.output.min_det_F, p_max, o.output.max_energy_growth(), told(o), o.output.finite_text());
   return o;
 }
 
@@ -224,7 +219,7 @@ StabilityOutcome density_ratio(const fs::path& dir, const std::string& scheme, d
       "particles of the two bodies {:.2f} particle spacings apart; total energy change {:+.2e}; the user: {}; {}",
       o.steps, o.time, o.measures["light_velocity"], o.measured, -o.measures["heavy_velocity_change"],
       o.measures["momentum_imbalance"], o.measures["closest_over_spacing"], o.output.energy_change(), told(o),
-      finite_text(o.output));
+      o.output.finite_text());
   return o;
 }
 
@@ -250,7 +245,7 @@ StabilityOutcome cfl_bound(const fs::path& dir, const std::string& scheme) {
   o.summary = fmt::format(
       "{} steps to t = {:.4g} s at cfl 1: total energy change {:+.3e} (largest over the frames {:+.3e}); the user: "
       "{}; {}",
-      o.steps, o.time, o.measured, o.output.max_energy_growth(), told(o), finite_text(o.output));
+      o.steps, o.time, o.measured, o.output.max_energy_growth(), told(o), o.output.finite_text());
   return o;
 }
 

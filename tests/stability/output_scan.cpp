@@ -7,6 +7,8 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -109,6 +111,11 @@ double OutputScan::max_energy_growth() const {
   const double e0 = energy.front().at("total_energy");
   for (const auto& row : energy) growth = std::max(growth, (row.at("total_energy") - e0) / std::abs(e0));
   return growth;
+}
+
+std::string OutputScan::finite_text() const {
+  return all_finite() ? fmt::format("{} frames, all {} values finite", vtu_files, values)
+                      : fmt::format("NON-FINITE values in {}", bad.front());
 }
 
 OutputScan scan_output(const fs::path& dir) {

@@ -24,6 +24,8 @@ struct OutputScan {
   /// Total energy of the last row relative to the first, and the largest growth over the rows.
   double energy_change() const;
   double max_energy_growth() const;
+  /// "N frames, all M values finite", or the first non-finite value's file and array (for a case's report).
+  std::string finite_text() const;
 };
 
 /// Scans the directory `dir` (not recursively). A .vtu that VTK cannot read counts as bad.

@@ -27,11 +27,6 @@ using Status = StabilityOutcome::Status;
 
 double velocity_x(const std::map<std::string, double>& row) { return row.at("momentum_x") / row.at("mass"); }
 
-std::string finite_text(const OutputScan& s) {
-  return s.all_finite() ? fmt::format("{} frames, all {} values finite", s.vtu_files, s.values)
-                        : fmt::format("NON-FINITE values in {}", s.bad.front());
-}
-
 // ---- the bar (review §6.1.1), scaled with the wave speed ------------------------------------------
 
 /// The velocity amplitude is 1% of the wave speed c = sqrt(E / rho), so that the strain amplitude, the
@@ -57,7 +52,7 @@ StabilityOutcome stiff_bar(const fs::path& dir) {
   o.summary = fmt::format(
       "E = 1e12 Pa (c = 1e6 m/s, period 1e-4 s, dt = {:.4g} s): max |v_cm error| / amplitude {:.4e}, the same as at "
       "E = 100 Pa ({:.4e}); energy change {:+.2e}; {}",
-      0.1 * stiff.stable_dt, o.measured, soft.outcome.measured, o.output.energy_change(), finite_text(o.output));
+      0.1 * stiff.stable_dt, o.measured, soft.outcome.measured, o.output.energy_change(), o.output.finite_text());
   return o;
 }
 
@@ -67,7 +62,7 @@ StabilityOutcome fixed_dt(const fs::path& dir, double factor) {
   if (o.completed())
     o.summary =
         fmt::format("dt = {} x the CFL bound {:.6g} s: max |v_cm error| / amplitude {:.4e}; energy change {:+.2e}; {}",
-                    factor, r.stable_dt, o.measured, o.output.energy_change(), finite_text(o.output));
+                    factor, r.stable_dt, o.measured, o.output.energy_change(), o.output.finite_text());
   else
     o.summary = "refused before the first step: " + o.message;
   return o;
@@ -82,7 +77,7 @@ StabilityOutcome long_run(const fs::path& dir) {
   o.summary = fmt::format(
       "{} steps ({:.1f} periods), MUSL, FLIP: total energy change {:+.3e}, largest growth over the 101 frames {:+.3e}; "
       "{}",
-      o.steps, end / 10, o.measured, o.output.max_energy_growth(), finite_text(o.output));
+      o.steps, end / 10, o.measured, o.output.max_energy_growth(), o.output.finite_text());
   return o;
 }
 
@@ -104,7 +99,7 @@ StabilityOutcome stiff_block(const fs::path& dir) {
   o.summary = fmt::format(
       "{} steps; rebound at v_cm = {:.2f} m/s (from +100 m/s); total energy grows by at most {:+.3f} of E0 over the "
       "frames, {:+.3f} at the end; {}",
-      o.steps, o.measured, o.output.max_energy_growth(), o.output.energy_change(), finite_text(o.output));
+      o.steps, o.measured, o.output.max_energy_growth(), o.output.energy_change(), o.output.finite_text());
   return o;
 }
 
@@ -122,7 +117,7 @@ StabilityOutcome nearly_incompressible(const fs::path& dir) {
   o.summary = fmt::format(
       "{} steps (c_p / c_s = 70.7, dt set by c_p = 1291 m/s); max |det F - 1| = {:.2e}; energy change {:+.2e}; "
       "max |stress| {:.3g} Pa against rho omega^2 R^2 / 2 = 180 Pa of the exact rigid rotation (pressure noise); {}",
-      o.steps, o.measured, o.output.energy_change(), o.output.max_abs_stress, finite_text(o.output));
+      o.steps, o.measured, o.output.energy_change(), o.output.max_abs_stress, o.output.finite_text());
   return o;
 }
 
@@ -144,9 +139,9 @@ StabilityOutcome hypervelocity(const fs::path& dir, const std::string& scheme) {
                   ? fmt::format(
                         "{} steps to 8 us: rebound at v_cm = {:.0f} m/s; smallest det F {:.3f}; total energy "
                         "grows by up to {:+.3f}; {}",
-                        o.steps, o.measured, o.output.min_det_F, o.output.max_energy_growth(), finite_text(o.output))
+                        o.steps, o.measured, o.output.min_det_F, o.output.max_energy_growth(), o.output.finite_text())
                   : fmt::format("stopped at step {}: {}; the last good frame: {}", o.steps + 1, o.message,
-                                finite_text(o.output));
+                                o.output.finite_text());
   return o;
 }
 
@@ -167,9 +162,9 @@ StabilityOutcome thin_plate(const fs::path& dir, const std::string& scheme) {
   o.measured = o.output.energy_change();
   const double dp = std::abs(e.back().at("momentum_x") - e.front().at("momentum_x")) / e.front().at("momentum_x");
   o.summary = o.completed() ? fmt::format("{} steps, 0.8 s: energy change {:+.2e}, x-momentum change {:.1e}; {}",
-                                          o.steps, o.measured, dp, finite_text(o.output))
+                                          o.steps, o.measured, dp, o.output.finite_text())
                             : fmt::format("stopped at step {}: {}; the last good frame: {}", o.steps + 1, o.message,
-                                          finite_text(o.output));
+                                          o.output.finite_text());
   return o;
 }
 
@@ -191,8 +186,8 @@ StabilityOutcome extreme_compression(const fs::path& dir, const std::string& sch
   o.time = o.output.energy.empty() ? 0 : o.output.energy.back().at("time");
   o.measured = r.e1;
   o.summary = o.completed() ? fmt::format("smallest det F {:.4f} (exact 0.05); e1 = {:.3e} m (G = 0.302 m); {}",
-                                          r.min_J, r.e1, finite_text(o.output))
-                            : fmt::format("stopped: {}; the last good frame: {}", o.message, finite_text(o.output));
+                                          r.min_J, r.e1, o.output.finite_text())
+                            : fmt::format("stopped: {}; the last good frame: {}", o.message, o.output.finite_text());
   return o;
 }
 

@@ -15,11 +15,12 @@
 #include "mpm/output_writer.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
+#include "scene_number.hpp"
 
 namespace mpm {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double young = 1e7, poisson = 0.3, rho0 = 1000;
 
 /// The manufactured field and its body force (review eqs 6.8-6.9, A.1-A.8).
@@ -79,11 +80,7 @@ class MmsBodyForce final : public Module<Dim> {
   const ReferencePositions<Dim>& X_;
 };
 
-std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using verification::number;
 
 template <int Dim>
 MmsResult run(const MmsSpec& spec) {

@@ -17,7 +17,7 @@
 namespace mpm {
 namespace {
 
-constexpr double R0 = 3.2e-3, L0 = 32.4e-3;
+constexpr double bar_radius0 = 3.2e-3, bar_length0 = 32.4e-3;
 constexpr double E = 116.9e9, nu = 0.35;  // the scene text gives rho = 8930 kg/m^3, sigma_Y = 0.4 GPa, H = 0.1 GPa
 
 /// Axial extent and largest radius of the particle centres (r = x, z = y).
@@ -54,9 +54,9 @@ std::string material(const std::string& model) {
 
 std::string taylor_bar_scene(const TaylorBarSpec& s) {
   const double h_z = s.h_z > 0 ? s.h_z : s.h;
-  double height = (std::ceil(L0 / h_z - 1e-9) + 1) * h_z;  // one free cell above the bar
+  double height = (std::ceil(bar_length0 / h_z - 1e-9) + 1) * h_z;  // one free cell above the bar
   double radius = std::ceil(8.8e-3 / s.h - 1e-9) * s.h;
-  if (s.paper_box) height = L0, radius = 7.2e-3;
+  if (s.paper_box) height = bar_length0, radius = 7.2e-3;
   const bool implicit = s.scheme == "implicit";
   const std::string cell_size = h_z == s.h ? fmt::format("{:.6g}", s.h) : fmt::format("[{:.6g}, {:.6g}]", s.h, h_z);
   const std::string step =
@@ -172,8 +172,8 @@ TaylorBarResult run_taylor_bar(const TaylorBarSpec& spec) {
   for (Index i = 0; i < p.size(); ++i)
     if (p.x[i][1] < z_min + layer && p.x[i][0] < r_face) r_face = p.x[i][0], r.face_plastic_strain = strain[i];
   const auto [length, radius] = extents(body.particles);
-  r.length = length + (L0 - length0);
-  r.radius = radius + (R0 - radius0);
+  r.length = length + (bar_length0 - length0);
+  r.radius = radius + (bar_radius0 - radius0);
   return r;
 }
 

@@ -15,7 +15,7 @@
 namespace mpm {
 namespace {
 
-constexpr double L0 = 30e-3, R0 = 3e-3;
+constexpr double specimen_length0 = 30e-3, specimen_radius0 = 3e-3;
 
 /// Volume average of the nominal stress P_zZ = J (sigma F^-T)_zZ over the particles.
 double engineering_stress(const ParticleSet<3>& p) {
@@ -77,19 +77,19 @@ std::string tensile_necking_scene(const TensileSpec& s) {
       "von_mises_stress]\n"
       "  histories:  # the load: the force the moving grip (the face z_max) exerts on the specimen\n"
       "    - {{name: load, type: reaction, face: z_max}}\n",
-      -R0, 2 * R0, L0, s.h, v, s.shape_function, s.cfl,
+      -specimen_radius0, 2 * specimen_radius0, specimen_length0, s.h, v, s.shape_function, s.cfl,
       // the time at which the grips have moved max_strain L0 / 2 each (Newton on u(t) = max_strain L0 / 2)
       [&] {
-        double t = s.max_strain * L0 / (2 * s.v_max) + s.tau;
+        double t = s.max_strain * specimen_length0 / (2 * s.v_max) + s.tau;
         for (int k = 0; k < 50; ++k) {
           const double u = s.v_max * (t - s.tau * (1 - std::exp(-t / s.tau))),
                        du = s.v_max * (1 - std::exp(-t / s.tau));
-          t -= (u - s.max_strain * L0 / 2) / du;
+          t -= (u - s.max_strain * specimen_length0 / 2) / du;
         }
         return t;
       }(),
       [&] {  // about 50 frames
-        const double t = s.max_strain * L0 / (2 * s.v_max) + s.tau;
+        const double t = s.max_strain * specimen_length0 / (2 * s.v_max) + s.tau;
         return t / 50;
       }());
 }
@@ -103,7 +103,9 @@ TensileResult run_tensile_necking(const TensileSpec& spec) {
   const auto& p = body.particles;
   r.particles = p.size();
   const auto start = std::chrono::steady_clock::now();
-  auto strain_at = [&](double t) { return 2 * spec.v_max * (t - spec.tau * (1 - std::exp(-t / spec.tau))) / L0; };
+  auto strain_at = [&](double t) {
+    return 2 * spec.v_max * (t - spec.tau * (1 - std::exp(-t / spec.tau))) / specimen_length0;
+  };
   try {
     while (sim->time() < scene.solver.end_time) {
       sim->advance(sim->next_time_step());
@@ -130,7 +132,7 @@ TensileResult run_tensile_necking(const TensileSpec& spec) {
   std::vector<double> damage;
   body.material->append_output("damage", p, damage);
   std::map<int, double> radius, slice_damage;
-  const int slices = static_cast<int>(std::lround(L0 / spec.h));
+  const int slices = static_cast<int>(std::lround(specimen_length0 / spec.h));
   for (Index i = 0; i < p.size(); ++i) {
     const int k = std::clamp(static_cast<int>(X[i][2] / spec.h), 0, slices - 1);
     radius[k] = std::max(radius[k], std::hypot(p.x[i][0], p.x[i][1]));

@@ -143,13 +143,13 @@ TEST(TlmpmPaperStepLoad, SeriesConverges) {
     EXPECT_NEAR(step_load_series(4.96e-3, t, 4000), step_load_series(4.96e-3, t, 40000), 1e-4 * amplitude);
 }
 
-struct Ladder {
+struct TlmpmLadder {
   std::vector<double> h, rms, rms_node;
   double wall = 0;
 };
 
-Ladder step_ladder(const std::vector<int>& elements, const char* shape, double traction) {
-  Ladder l;
+TlmpmLadder step_ladder(const std::vector<int>& elements, const char* shape, double traction) {
+  TlmpmLadder l;
   for (const int n : elements) {
     StepLoadSpec s;
     s.shape_function = shape;
@@ -176,7 +176,7 @@ Ladder step_ladder(const std::vector<int>& elements, const char* shape, double t
 // than the linear bar of eq. 70 (its waves run 0.25 % faster, a phase drift that grows over the 3.6
 // periods), which a load 100 times smaller removes (next test).
 TEST(TlmpmPaperStepLoad, PaperLoadQuadratic) {
-  const Ladder l = step_ladder({8, 16, 32, 64}, "lagrange_quadratic", -1.27e6);
+  const TlmpmLadder l = step_ladder({8, 16, 32, 64}, "lagrange_quadratic", -1.27e6);
   for (std::size_t i = 1; i < l.rms.size(); ++i) EXPECT_LT(l.rms[i], l.rms[i - 1]) << "n_el doubling " << i;
   EXPECT_LT(l.rms[2], 0.016);  // the paper's 32 elements: measured 1.41 %
   EXPECT_GT(l.rms[3], 0.010);  // the floor of the nonlinearity: measured 1.19 % at 64 elements
@@ -186,10 +186,10 @@ TEST(TlmpmPaperStepLoad, PaperLoadQuadratic) {
 // A load 100 times smaller (0.005 % strain): the series is then the exact solution to 1e-4 and the error
 // is the discretisation's. First order (the step front is a discontinuity of the velocity).
 TEST(TlmpmPaperStepLoad, SmallLoadConvergence) {
-  const Ladder quadratic = step_ladder({8, 16, 32, 64}, "lagrange_quadratic", -1.27e4);
+  const TlmpmLadder quadratic = step_ladder({8, 16, 32, 64}, "lagrange_quadratic", -1.27e4);
   EXPECT_GT(observed_rate(quadratic.h, quadratic.rms), 0.9);  // measured 0.95
   EXPECT_LT(quadratic.rms[2], 0.008);                         // measured 0.645 % at 32 elements
-  const Ladder hats = step_ladder({8, 16, 32, 64}, "linear", -1.27e4);
+  const TlmpmLadder hats = step_ladder({8, 16, 32, 64}, "linear", -1.27e4);
   EXPECT_GT(observed_rate(hats.h, hats.rms), 0.5);  // measured 0.66
   for (std::size_t i = 0; i < hats.rms.size(); ++i) EXPECT_LT(quadratic.rms[i], hats.rms[i]);
 }

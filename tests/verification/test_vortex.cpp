@@ -41,7 +41,7 @@ VortexSpec spec(const char* scheme, const char* shape, int cells) {
   return s;
 }
 
-struct Ladder {
+struct VortexLadder {
   const char* scheme;
   const char* shape;
   std::vector<int> cells;  ///< cells per side, coarse to fine
@@ -50,7 +50,7 @@ struct Ladder {
   double max_e1;           ///< bound of e1 at the finest resolution (m)
 };
 
-void check(const Ladder& c) {
+void check(const VortexLadder& c) {
   std::vector<double> h, e1, e2, cells, particles;
   double wall = 0;
   for (std::size_t k = 0; k < c.cells.size(); ++k) {

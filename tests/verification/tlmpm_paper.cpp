@@ -16,11 +16,12 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
+#include "scene_number.hpp"
 
 namespace mpm {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // Case A / C material and geometry (eqs 69, 72; SI).
 constexpr double column_L = 0.1, column_E = 5e3, column_nu = 0.3, column_rho = 10;
@@ -28,11 +29,7 @@ constexpr double column_tau0 = -1e4, column_area = 1e-4;
 // Case B (eq. 71): 250 MPa, 1.9355e-3 g/mm^3 = 1935.5 kg/m^3, 5 mm (the load, -1.27 MPa, is in the spec).
 constexpr double step_E = 250e6, step_rho = 1.9355e-3 * 1e-3 / 1e-9, step_L = 5e-3;
 
-std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using verification::number;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

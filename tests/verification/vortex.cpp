@@ -17,11 +17,12 @@
 #include "mpm/output_writer.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
+#include "scene_number.hpp"
 
 namespace mpm {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double inner_radius = 0.75, outer_radius = 1.25;  // m
 constexpr double young = 1e3, poisson = 0.3, rho0 = 1000;   // Pa, -, kg/m^3
 constexpr double period = 1;                                // T0 (s)
@@ -136,11 +137,7 @@ class FixedOutsideRing final : public Module<2> {
   std::vector<Index> nodes_;
 };
 
-std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using verification::number;
 
 void validate(const VortexSpec& spec) {
   if (spec.cells_across < 1 || spec.particles_per_cell_per_axis < 1)
