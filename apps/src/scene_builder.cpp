@@ -349,8 +349,8 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
 
   const SimulationSettings<Dim> settings = simulation_settings<Dim>(scene.solver, max_particle_mass(bodies));
   GridBoundary<Dim> boundary = make_grid_boundary<Dim>(scene, geometry, *scheme);  // the faces' kinds
-  auto sim = std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme), std::move(boundary),
-                                               settings);
+  auto sim =
+      std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme), std::move(boundary), settings);
   for (auto& m : modules) sim->add_module(std::move(m));
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));

@@ -26,9 +26,10 @@ const std::vector<std::string> base_energy_columns{
 /// columns from kinetic_energy to thermal_energy, then the number of particles. The books close column by column:
 /// mass + sum over F of outflow_F_mass is the initial mass, and total_energy + sum of outflow_F_total_energy is
 /// E(0) + W (docs/theory.md §8).
-const std::vector<std::string> outflow_energy_columns{
-    "kinetic_energy", "strain_energy", "gravity_potential_energy", "total_energy", "momentum_x", "momentum_y",
-    "momentum_z",     "mass",          "plastic_work",             "thermal_energy", "particles"};
+const std::vector<std::string> outflow_energy_columns{"kinetic_energy", "strain_energy", "gravity_potential_energy",
+                                                      "total_energy",   "momentum_x",    "momentum_y",
+                                                      "momentum_z",     "mass",          "plastic_work",
+                                                      "thermal_energy", "particles"};
 
 template <int Dim>
 std::vector<std::string> energy_columns(const Simulation<Dim>& sim) {

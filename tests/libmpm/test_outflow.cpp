@@ -97,8 +97,7 @@ void check_block(const std::string& scheme, const std::string& shape) {
   const OutflowNotice& notice = sim->boundary().outflow_notices()[0];
   EXPECT_EQ(notice.step, 97);
   EXPECT_EQ(notice.particles, 8);
-  EXPECT_NE(notice.message().find("body block: 8 particles left through y_max (outflow) at step 97"),
-            std::string::npos)
+  EXPECT_NE(notice.message().find("body block: 8 particles left through y_max (outflow) at step 97"), std::string::npos)
       << notice.message();
 }
 
@@ -115,8 +114,8 @@ TEST(Outflow, BoundaryWithoutOutflowHasNoBooks) {
   auto sim = test::simulation_from_yaml<2>(block_scene("usl", "linear"));
   EXPECT_TRUE(sim->boundary().removes_particles());
   const std::string walls = block_scene("usl", "linear");
-  auto closed = test::simulation_from_yaml<2>(
-      walls.substr(0, walls.find("y_max: outflow")) + "y_max: stop" + walls.substr(walls.find("y_max: outflow") + 14));
+  auto closed = test::simulation_from_yaml<2>(walls.substr(0, walls.find("y_max: outflow")) + "y_max: stop" +
+                                              walls.substr(walls.find("y_max: outflow") + 14));
   EXPECT_FALSE(closed->boundary().removes_particles());
   EXPECT_TRUE(closed->boundary().outflow().empty());
 }

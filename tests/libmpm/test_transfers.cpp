@@ -6,8 +6,8 @@
 #include <limits>
 #include <random>
 
-#include "mpm/boundary/velocity_face.hpp"
 #include "mpm/boundary/grid_boundary.hpp"
+#include "mpm/boundary/velocity_face.hpp"
 #include "mpm/schemes/transfer_kernels.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/linear_hat.hpp"

@@ -22,9 +22,8 @@ std::mutex& table_mutex() {
 }
 /// A deque: entries never move, so find_face_condition_kind's pointers stay valid as modules register.
 std::deque<FaceConditionKind>& table() {
-  static std::deque<FaceConditionKind> t{boundary::fixed_kind(),      boundary::slip_kind(),
-                                         boundary::free_kind(),       boundary::stop_kind(),
-                                         boundary::prescribed_kind(), boundary::outflow_kind()};
+  static std::deque<FaceConditionKind> t{boundary::fixed_kind(), boundary::slip_kind(),       boundary::free_kind(),
+                                         boundary::stop_kind(),  boundary::prescribed_kind(), boundary::outflow_kind()};
   return t;
 }
 
@@ -60,8 +59,7 @@ std::vector<std::string> face_condition_kind_names() {
   return names;
 }
 
-FaceDescription read_face_condition(const io::YamlReader& reader, const io::YamlValue& value,
-                                    const FaceContext& face) {
+FaceDescription read_face_condition(const io::YamlReader& reader, const io::YamlValue& value, const FaceContext& face) {
   FaceDescription d;
   d.where = reader.location(value.mark);
   if (value.node.IsScalar()) {
@@ -84,9 +82,7 @@ FaceDescription read_face_condition(const io::YamlReader& reader, const io::Yaml
   return d;
 }
 
-FaceTraits face_traits(const FaceDescription& face) {
-  return kind_of(face).traits(face.spec);
-}
+FaceTraits face_traits(const FaceDescription& face) { return kind_of(face).traits(face.spec); }
 
 template <int Dim>
 GridBoundary<Dim> make_grid_boundary(const GridGeometry<Dim>& g, const std::array<FaceDescription, 6>& faces) {

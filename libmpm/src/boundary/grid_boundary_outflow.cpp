@@ -26,11 +26,11 @@ namespace {
 constexpr int book_terms = 10;
 std::array<ExactSum*, book_terms> terms_of(OutflowBook& b) {
   auto& s = b.sums;
-  return {&s.kinetic,     &s.strain,      &s.gravity,     &s.plastic_work, &s.thermal,
-          &s.mass,        &s.momentum[0], &s.momentum[1], &s.momentum[2],  &b.particles};
+  return {&s.kinetic, &s.strain,      &s.gravity,     &s.plastic_work, &s.thermal,
+          &s.mass,    &s.momentum[0], &s.momentum[1], &s.momentum[2],  &b.particles};
 }
-constexpr std::array<const char*, book_terms> term_names{"kinetic", "strain",     "gravity",    "plastic_work",
-                                                         "thermal", "mass",       "momentum_x", "momentum_y",
+constexpr std::array<const char*, book_terms> term_names{"kinetic",    "strain",   "gravity",    "plastic_work",
+                                                         "thermal",    "mass",     "momentum_x", "momentum_y",
                                                          "momentum_z", "particles"};
 
 void put_exact(StateArchive& archive, const std::string& name, const ExactSum& s) {
@@ -139,10 +139,10 @@ std::vector<std::string> GridBoundary<Dim>::outflow_summary() const {
   std::vector<std::string> lines;
   for (const auto& b : books_) {
     const EnergyBalance e = b.value();
-    lines.push_back(fmt::format("outflow {}: {:.0f} particles, mass {:.6g} kg, kinetic energy {:.6g} J, total energy "
-                                "{:.6g} J",
-                                face_names[static_cast<std::size_t>(b.face)], b.particle_count(), e.mass, e.kinetic,
-                                e.total()));
+    lines.push_back(
+        fmt::format("outflow {}: {:.0f} particles, mass {:.6g} kg, kinetic energy {:.6g} J, total energy "
+                    "{:.6g} J",
+                    face_names[static_cast<std::size_t>(b.face)], b.particle_count(), e.mass, e.kinetic, e.total()));
   }
   return lines;
 }

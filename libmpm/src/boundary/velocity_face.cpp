@@ -39,8 +39,8 @@ bool VelocityFace<Dim>::holds(int component) const {
 }
 
 template <int Dim>
-void VelocityFace<Dim>::constrain(NodeArray<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member,
-                                  Real t, NodeRuns nodes) const {
+void VelocityFace<Dim>::constrain(NodeArray<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member, Real t,
+                                  NodeRuns nodes) const {
   for (const auto& k : held_) {
     const Real value = k.value ? (*k.value)(0, 0, 0, t) : 0;  // evaluated once per face, not per node
     for_each_listed_node(nodes_, nodes, [&](std::size_t j) { (velocity[nodes_[j]].*member)[k.component] = value; });
@@ -60,7 +60,8 @@ void VelocityFace<Dim>::add_traction(NodeArray<NodeRecord<Dim>>& node, Real t, N
 
 template <int Dim>
 bool VelocityFace<Dim>::does_work() const {
-  return !traction_.empty() || std::any_of(held_.begin(), held_.end(), [](const Held& k) { return k.value != nullptr; });
+  return !traction_.empty() ||
+         std::any_of(held_.begin(), held_.end(), [](const Held& k) { return k.value != nullptr; });
 }
 
 template <int Dim>

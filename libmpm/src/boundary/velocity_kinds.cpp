@@ -134,8 +134,7 @@ void allow_keys(const io::YamlReader& reader, const io::YamlValue& value, std::v
 }
 
 FaceConditionKind fixed_kind() {
-  return at_rest_kind("fixed", "every velocity component of the face's nodes held at 0 (a wall without slip)",
-                      Every{});
+  return at_rest_kind("fixed", "every velocity component of the face's nodes held at 0 (a wall without slip)", Every{});
 }
 
 FaceConditionKind slip_kind() {

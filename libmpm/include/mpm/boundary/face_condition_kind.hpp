@@ -34,7 +34,7 @@ class Scheme;
 /// Where a face condition is being read.
 struct FaceContext {
   int dimension = 0;
-  int face = 0;                            ///< the order of face_names
+  int face = 0;                           ///< the order of face_names
   std::array<double, 3> extent{0, 0, 0};  ///< m, the grid box's lengths
 };
 
