@@ -148,7 +148,8 @@ solver:
   scheme: musl
   shape_function: cubic_bspline
   gravity: [0, -9.81]
-  end_time: 0.2
+  cfl: 0.5
+  end_time: 0.14
 )");
   const EnergyBalance e0 = sim->energy();
   const Index n0 = sim->particle_count();
