@@ -18,13 +18,13 @@ namespace {
 
 /// A 0.4 m x 0.4 m block (2 x 2 particles per cell of 0.1 m) moving up at 1.3 m/s, without gravity, towards the
 /// outflow face y_max = 1 m of a 1 m x 1 m grid: it translates without stress and leaves row by row.
-std::string block_scene(const std::string& scheme, const std::string& shape, const std::string& extra = "") {
+std::string block_scene(const std::string& scheme, const std::string& shape, const std::string& top = "outflow") {
   return test::fill(R"(
 dimension: 2
 grid:
   extent: [1, 1]
   cell_size: 0.1
-  boundary: {x_min: slip, x_max: slip, y_min: slip, y_max: outflow}
+  boundary: {x_min: slip, x_max: slip, y_min: slip, y_max: @TOP@}
 materials:
   rubber: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}
 bodies:
@@ -38,17 +38,17 @@ solver:
   shape_function: @SHAPE@
   dt: 1.0e-3
   end_time: 1
-@EXTRA@)",
-                    {{"SCHEME", scheme}, {"SHAPE", shape}, {"EXTRA", extra}});
+)",
+                    {{"SCHEME", scheme}, {"SHAPE", shape}, {"TOP", top}});
 }
 
 constexpr double block_speed = 1.3, block_dt = 1.0e-3;
 
-/// The initial particles whose height after `steps` steps at the block's speed is beyond y = 1 m.
-std::vector<Index> predicted_leavers(const ParticleSet<2>& p, int steps) {
+/// The initial particles whose height after `steps` steps at the block's speed is beyond y = 1 m - margin.
+std::vector<Index> predicted_leavers(const ParticleSet<2>& p, int steps, double margin) {
   std::vector<Index> out;
   for (Index i = 0; i < p.size(); ++i)
-    if (p.x[i][1] + steps * block_dt * block_speed > 1) out.push_back(i);
+    if (p.x[i][1] + steps * block_dt * block_speed > 1 - margin) out.push_back(i);
   return out;
 }
 
@@ -60,15 +60,17 @@ const EnergySentinel<Dim>* sentinel_of(const Simulation<Dim>& sim) {
 }
 
 /// Runs the block scene for 150 and 300 steps and checks the particle count, the books and the energy balance.
-void check_block(const std::string& scheme, const std::string& shape) {
+/// `margin`: the outflow face's (a particle domain must leave before it crosses the face: see BlockLeavesWith...).
+void check_block(const std::string& scheme, const std::string& shape, double margin = 0) {
   SCOPED_TRACE(scheme + " " + shape);
-  auto sim = test::simulation_from_yaml<2>(block_scene(scheme, shape));
+  auto sim = test::simulation_from_yaml<2>(
+      block_scene(scheme, shape, margin > 0 ? "{type: outflow, margin: " + std::to_string(margin) + "}" : "outflow"));
   const ParticleSet<2> initial = sim->bodies()[0].particles;
   const EnergyBalance e0 = sim->energy();
   for (const int steps : {150, 300}) {
     sim->run({}, steps);
-    const auto leavers = predicted_leavers(initial, steps);
-    // the particles nearest the face at this step are 0.015 m beyond it and 0.035 m before it: no round-off doubt
+    const auto leavers = predicted_leavers(initial, steps, margin);
+    // the particles nearest the plane at this step are at least 0.015 m from it: no round-off doubt
     EXPECT_EQ(sim->particle_count(), initial.size() - static_cast<Index>(leavers.size())) << steps << " steps";
     ASSERT_EQ(sim->boundary().outflow().size(), 1u);
     const OutflowBook& book = sim->boundary().outflow()[0];
@@ -92,12 +94,16 @@ void check_block(const std::string& scheme, const std::string& shape) {
   const auto* sentinel = sentinel_of(*sim);
   ASSERT_NE(sentinel, nullptr);
   EXPECT_LT(std::abs(sentinel->last_ratio()), 1e-6);
-  // one notice, on the first step particles left (the top row, 0.875 m + 0.025 m from the face: step 97)
+  // one notice, on the first step particles left: the top row (8 particles at 0.875 m) crosses 1 m at step 97,
+  // 0.975 m at step 77
+  const int first = margin > 0 ? 77 : 97;
   ASSERT_EQ(sim->boundary().outflow_notices().size(), 1u);
   const OutflowNotice& notice = sim->boundary().outflow_notices()[0];
-  EXPECT_EQ(notice.step, 97);
+  EXPECT_EQ(notice.step, first);
   EXPECT_EQ(notice.particles, 8);
-  EXPECT_NE(notice.message().find("body block: 8 particles left through y_max (outflow) at step 97"), std::string::npos)
+  EXPECT_NE(
+      notice.message().find("body block: 8 particles left through y_max (outflow) at step " + std::to_string(first)),
+      std::string::npos)
       << notice.message();
 }
 
@@ -105,26 +111,26 @@ TEST(Outflow, BlockLeavesWithClosedBooksUsl) { check_block("usl", "linear"); }
 TEST(Outflow, BlockLeavesWithClosedBooksMusl) { check_block("musl", "linear"); }
 TEST(Outflow, BlockLeavesWithClosedBooksUsf) { check_block("usf", "linear"); }
 TEST(Outflow, BlockLeavesWithEveryShapeFunction) {
-  for (const char* shape : {"gimp", "cpgimp", "quadratic_bspline", "cubic_bspline", "bernstein", "cpdi_q4", "cpdi_r4"})
+  for (const char* shape : {"quadratic_bspline", "cubic_bspline", "bernstein", "cpdi_q4", "cpdi_r4"})
     check_block("musl", shape);
+  // GIMP's particle domain (half-width h / (2 ppc) = 0.025 m here) loses the weight of its part beyond the last node:
+  // with margin 0 a particle slows down as its domain crosses the face (at 300 steps 40 particles were left instead
+  // of 16). A margin of the domain's half-width removes it before its domain reaches the face.
+  for (const char* shape : {"gimp", "cpgimp"}) check_block("musl", shape, 0.025);
 }
 
-/// The scenes without an outflow face keep their energy.csv columns; with one, the face's columns follow.
+/// `stop` (the default written out) removes nothing and keeps no books.
 TEST(Outflow, BoundaryWithoutOutflowHasNoBooks) {
   auto sim = test::simulation_from_yaml<2>(block_scene("usl", "linear"));
   EXPECT_TRUE(sim->boundary().removes_particles());
-  const std::string walls = block_scene("usl", "linear");
-  auto closed = test::simulation_from_yaml<2>(walls.substr(0, walls.find("y_max: outflow")) + "y_max: stop" +
-                                              walls.substr(walls.find("y_max: outflow") + 14));
+  auto closed = test::simulation_from_yaml<2>(block_scene("usl", "linear", "stop"));
   EXPECT_FALSE(closed->boundary().removes_particles());
   EXPECT_TRUE(closed->boundary().outflow().empty());
 }
 
 /// A face without a condition keeps the guard's behaviour: the block stops the run when it crosses y_max.
 TEST(Outflow, FaceWithoutConditionStopsTheRun) {
-  std::string scene = block_scene("usl", "linear");
-  scene.replace(scene.find(", y_max: outflow"), 16, "");
-  auto sim = test::simulation_from_yaml<2>(scene);
+  auto sim = test::simulation_from_yaml<2>(block_scene("usl", "linear", "free"));
   EXPECT_THROW(sim->run({}, 300), StabilityError);
 }
 

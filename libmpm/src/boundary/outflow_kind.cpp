@@ -70,7 +70,9 @@ FaceConditionKind outflow_kind() {
       "momentum and energies are booked (energy.csv, outflow_FACE_*); the nodes are free";
   k.keys = {{"margin", "m",
              "particles closer than this to the face leave too (default 0: those beyond it); at least 0, less than "
-             "the grid's extent along the normal"}};
+             "the grid's extent along the normal. With gimp and cpgimp give the particle domain's half-width "
+             "(h / (2 particles_per_cell)): a domain's part beyond the last node has no weight, so a particle whose "
+             "domain crosses the face slows down"}};
   k.parse = parse;
   k.traits = traits;
   k.make_1d = make<1>;
