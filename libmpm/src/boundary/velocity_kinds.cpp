@@ -72,8 +72,8 @@ FaceConditionKind at_rest_kind(std::string name, std::string description, Held) 
 
 struct Every {
   std::vector<int> operator()(int, int dimension) const {
-    std::vector<int> all;
-    for (int d = 0; d < dimension; ++d) all.push_back(d);
+    std::vector<int> all(static_cast<std::size_t>(dimension));
+    for (int d = 0; d < dimension; ++d) all[static_cast<std::size_t>(d)] = d;
     return all;
   }
 };
