@@ -10,6 +10,7 @@
 #include "mpm/app/memory_estimate.hpp"
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/axisymmetric.hpp"
+#include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/cpdi_corner_tracking.hpp"
 #include "mpm/energy_sentinel.hpp"
 #include "mpm/expression.hpp"
@@ -347,8 +348,9 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
     throw SceneError(scene.output.where, "output.fields", *message);
 
   const SimulationSettings<Dim> settings = simulation_settings<Dim>(scene.solver, max_particle_mass(bodies));
-  auto sim = std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme),
-                                               GridBoundary<Dim>(geometry, scene.grid.boundary), settings);
+  GridBoundary<Dim> boundary = make_grid_boundary<Dim>(scene, geometry, *scheme);  // the faces' kinds
+  auto sim =
+      std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme), std::move(boundary), settings);
   for (auto& m : modules) sim->add_module(std::move(m));
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));

@@ -9,6 +9,7 @@
 #include <limits>
 #include <set>
 
+#include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/contact/multi_velocity_contact.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/io/yaml_reader.hpp"
@@ -68,11 +69,8 @@ void check_solver(const YamlReader& reader, const YamlValue& section, const Scen
                 "configuration, where they never meet; so neither has lagrange_quadratic, offered with the TLMPM "
                 "only because its negative weights would give nodes at a moving body's edge a negative mass)");
   for (int f = 0; f < 2 * scene.dimension; ++f)
-    for (const auto& traction : scene.grid.boundary[f].traction)
-      if (traction)
-        reader.fail(section,
-                    "face tractions (grid.boundary ... traction) are not supported together with contact: a traction "
-                    "acts on the shared grid field, and contact gives every body its own");
+    if (const std::string why = face_traits(scene.grid.boundary[static_cast<std::size_t>(f)]).not_contact; !why.empty())
+      reader.fail(section, why);
 }
 
 std::vector<PairFriction> read_pairs(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
@@ -180,7 +178,6 @@ std::vector<BodyBoundaryDescription> read_body_boundaries(const YamlReader& read
     for (const auto& entry : map.entries()) {
       if (entry.key == "body") continue;
       const int index = static_cast<int>(std::find(faces.begin(), faces.end(), entry.key) - faces.begin());
-      const int normal_axis = index / 2;
       if (!entry.value.node.IsScalar())
         reader.fail(entry.value, "expected fixed, slip or free (conditions that hold a velocity component at 0), got " +
                                      io::describe(entry.value.node));
@@ -189,14 +186,8 @@ std::vector<BodyBoundaryDescription> read_body_boundaries(const YamlReader& read
         reader.fail(entry.value,
                     "in axisymmetric coordinates the face x_min is the axis: its radial velocity is held "
                     "for every body (only slip may be written)");
-      FaceBoundary face;
-      face.where = reader.location(entry.value.mark);
-      const ComponentConstraint held{std::in_place, "0"};
-      if (kind == "fixed")
-        for (int d = 0; d < scene.dimension; ++d) face.component[d] = held;
-      else if (kind == "slip")
-        face.component[normal_axis] = held;
-      own.faces[index] = face;
+      own.faces[index] =
+          read_face_condition(reader, entry.value, FaceContext{scene.dimension, index, scene.grid.extent});
       any = true;
     }
     if (!any)
@@ -306,9 +297,11 @@ void build_contact(const SceneDescription& scene, Simulation<Dim>& simulation) {
   for (const auto& described : contact.body_boundaries) {
     typename ContactSettings<Dim>::BodyFaces own;
     own.body = body_index(scene, described.body);
-    own.faces = scene.grid.boundary;  // the scene's faces, the body's replacements over them
+    std::array<FaceDescription, 6> faces = scene.grid.boundary;  // the scene's faces, the body's replacements over them
     for (int f = 0; f < 2 * Dim; ++f)
-      if (described.faces[f]) own.faces[f] = *described.faces[f];
+      if (described.faces[f]) faces[f] = *described.faces[f];
+    own.boundary =
+        std::make_shared<const GridBoundary<Dim>>(make_grid_boundary<Dim>(simulation.grid().geometry, faces));
     settings.body_faces.push_back(own);
   }
   if (!contact.force_file.empty())

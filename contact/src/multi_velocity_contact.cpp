@@ -126,8 +126,7 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
     settings_.friction.assign(body_count_ * body_count_, 0);
   rigid_of_.assign(body_count_, -1);
   body_boundary_.resize(body_count_);
-  for (const auto& own : settings_.body_faces)
-    body_boundary_[own.body] = std::make_unique<GridBoundary<Dim>>(grid, own.faces);
+  for (const auto& own : settings_.body_faces) body_boundary_[own.body] = own.boundary;
   for (std::size_t r = 0; r < settings_.rigid_bodies.size(); ++r) {
     const auto& rb = settings_.rigid_bodies[r];
     rigid_of_[rb.body] = static_cast<int>(r);

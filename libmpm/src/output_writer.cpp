@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <optional>
 #include <stdexcept>
 
@@ -14,6 +15,48 @@
 #include "mpm/particle_domain_mesh.hpp"
 
 namespace mpm {
+namespace {
+
+/// energy.csv's columns without outflow faces.
+const std::vector<std::string> base_energy_columns{
+    "time",         "step",          "kinetic_energy", "strain_energy", "gravity_potential_energy",
+    "total_energy", "momentum_x",    "momentum_y",     "momentum_z",    "mass",
+    "plastic_work", "thermal_energy"};
+/// Per outflow face F, what left through it since t = 0 (GridBoundary::outflow): outflow_F_ and the names of the
+/// columns from kinetic_energy to thermal_energy, then the number of particles. The books close column by column:
+/// mass + sum over F of outflow_F_mass is the initial mass, and total_energy + sum of outflow_F_total_energy is
+/// E(0) + W (docs/theory.md §8).
+const std::vector<std::string> outflow_energy_columns{"kinetic_energy", "strain_energy", "gravity_potential_energy",
+                                                      "total_energy",   "momentum_x",    "momentum_y",
+                                                      "momentum_z",     "mass",          "plastic_work",
+                                                      "thermal_energy", "particles"};
+
+template <int Dim>
+std::vector<std::string> energy_columns(const Simulation<Dim>& sim) {
+  std::vector<std::string> columns = base_energy_columns;
+  for (const auto& book : sim.boundary().outflow())
+    for (const auto& c : outflow_energy_columns)
+      columns.push_back(fmt::format("outflow_{}_{}", face_names[static_cast<std::size_t>(book.face)], c));
+  return columns;
+}
+
+/// The columns of the energy.csv a restart continues: the base ones and the outflow ones its header has.
+std::vector<std::string> continued_energy_columns(const io::FileMark& mark) {
+  std::vector<std::string> columns = base_energy_columns;
+  std::ifstream in(mark.path);
+  std::string header;
+  if (!std::getline(in, header)) return columns;
+  std::size_t begin = 0;
+  for (std::size_t k = 0; begin <= header.size(); ++k) {
+    const std::size_t end = std::min(header.find(',', begin), header.size());
+    const std::string name = header.substr(begin, end - begin);
+    if (k >= base_energy_columns.size() && name.rfind("outflow_", 0) == 0) columns.push_back(name);
+    begin = end + 1;
+  }
+  return columns;
+}
+
+}  // namespace
 
 template <int Dim>
 OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string prefix, std::vector<std::string> fields,
@@ -32,17 +75,14 @@ OutputWriter<Dim>::OutputWriter(std::filesystem::path directory, std::string pre
   }
   fields_.push_back("id");
   if (grid_) grid_pvd_ = std::make_unique<io::PvdCollection>(directory_ / (prefix_ + "_grid.pvd"));
-  const std::vector<std::string> columns{
-      "time",         "step",          "kinetic_energy", "strain_energy", "gravity_potential_energy",
-      "total_energy", "momentum_x",    "momentum_y",     "momentum_z",    "mass",
-      "plastic_work", "thermal_energy"};
+  const std::vector<std::string>& columns = base_energy_columns;  // a scene with outflow: widened by the first row
   if (restart) {
     // Rank 0 of a distributed run continues the files; every rank continues the schedule.
     io::write_collectively(comm_, "continuing the output in '" + directory_.string() + "'", [&] {
       if (distributed() && comm_->rank() != 0) return;
       std::filesystem::create_directories(directory_);
-      energy_ =
-          std::make_unique<io::CsvLog>(directory_ / "energy.csv", columns, io::load_mark(*restart, "output/energy"));
+      const io::FileMark mark = io::load_mark(*restart, "output/energy");
+      energy_ = std::make_unique<io::CsvLog>(directory_ / "energy.csv", continued_energy_columns(mark), mark);
     });
     restore_state(*restart);
   } else {
@@ -125,7 +165,7 @@ void OutputWriter<Dim>::write_files(const Simulation<Dim>& sim, const io::FieldD
     grid_pvd_->add(sim.time(), directory_ / grid_name);
     grid_pvd_->write();
   }
-  energy_->append(energy_row(sim));
+  append_energy_row(sim, energy_row(sim));
 }
 
 namespace {
@@ -189,7 +229,7 @@ void OutputWriter<Dim>::write_pieces(const Simulation<Dim>& sim, const io::Field
       grid_pvd_->add(sim.time(), directory_ / grid_name);
       grid_pvd_->write();
     }
-    energy_->append(energy);
+    append_energy_row(sim, energy);
   });
 }
 
@@ -266,12 +306,26 @@ io::ImageGrid OutputWriter<Dim>::gathered_grid_image(const Simulation<Dim>& sim,
 template <int Dim>
 std::vector<double> OutputWriter<Dim>::energy_row(const Simulation<Dim>& sim) const {
   const EnergyBalance e = sim.energy();
-  return {sim.time(),     static_cast<double>(sim.step()),
-          e.kinetic,      e.strain,
-          e.gravity,      e.total(),
-          e.momentum[0],  e.momentum[1],
-          e.momentum[2],  e.mass,
-          e.plastic_work, e.thermal};
+  std::vector<double> row{sim.time(),     static_cast<double>(sim.step()),
+                          e.kinetic,      e.strain,
+                          e.gravity,      e.total(),
+                          e.momentum[0],  e.momentum[1],
+                          e.momentum[2],  e.mass,
+                          e.plastic_work, e.thermal};
+  for (const auto& book : sim.boundary().outflow()) {  // the same on every rank
+    const EnergyBalance out = book.value();
+    row.insert(row.end(), {out.kinetic, out.strain, out.gravity, out.total(), out.momentum[0], out.momentum[1],
+                           out.momentum[2], out.mass, out.plastic_work, out.thermal, book.particle_count()});
+  }
+  return row;
+}
+
+template <int Dim>
+void OutputWriter<Dim>::append_energy_row(const Simulation<Dim>& sim, const std::vector<double>& row) {
+  // A scene with outflow faces has their columns too: the first frame writes the header again with them.
+  if (frame_ == 0 && energy_->columns().size() != row.size())
+    energy_ = std::make_unique<io::CsvLog>(energy_->path(), energy_columns(sim));
+  energy_->append(row);
 }
 
 template class OutputWriter<1>;

@@ -29,8 +29,9 @@ Simulation<Dim>::Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<
     : grid_(geometry),
       bodies_(std::move(bodies)),
       scheme_(std::move(scheme)),
-      boundary_(std::move(boundary)),
+      boundary_(std::make_shared<GridBoundary<Dim>>(std::move(boundary))),
       settings_(settings) {
+  if (!boundary_->empty()) hooks_.add(boundary_);  // first: the face conditions hold before any module reads the grid
   scheme_->initialize(bodies_, grid_);
   for (auto& b : bodies_) kinematic_viscosity_ = std::max(kinematic_viscosity_, b.material->kinematic_viscosity());
   particles_changed();
@@ -121,7 +122,7 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
       }
     }
   }
-  StepContext<Dim> ctx{grid_, bodies_, settings_.transfer, boundary_, hooks_};
+  StepContext<Dim> ctx{grid_, bodies_, settings_.transfer, *boundary_, hooks_};
   attach(ctx);
   ctx.time = time_;
   ctx.dt = dt;
@@ -290,7 +291,7 @@ template <int Dim>
 StabilityReport Simulation<Dim>::diagnose(Real dt) const {
   StabilityReport r;
   const auto& g = grid_.geometry;
-  const Vec<Dim> upper = g.upper();
+  const Vec<Dim> lower = boundary_->keep_lower(g), upper = boundary_->keep_upper(g);  // open on outflow faces
   const bool axisymmetric = g.coordinates == Coordinates::axisymmetric;
   for (const auto& b : bodies_) {
     const auto& p = b.particles;
@@ -306,7 +307,7 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
       if (!x.allFinite()) {
         fail("position", "not finite");
       } else if (scheme_->positions_must_stay_in_grid() &&
-                 ((x.array() < g.origin.array()).any() || (x.array() > upper.array()).any())) {
+                 ((x.array() < lower.array()).any() || (x.array() > upper.array()).any())) {
         fail("position", fmt::format("x = ({}) left the grid box", fmt::join(x.data(), x.data() + Dim, ", ")));
       } else if (axisymmetric && scheme_->positions_must_stay_in_grid() && !(x[0] > 0)) {
         fail("position", fmt::format("r = {:.6g} m: on or across the axis of the axisymmetric grid", x[0]));

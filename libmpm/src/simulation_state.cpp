@@ -156,10 +156,24 @@ std::vector<std::string> Simulation<Dim>::restore_state(const StateArchive& arch
     if (!archive.contains(prefix + storage_order_entry))
       throw ArchiveError(fmt::format("the checkpoint has no body '{}'", bodies_[b].name));
     const auto storage = archive.values<std::uint32_t>(prefix + storage_order_entry);
-    if (static_cast<Index>(storage.size()) != p.size())
+    const bool removed = boundary_->removes_particles() && static_cast<Index>(storage.size()) < p.size();
+    if (static_cast<Index>(storage.size()) != p.size() && !removed)
       throw ArchiveError(fmt::format("body '{}' has {} particles in the checkpoint and {} in the scene",
                                      bodies_[b].name, storage.size(), p.size()));
     p.gather(id_order(p));  // fields the checkpoint lacks then line up with the ones it restores
+    if (removed) {          // particles left through an outflow face before the checkpoint: keep the saved ones, by id
+      std::vector<std::uint32_t> saved(storage.begin(), storage.end());
+      std::sort(saved.begin(), saved.end());
+      std::vector<Index> kept;
+      for (const std::uint32_t id : saved) {
+        const auto it = std::lower_bound(p.id.begin(), p.id.end(), id);
+        if (it == p.id.end() || *it != id)
+          throw ArchiveError(
+              fmt::format("body '{}': the checkpoint holds particle {}, which the scene lacks", bodies_[b].name, id));
+        kept.push_back(it - p.id.begin());
+      }
+      p.gather(kept);
+    }
     const auto layout = p.field_layout();
     for (const auto& f : layout) {
       const std::string name = prefix + f.name;

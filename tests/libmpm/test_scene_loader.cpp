@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mpm/app/modules.hpp"
+#include "mpm/boundary/velocity_face.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/scene_loader.hpp"
 
@@ -23,6 +24,12 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path data_dir = fs::path(MPM_SOURCE_DIR) / "tests" / "data";
+
+/// The velocity a face of a scene holds in component c (its kind's VelocityFaceSpec), or nothing.
+std::optional<std::string> held(const mpm::FaceDescription& face, int c) {
+  const auto* spec = std::any_cast<mpm::VelocityFaceSpec>(&face.spec);
+  return spec ? spec->velocity[static_cast<std::size_t>(c)] : std::nullopt;
+}
 
 // ---------------------------------------------------------------------------------------------------
 // Bad scenes: one file per error path.
@@ -209,19 +216,19 @@ TEST(SceneLoader, Good2D) {
   EXPECT_EQ(g.cell_size, (std::array<double, 3>{0.1, 0.05, 0}));
   EXPECT_EQ(g.cells, (std::array<int, 3>{20, 20, 1}));
   // x_min fixed: both in-plane components 0.
-  EXPECT_EQ(g.boundary[0].component[0], std::optional<std::string>("0"));
-  EXPECT_EQ(g.boundary[0].component[1], std::optional<std::string>("0"));
-  EXPECT_FALSE(g.boundary[0].component[2]);
+  EXPECT_EQ(held(g.boundary[0], 0), std::optional<std::string>("0"));
+  EXPECT_EQ(held(g.boundary[0], 1), std::optional<std::string>("0"));
+  EXPECT_FALSE(held(g.boundary[0], 2));
   EXPECT_EQ(g.boundary[0].where.line, 8);
   // x_max slip: only the normal (x) component.
-  EXPECT_EQ(g.boundary[1].component[0], std::optional<std::string>("0"));
-  EXPECT_FALSE(g.boundary[1].component[1]);
+  EXPECT_EQ(held(g.boundary[1], 0), std::optional<std::string>("0"));
+  EXPECT_FALSE(held(g.boundary[1], 1));
   // y_min prescribed: x free, y = 0.1 sin(t).
-  EXPECT_FALSE(g.boundary[2].component[0]);
-  EXPECT_EQ(g.boundary[2].component[1], std::optional<std::string>("0.1*sin(t)"));
+  EXPECT_FALSE(held(g.boundary[2], 0));
+  EXPECT_EQ(held(g.boundary[2], 1), std::optional<std::string>("0.1*sin(t)"));
   // y_max free, z faces untouched.
   for (int face = 3; face < 6; ++face)
-    for (int c = 0; c < 3; ++c) EXPECT_FALSE(g.boundary[face].component[c]) << face << " " << c;
+    for (int c = 0; c < 3; ++c) EXPECT_FALSE(held(g.boundary[face], c)) << face << " " << c;
   EXPECT_EQ(g.boundary[3].where.line, 11);
   EXPECT_EQ(g.boundary[4].where.line, 0);
 
@@ -289,15 +296,15 @@ TEST(SceneLoader, Good3D) {
   EXPECT_EQ(s.grid.cell_size, (std::array<double, 3>{0.25, 0.25, 0.25}));
   EXPECT_EQ(s.grid.cells, (std::array<int, 3>{4, 4, 8}));
   // z_min fixed: all three components.
-  for (int c = 0; c < 3; ++c) EXPECT_EQ(s.grid.boundary[4].component[c], std::optional<std::string>("0"));
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(held(s.grid.boundary[4], c), std::optional<std::string>("0"));
   // x_min and x_max slip: x only.
   for (int face : {0, 1}) {
-    EXPECT_EQ(s.grid.boundary[face].component[0], std::optional<std::string>("0"));
-    EXPECT_FALSE(s.grid.boundary[face].component[1]);
-    EXPECT_FALSE(s.grid.boundary[face].component[2]);
+    EXPECT_EQ(held(s.grid.boundary[face], 0), std::optional<std::string>("0"));
+    EXPECT_FALSE(held(s.grid.boundary[face], 1));
+    EXPECT_FALSE(held(s.grid.boundary[face], 2));
   }
   for (int face : {2, 3, 5})
-    for (int c = 0; c < 3; ++c) EXPECT_FALSE(s.grid.boundary[face].component[c]);
+    for (int c = 0; c < 3; ++c) EXPECT_FALSE(held(s.grid.boundary[face], c));
 
   ASSERT_EQ(s.bodies.size(), 2u);
   const auto& ball = s.bodies[0];
@@ -344,9 +351,9 @@ solver: {cfl: 1, end_time: 1, gravity: [-1]}
   EXPECT_EQ(s.grid.extent, (std::array<double, 3>{2, 0, 0}));
   EXPECT_EQ(s.grid.cell_size, (std::array<double, 3>{0.5, 0, 0}));
   EXPECT_EQ(s.grid.cells, (std::array<int, 3>{4, 1, 1}));
-  EXPECT_EQ(s.grid.boundary[0].component[0], std::optional<std::string>("0"));
-  EXPECT_FALSE(s.grid.boundary[0].component[1]);
-  EXPECT_EQ(s.grid.boundary[1].component[0], std::optional<std::string>("0"));
+  EXPECT_EQ(held(s.grid.boundary[0], 0), std::optional<std::string>("0"));
+  EXPECT_FALSE(held(s.grid.boundary[0], 1));
+  EXPECT_EQ(held(s.grid.boundary[1], 0), std::optional<std::string>("0"));
   EXPECT_EQ(s.bodies[0].name, "body0");
   EXPECT_EQ(s.bodies[0].particles_per_cell, (std::array<int, 3>{2, 1, 1}));
   EXPECT_EQ(s.bodies[0].velocity, (std::array<std::string, 3>{"x - 1", "0", "0"}));
@@ -378,8 +385,8 @@ TEST(SceneLoader, BoundaryNumbersBecomeExpressionText) {
   const auto s = mpm::parse_scene(
       replaced(valid_2d, "  cell_size: 0.1\n", "  cell_size: 0.1\n  boundary: {y_max: {velocity: [0.25, free]}}\n"),
       "b.yaml");
-  EXPECT_EQ(s.grid.boundary[3].component[0], std::optional<std::string>("0.25"));
-  EXPECT_FALSE(s.grid.boundary[3].component[1]);
+  EXPECT_EQ(held(s.grid.boundary[3], 0), std::optional<std::string>("0.25"));
+  EXPECT_FALSE(held(s.grid.boundary[3], 1));
 }
 
 TEST(SceneLoader, YamlAliasesWork) {

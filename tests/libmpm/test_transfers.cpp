@@ -6,7 +6,8 @@
 #include <limits>
 #include <random>
 
-#include "mpm/boundary_conditions.hpp"
+#include "mpm/boundary/grid_boundary.hpp"
+#include "mpm/boundary/velocity_face.hpp"
 #include "mpm/schemes/transfer_kernels.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/linear_hat.hpp"
@@ -112,18 +113,20 @@ TEST(Transfers, MuslApicConservesMomentum) {
 namespace mpm {
 namespace {
 
-// Walls keep particles in (boundary_conditions.hpp): a face whose normal velocity is held at 0 (`fixed`,
+// Walls keep particles in (boundary/grid_boundary.hpp): a face whose normal velocity is held at 0 (`fixed`,
 // `slip`) bounds the positions; free faces and prescribed non-zero velocities do not; NaN stays NaN for
 // the stability guard.
 TEST(GridWalls, ClampOnlyAtWallFaces) {
   const GridGeometry<2> g(Vec<2>(-1, 0), Vec<2>(0.5, 0.25), {4, 8});  // [-1, 1] x [0, 2]
-  std::array<FaceBoundary, 6> faces{};
-  faces[1].component[0] = "0";  // x_max slip: a wall
-  faces[2].component[0] = "0";  // y_min: tangential only, not a wall
-  faces[3].component[1] = "0";  // y_max: a wall ...
-  faces[3].component[0] = "0";  // ... held in both components (fixed)
-  faces[0].component[0] = "2";  // x_min moves at 2 m/s: a piston, not a wall
-  const GridBoundary<2> b(g, faces);
+  std::array<VelocityFaceSpec, 4> faces{};
+  faces[1].velocity[0] = "0";  // x_max slip: a wall
+  faces[2].velocity[0] = "0";  // y_min: tangential only, not a wall
+  faces[3].velocity[1] = "0";  // y_max: a wall ...
+  faces[3].velocity[0] = "0";  // ... held in both components (fixed)
+  faces[0].velocity[0] = "2";  // x_min moves at 2 m/s: a piston, not a wall
+  std::vector<std::unique_ptr<FaceCondition<2>>> conditions;
+  for (int f = 0; f < 4; ++f) conditions.push_back(std::make_unique<VelocityFace<2>>(g, f, faces[f]));
+  const GridBoundary<2> b(g, std::move(conditions));
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_EQ(b.wall_lower(), Vec<2>(-inf, -inf));
   EXPECT_EQ(b.wall_upper(), Vec<2>(1, 2));

@@ -5,8 +5,10 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <tuple>
@@ -325,7 +327,9 @@ TEST(HeatConduction, Example11TaylorSceneSharesTheTemperatureWithPlasticity) {
   EXPECT_DOUBLE_EQ(p.field<Real>("temperature")[0], 293.15);
   EXPECT_EQ(sim->time_step_limiter(), "CFL bound h / (c + |v|), eq. 2.73");
   const double diffusion = 0.5e-3 * 0.5e-3 * 8940 * 383 / (6 * 386.0);
-  EXPECT_NEAR(sim->modules().front()->stable_time_step(sim->bodies()), diffusion, 1e-12 * diffusion);
+  double bound = std::numeric_limits<double>::infinity();  // the heat conduction's (the other modules impose none)
+  for (const auto& m : sim->modules()) bound = std::min(bound, m->stable_time_step(sim->bodies()));
+  EXPECT_NEAR(bound, diffusion, 1e-12 * diffusion);
 }
 #endif
 

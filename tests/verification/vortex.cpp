@@ -14,6 +14,7 @@
 #include "mpm/shape/cpdi_elements.hpp"
 
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/output_writer.hpp"
 #include "mpm/scene_loader.hpp"
 #include "mpm/stability_error.hpp"
@@ -246,8 +247,9 @@ VortexResult run_vortex(const VortexSpec& spec) {
     sim = std::make_unique<Simulation<2>>(
         geometry, ring_bodies(*disk, writes),
         make_scheme<2>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function),
-        GridBoundary<2>(geometry, scene.grid.boundary), disk->settings());
-    built_modules = disk->modules();
+        make_grid_boundary<2>(geometry, scene.grid.boundary), disk->settings());
+    for (const auto& m : disk->modules())  // the disk's own face conditions stay with it: the ring has its own
+      if (m.get() != static_cast<const Module<2>*>(&disk->boundary())) built_modules.push_back(m);
   }
   const bool total_lagrangian = spec.scheme == "tlmpm";
 

@@ -2,11 +2,12 @@
 /// \file energy_sentinel.hpp
 /// The energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8): every
 /// `interval` steps (50; the work below is accumulated every step), the balance
-///   B(t) = E(t) - E(0) - W(t),   E = kinetic + strain (with a gas's internal energy) + gravity potential +
-///                                    plastic work (dissipation, kept as energy),
+///   B(t) = E(t) - E(0) - W(t) + E_out(t),   E = kinetic + strain (with a gas's internal energy) + gravity
+///                                             potential + plastic work (dissipation, kept as energy),
 /// where W is the work done on the bodies by the face conditions (prescribed velocities and tractions,
 /// GridBoundary::work), by moving rigid partners (reaction_provider.hpp: F . V dt) and by the particle field
-/// "body_force" when a module sets it (sum m b . (v(t) + v(t + dt)) / 2 dt). A stable run has
+/// "body_force" when a module sets it (sum m b . (v(t) + v(t + dt)) / 2 dt), and E_out the energy E of the particles
+/// that left through outflow faces, as they left (GridBoundary::outflow_energy). A stable run has
 /// B <= 0 up to round-off (dissipation that is not tracked, PIC damping and friction, only lowers it); the first
 /// step where B exceeds tolerance x the largest energy scale of the run so far is recorded once as an
 /// EnergyDrift, with which energy grew and the hint of the one table (energy_hints.hpp). The run loop logs it

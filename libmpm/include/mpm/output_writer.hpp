@@ -67,6 +67,8 @@ class OutputWriter {
   /// sums are the one-process ones, docs/distributed.md §5.2); a collective call.
   io::ImageGrid gathered_grid_image(const Simulation<Dim>& sim, const io::FieldData& data) const;
   std::vector<double> energy_row(const Simulation<Dim>& sim) const;
+  /// Appends to energy.csv (rank 0), with the outflow faces' columns (the first frame sets the header).
+  void append_energy_row(const Simulation<Dim>& sim, const std::vector<double>& row);
   std::filesystem::path directory_;
   std::string prefix_;
   std::vector<std::string> fields_;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/boundary/face_names.hpp"
 #include "mpm/coordinates.hpp"
 #include "mpm/solver_options.hpp"
 
@@ -23,16 +24,12 @@ struct SourceLocation {
   int column = 0;
 };
 
-/// Grid velocity constraint of one component on one box face. `expression` is a muparser expression of
-/// `t` (seconds); "0" means fixed. An empty optional means the component is free.
-using ComponentConstraint = std::optional<std::string>;
-
-/// Boundary condition on one face of the grid box.
-struct FaceBoundary {
-  std::array<ComponentConstraint, 3> component;  ///< per velocity component (x, y, z)
-  /// Prescribed traction per component (Pa), a muparser expression of t; empty = none. Applied as nodal
-  /// forces on the face nodes (tributary face area), review §4.2.2.
-  std::array<std::optional<std::string>, 3> traction;
+/// A face's condition as the scene gives it (`grid.boundary.FACE`): the name of its kind (the registry of
+/// boundary/face_condition_kind.hpp, whose entry gives its traits and makes its grid condition) and what the
+/// kind's parser read.
+struct FaceDescription {
+  std::string kind = "free";  ///< no condition: a particle that leaves the grid stops the run
+  std::any spec;
   SourceLocation where;
 };
 
@@ -45,10 +42,10 @@ struct GridDescription {
   /// the loader).
   Coordinates coordinates = Coordinates::cartesian;
   /// Faces in the order of face_names.
-  std::array<FaceBoundary, 6> boundary;
+  std::array<FaceDescription, 6> boundary;
 
   /// The scene's names of the box faces (`grid.boundary`, `thermal.boundary`), in the order of `boundary`.
-  static constexpr std::array<const char*, 6> face_names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+  static constexpr std::array<const char*, 6> face_names = mpm::face_names;
 };
 
 /// A named material: its model key (a registry name such as "linear_elastic") and its parameters, in SI

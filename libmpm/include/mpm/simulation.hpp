@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "mpm/active_tiles.hpp"
+#include "mpm/boundary/grid_boundary.hpp"
 #include "mpm/communicator.hpp"
 #include "mpm/energy.hpp"
 #include "mpm/module.hpp"
@@ -44,6 +45,8 @@ struct SimulationSettings {
 template <int Dim>
 class Simulation {
  public:
+  /// `boundary`: the conditions on the grid's faces; unless it has none, it joins the step as the first module
+  /// (GridBoundary), so it runs before every module added later in each phase.
   Simulation(const GridGeometry<Dim>& geometry, std::vector<Body<Dim>> bodies, std::unique_ptr<Scheme<Dim>> scheme,
              GridBoundary<Dim> boundary, const SimulationSettings<Dim>& settings);
 
@@ -152,8 +155,8 @@ class Simulation {
   EnergyBalance energy() const;
   /// The audit of one body (energy() is the sum over the bodies, accumulated in the same order).
   EnergyBalance body_energy(const Body<Dim>& body) const;
-  /// Grid boundary conditions (velocity constraints and tractions on the box faces).
-  const GridBoundary<Dim>& boundary() const { return boundary_; }
+  /// The conditions on the grid's faces (velocity constraints, tractions, outflow with its books and notices).
+  const GridBoundary<Dim>& boundary() const { return *boundary_; }
 
   /// Saves the whole state of the run (simulation_state.cpp): time, step, the time-step control, every
   /// particle field of every body in id order with the order the particles are stored in, and the modules'
@@ -167,7 +170,8 @@ class Simulation {
   /// nothing on the other ranks. A collective call; in one process, copies of the bodies.
   std::vector<Body<Dim>> gather_bodies() const;
   /// Continues from a saved state, on a simulation built from the same scene (the same bodies with as many
-  /// particles, the same modules); the guard's snapshot is taken there. Returns notes on fields that only one
+  /// particles, or fewer when an outflow face removed some: the saved ones by id, the same modules); the guard's
+  /// snapshot is taken there. Returns notes on fields that only one
   /// side has (a fork that changed the output fields); throws ArchiveError for anything else that differs.
   std::vector<std::string> restore_state(const StateArchive& archive);
 
@@ -219,7 +223,7 @@ class Simulation {
   Grid<Dim> grid_;
   std::vector<Body<Dim>> bodies_;
   std::unique_ptr<Scheme<Dim>> scheme_;
-  GridBoundary<Dim> boundary_;
+  std::shared_ptr<GridBoundary<Dim>> boundary_;  ///< never null; in hooks_ unless empty
   SimulationSettings<Dim> settings_;
   ModuleHooks<Dim> hooks_;
   WaveSpeedBound<Dim> wave_speed_;

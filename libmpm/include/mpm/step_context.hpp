@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "mpm/body.hpp"
-#include "mpm/boundary_conditions.hpp"
 #include "mpm/communicator.hpp"
+#include "mpm/grid.hpp"
 #include "mpm/node_runs.hpp"
 #include "mpm/step_profile.hpp"
 
@@ -16,6 +16,8 @@ namespace mpm {
 
 template <int Dim>
 class ModuleHooks;
+template <int Dim>
+class GridBoundary;
 class ActiveTiles;
 
 /// Settings of the transfers that do not change during a run.
@@ -35,6 +37,8 @@ struct StepContext {
   Grid<Dim>& grid;
   std::vector<Body<Dim>>& bodies;
   const TransferSettings<Dim>& settings;
+  /// The conditions on the grid's faces (boundary/grid_boundary.hpp), a module of the step that also answers the
+  /// position updates (walls, the guard's box) and the energy sentinel (their work).
   const GridBoundary<Dim>& boundary;
   ModuleHooks<Dim>& hooks;
   Real time = 0;   ///< s, at the start of the step

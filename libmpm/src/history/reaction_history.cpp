@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "history_support.hpp"
+#include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/exact_sum.hpp"
 #include "mpm/reaction_provider.hpp"
 
@@ -35,8 +36,7 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
         GridDescription::face_names.begin() + 2 * static_cast<std::ptrdiff_t>(scene.dimension));
     const std::string name = reader.choice(*face, faces);
     s.face = static_cast<int>(std::find(faces.begin(), faces.end(), name) - faces.begin());
-    const auto& held = scene.grid.boundary[static_cast<std::size_t>(s.face)].component;
-    if (std::none_of(held.begin(), held.begin() + scene.dimension, [](const auto& c) { return c.has_value(); }))
+    if (!face_traits(scene.grid.boundary[static_cast<std::size_t>(s.face)]).holds_velocity)
       reader.fail(*face, fmt::format("face {} has no velocity condition (grid.boundary.{}: fixed, slip or a "
                                      "velocity), so nothing holds the bodies there",
                                      name, name));

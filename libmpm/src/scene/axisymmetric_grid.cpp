@@ -3,6 +3,7 @@
 // so no other condition may be written on it.
 #include <fmt/format.h>
 
+#include "mpm/boundary/face_condition_kind.hpp"
 #include "sections.hpp"
 
 namespace mpm::sections {
@@ -24,9 +25,9 @@ void read_coordinates(const YamlReader& reader, const YamlMap& map, int dimensio
         reader.fail(*axis,
                     "x_min is the axis of an axisymmetric grid, a symmetry line (radial velocity 0, set "
                     "automatically): it takes no other condition (write slip or nothing)");
-  FaceBoundary& axis = grid.boundary[0];
-  axis.component[0].emplace("0");
-  axis.where = reader.location(key->mark);
+  // the axis: slip, as if written
+  grid.boundary[0] = read_face_condition(reader, io::YamlValue{YAML::Node("slip"), key->path, key->mark},
+                                         FaceContext{dimension, 0, grid.extent});
 }
 
 }  // namespace mpm::sections

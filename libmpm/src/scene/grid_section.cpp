@@ -4,36 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "mpm/boundary/face_condition_kind.hpp"
 #include "sections.hpp"
 
 namespace mpm::sections {
 namespace {
 
-/// A face given as a map: velocity and/or traction components, each an expression of t ("free": none).
-void read_face_condition(const YamlReader& reader, const YamlMap::Entry& face, int dimension, FaceBoundary& boundary) {
-  const YamlMap condition = reader.map(face.value);
-  condition.allow({"velocity", "traction"});
-  const auto velocity = condition.find("velocity");
-  const auto traction = condition.find("traction");
-  if (!velocity && !traction) reader.fail(face.value, "expected velocity: [...] and/or traction: [...]");
-  if (velocity) {
-    const auto components = reader.list(*velocity, dimension, "components");
-    for (int d = 0; d < dimension; ++d) {
-      if (components[d].node.IsScalar() && components[d].node.Scalar() == "free") continue;
-      boundary.component[d] = reader.expression(components[d], {"t"});
-    }
-  }
-  if (traction) {
-    const auto components = reader.list(*traction, dimension, "components");
-    for (int d = 0; d < dimension; ++d) {
-      if (boundary.component[d])
-        reader.fail(components[d],
-                    fmt::format("component {} of face {} has both a velocity and a traction", axis_names[d], face.key));
-      boundary.traction[d] = reader.expression(components[d], {"t"});
-    }
-  }
-}
-
+/// `grid.boundary`: per face a condition of a registered kind (mpm/boundary/face_condition_kind.hpp).
 void read_boundary(const YamlReader& reader, const YamlValue& value, int dimension, GridDescription& grid) {
   const YamlMap faces = reader.map(value);
   const auto& names = GridDescription::face_names;
@@ -41,21 +18,8 @@ void read_boundary(const YamlReader& reader, const YamlValue& value, int dimensi
   faces.allow(valid, "face", fmt::format(" in {}D", dimension));
   for (const auto& face : faces.entries()) {
     const int index = static_cast<int>(std::find(valid.begin(), valid.end(), face.key) - valid.begin());
-    const int normal_axis = index / 2;
-    FaceBoundary& boundary = grid.boundary[index];
-    boundary.where = reader.location(face.value.mark);
-    if (face.value.node.IsMap()) {
-      read_face_condition(reader, face, dimension, boundary);
-    } else if (face.value.node.IsScalar()) {
-      const std::string kind = reader.choice(face.value, {"fixed", "slip", "free"});
-      const ComponentConstraint held{std::in_place, "0"};  // the velocity component is 0
-      if (kind == "fixed")
-        for (int d = 0; d < dimension; ++d) boundary.component[d] = held;
-      else if (kind == "slip")
-        boundary.component[normal_axis] = held;
-    } else {
-      reader.fail(face.value, "expected fixed, slip, free or {velocity: [...]}, got " + io::describe(face.value.node));
-    }
+    grid.boundary[static_cast<std::size_t>(index)] =
+        read_face_condition(reader, face.value, FaceContext{dimension, index, grid.extent});
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/implicit/implicit_options.hpp"
 #include "mpm/scene_error.hpp"
 
@@ -48,20 +49,14 @@ void refuse_transfers(const io::YamlReader& reader, const io::YamlMap& map, cons
                 "holds for the FLIP update only)");
 }
 
-/// Walls must be fixed (zero) velocity components; tractions are not implemented yet.
+/// The face conditions must combine with the implicit scheme (FaceTraits::not_implicit: walls at rest only, no
+/// traction, no outflow).
 void refuse_boundaries(const SceneDescription& scene) {
   const auto& names = GridDescription::face_names;
   for (int f = 0; f < 2 * scene.dimension; ++f) {
-    const FaceBoundary& face = scene.grid.boundary[f];
-    const std::string key = std::string("grid.boundary.") + names[f];
-    for (int d = 0; d < scene.dimension; ++d) {
-      if (face.component[d] && *face.component[d] != "0")
-        throw SceneError(face.where, key,
-                         fmt::format("scheme: implicit supports walls at rest only (fixed, slip or velocity 0); "
-                                     "component {} is '{}'",
-                                     "xyz"[d], *face.component[d]));
-      if (face.traction[d]) throw SceneError(face.where, key, "scheme: implicit does not support tractions yet");
-    }
+    const FaceDescription& face = scene.grid.boundary[static_cast<std::size_t>(f)];
+    if (const std::string why = face_traits(face).not_implicit; !why.empty())
+      throw SceneError(face.where, std::string("grid.boundary.") + names[static_cast<std::size_t>(f)], why);
   }
 }
 

@@ -43,7 +43,7 @@ struct PlaneDescription {
 struct BodyBoundaryDescription {
   std::string body;
   /// In the order of GridDescription::face_names; none: the face keeps grid.boundary's condition.
-  std::array<std::optional<FaceBoundary>, 6> faces{};
+  std::array<std::optional<FaceDescription>, 6> faces{};
   SourceLocation where;
 };
 

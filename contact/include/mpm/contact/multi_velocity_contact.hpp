@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/boundary_conditions.hpp"
+#include "mpm/boundary/grid_boundary.hpp"
 #include "mpm/exact_sum.hpp"
 #include "mpm/expression.hpp"
 #include "mpm/interface_conductance.hpp"
@@ -55,7 +55,7 @@ struct ContactSettings {
   /// with the body's replacements. Bodies not listed take grid.boundary's (StepContext::boundary).
   struct BodyFaces {
     int body = 0;
-    std::array<FaceBoundary, 6> faces{};
+    std::shared_ptr<const GridBoundary<Dim>> boundary;  ///< made from the scene's kinds (contact_section.cpp)
   };
   std::vector<BodyFaces> body_faces;
   std::string force_file;  ///< empty: no CSV
@@ -205,7 +205,7 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   std::vector<Grid<Dim>> body_grids_;  ///< one per body (Body::own_grid points here)
   std::vector<int> rigid_of_;          ///< per body: index into settings_.rigid_bodies, or -1
   /// per body: its own face conditions (settings_.body_faces), or null: the scene's (StepContext::boundary)
-  std::vector<std::unique_ptr<GridBoundary<Dim>>> body_boundary_;
+  std::vector<std::shared_ptr<const GridBoundary<Dim>>> body_boundary_;
   std::vector<std::array<Expression, Dim>> rigid_velocity_, plane_velocity_;
   std::vector<Vec<Dim>> plane_point_;
   std::unique_ptr<ShapePasses<Dim>> passes_;

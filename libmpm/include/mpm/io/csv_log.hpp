@@ -35,6 +35,8 @@ class CsvLog {
 
   /// Where the table is written.
   const std::filesystem::path& path() const { return path_; }
+  /// The header's column names.
+  const std::vector<std::string>& columns() const { return columns_; }
 
  private:
   std::filesystem::path path_;

@@ -13,7 +13,8 @@
 namespace mpm::kernels {
 
 /// Bins particles, maps mass, momentum and force to the grid (P2G), computes v^t and the updated
-/// velocity, and applies boundary conditions and module hooks at both stages.
+/// velocity, and runs the module hooks at both stages (the face conditions among them: GridBoundary runs first in
+/// each phase, its tractions after P2G and its velocity constraints at each stage).
 template <int Dim, class Shape, class Coords = CartesianCoordinates>
 void map_and_update_grid(StepContext<Dim>& ctx) {
   {
@@ -24,13 +25,8 @@ void map_and_update_grid(StepContext<Dim>& ctx) {
     for (auto& body : ctx.bodies) particles_to_grid<Dim, Shape, true, true, Coords>(body, ctx.grid);
   }
   PhaseTimer timer(ctx.profile, StepPhase::grid_update);
-  if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(ctx.grid.node, ctx.time, ctx.active_nodes);
   ctx.hooks.after_p2g(ctx);
   update_grid_velocity(ctx.grid, ctx.settings, ctx.dt, ctx.active_nodes);
-  if (!ctx.boundary.empty()) {
-    ctx.boundary.apply(ctx.grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time, ctx.active_nodes);
-    ctx.boundary.apply(ctx.grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt, ctx.active_nodes);
-  }
   ctx.hooks.grid_velocity(ctx, GridStage::mapped);
   ctx.hooks.grid_velocity(ctx, GridStage::updated);
 }

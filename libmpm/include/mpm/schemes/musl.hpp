@@ -98,7 +98,8 @@ class Musl final : public ShapedScheme<Dim, Shape> {
     });
   }
 
-  /// v_I^{t+dt} = (mv)_I^{t+dt} / m_I (eq. 2.65), stored in `mapped`; boundary conditions again.
+  /// v_I^{t+dt} = (mv)_I^{t+dt} / m_I (eq. 2.65), stored in `mapped`; the hooks of the re-mapped stage (the face
+  /// conditions again, GridBoundary).
   static void remapped_velocity(StepContext<Dim>& ctx) {
     auto& grid = ctx.grid;
     const Real cutoff = ctx.settings.mass_cutoff;
@@ -111,8 +112,6 @@ class Musl final : public ShapedScheme<Dim, Shape> {
           grid.velocity[i].mapped.setZero();
       }
     });
-    if (!ctx.boundary.empty())
-      ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time + ctx.dt, ctx.active_nodes);
     ctx.hooks.grid_velocity(ctx, GridStage::remapped);
   }
 
@@ -122,7 +121,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
                                               MatU<Dim>* L_out) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
-    const Vec<Dim> upper = g.upper();
+    const Vec<Dim> keep_lower = ctx.boundary.keep_lower(g), keep_upper = ctx.boundary.keep_upper(g);
     const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
     const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
@@ -154,7 +153,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
       if constexpr (std::is_same_v<Shape, LinearHat>)
         if (poly) poly[i] = kernels::polypic_modes(st, g, [&](Index n) { return Vec<Dim>(vel[n].mapped); });
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) &&
-            kernels::inside<Dim, Coords>(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
+            kernels::inside<Dim, Coords>(p.x[i], keep_lower, keep_upper) && std::isfinite(p.v[i].sum());
     }
     return ok;
   }

@@ -91,13 +91,8 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) map_momentum_and_force(ctx.bodies[b], stencils_[b], grid);
     p2g.stop();
     PhaseTimer grid_update(ctx.profile, StepPhase::grid_update);
-    if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time);  // nominal traction
-    ctx.hooks.after_p2g(ctx);
+    ctx.hooks.after_p2g(ctx);  // the face tractions first (GridBoundary): nominal tractions here
     kernels::update_grid_velocity(grid, ctx.settings, ctx.dt);
-    if (!ctx.boundary.empty()) {
-      ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time);
-      ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt);
-    }
     ctx.hooks.grid_velocity(ctx, GridStage::mapped);
     ctx.hooks.grid_velocity(ctx, GridStage::updated);
     grid_update.stop();
@@ -118,7 +113,6 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
           grid.velocity[i].mapped.setZero();
       }
     });
-    if (!ctx.boundary.empty()) ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time + ctx.dt);
     ctx.hooks.grid_velocity(ctx, GridStage::remapped);
     remapped_velocity.stop();
 

@@ -15,6 +15,7 @@
 
 #include "mpm/active_tiles.hpp"
 #include "mpm/axisymmetric.hpp"
+#include "mpm/boundary/grid_boundary.hpp"
 #include "mpm/field_keys.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/stencil.hpp"
@@ -315,12 +316,13 @@ inline void keep_inside_walls(VecU<Dim>& x, const Vec<Dim>& lower, const Vec<Dim
   }
 }
 
-/// True when x is inside the grid box (false for NaN); axisymmetric: also off the axis, r > 0 (the hoop terms
+/// True when x is inside the box [lower, upper] the stability guard keeps particles in (false for NaN): the grid's,
+/// open on an outflow face (GridBoundary::keep_lower/upper); axisymmetric: also off the axis, r > 0 (the hoop terms
 /// divide by r).
 template <int Dim, class Coords = CartesianCoordinates>
-inline bool inside(const VecU<Dim>& x, const GridGeometry<Dim>& g, const Vec<Dim>& upper) {
+inline bool inside(const VecU<Dim>& x, const Vec<Dim>& lower, const Vec<Dim>& upper) {
   bool ok = true;
-  for (int d = 0; d < Dim; ++d) ok = ok && x[d] >= g.origin[d] && x[d] <= upper[d];
+  for (int d = 0; d < Dim; ++d) ok = ok && x[d] >= lower[d] && x[d] <= upper[d];
   if constexpr (Coords::axisymmetric) ok = ok && x[0] > 0;
   return ok;
 }

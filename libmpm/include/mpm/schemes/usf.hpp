@@ -31,8 +31,6 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     {
       PhaseTimer timer(ctx.profile, StepPhase::grid_update);
       kernels::update_grid_velocity(grid, ctx.settings, ctx.dt, ctx.active_nodes);  // mapped = v^t (force still 0)
-      if (!ctx.boundary.empty())
-        ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::mapped, ctx.time, ctx.active_nodes);
       ctx.hooks.grid_velocity(ctx, GridStage::mapped);
     }
 
@@ -45,11 +43,8 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     }
     {
       PhaseTimer timer(ctx.profile, StepPhase::grid_update);
-      if (ctx.boundary.has_traction()) ctx.boundary.apply_traction(grid.node, ctx.time, ctx.active_nodes);
-      ctx.hooks.after_p2g(ctx);
+      ctx.hooks.after_p2g(ctx);  // the face tractions first (GridBoundary)
       momentum_update(ctx);
-      if (!ctx.boundary.empty())
-        ctx.boundary.apply(grid.velocity, &NodeVelocity<Dim>::updated, ctx.time + ctx.dt, ctx.active_nodes);
       ctx.hooks.grid_velocity(ctx, GridStage::updated);
     }
     PhaseTimer timer(ctx.profile, StepPhase::g2p);
@@ -101,7 +96,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
   static void move(Body<Dim>& body, StepContext<Dim>& ctx) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
-    const Vec<Dim> upper = g.upper();
+    const Vec<Dim> keep_lower = ctx.boundary.keep_lower(g), keep_upper = ctx.boundary.keep_upper(g);
     const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
     const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
@@ -132,7 +127,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
         }
         p.x[i] += dt * v_pic;
         kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
-        ok &= kernels::inside<Dim, Coords>(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
+        ok &= kernels::inside<Dim, Coords>(p.x[i], keep_lower, keep_upper) && std::isfinite(p.v[i].sum());
       }
       if (!ok) ctx.guard_tripped = true;
     });

@@ -30,7 +30,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
                                 MatU<Dim>* L_out) {
     auto& p = body.particles;
     const auto& g = ctx.grid.geometry;
-    const Vec<Dim> upper = g.upper();
+    const Vec<Dim> keep_lower = ctx.boundary.keep_lower(g), keep_upper = ctx.boundary.keep_upper(g);
     const Vec<Dim>& wall_lower = ctx.boundary.wall_lower();
     const Vec<Dim>& wall_upper = ctx.boundary.wall_upper();
     const NodeVelocity<Dim>* vel = kernels::grid_of(body, ctx.grid).velocity.data();
@@ -71,7 +71,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
       kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
       L_out[i - begin] = L;
       ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) &&
-            kernels::inside<Dim, Coords>(p.x[i], g, upper) && std::isfinite(p.v[i].sum());
+            kernels::inside<Dim, Coords>(p.x[i], keep_lower, keep_upper) && std::isfinite(p.v[i].sum());
     }
     return ok;
   }

@@ -23,6 +23,7 @@
 #include <numbers>
 #include <vector>
 
+#include "mpm/boundary/grid_boundary.hpp"
 #include "mpm/implicit/consistent_mass.hpp"
 #include "mpm/implicit/implicit_options.hpp"
 #include "mpm/implicit/mixed_residual.hpp"
