@@ -32,9 +32,8 @@ std::string cell(const std::string& text) {
 
 std::string description_cell(const io::KeySpec& key) {
   if (!key.run_control) return key.description;
-  return key.description + (key.type == io::KeyType::map || key.type == io::KeyType::list
-                                ? "; a fork may change it and everything in it"
-                                : "; a fork may change it");
+  const bool section = key.type == io::KeyType::map || key.type == io::KeyType::named_map;
+  return key.description + (section ? "; a fork may change it and everything in it" : "; a fork may change it");
 }
 
 /// The keys of the section at `path` below `keys` ("" for `keys` themselves), or nullptr.

@@ -78,7 +78,7 @@ TEST(KeySpec, ReadsValuesAndDefaultsThroughTheSpec) {
   EXPECT_TRUE(map.boolean("on"));
   EXPECT_FALSE(map.optional_number("length") == std::nullopt);
   EXPECT_THROW(map.number("no_such_key"), std::logic_error);  // a key without a spec is a programming error
-  EXPECT_THROW(map.name("mode"), std::logic_error);           // read as another type than its default's
+  EXPECT_THROW(map.boolean("mode"), std::logic_error);        // read as another type than its default's
 }
 
 TEST(KeySpec, MessagesTakeRangeUnitAndKeysFromTheSpec) {
@@ -201,7 +201,7 @@ TEST(SceneKeys, ReadersAllowExactlyTheirSpecs) {
 grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.25}
 materials: {steel: {model: linear_elastic, density: 7800, youngs_modulus: 2.0e11, poisson_ratio: 0.3}}
 bodies: [{material: steel, shape: {type: box, min: [0.25, 0.25], max: [0.75, 0.75]}}]
-solver: {end_time: 1.0e-3}
+solver: {end_time: 1.0e-3, cfl: 0.5}
 output: {checkpoint: {}}
 )";
   struct Case {

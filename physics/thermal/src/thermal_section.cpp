@@ -112,7 +112,6 @@ const std::vector<KeySpec>& thermal_keys() {
        .keys = face_keys()},
       {.name = "fixed_temperature",
        .type = KeyType::list,
-       .unit = "m, K",
        .description = "boxes `{min, max, temperature}`: the particles inside the box at t = 0 are held at "
                       "`temperature` (expression of t); `max` > `min` on every axis",
        .type_text = "list of `{min, max, temperature}`",
