@@ -65,6 +65,27 @@ TEST(ReferenceCommand, RewritesTheGeneratedBlocksOfAFile) {
   fs::remove_all(dir);
 }
 
+// The generated tables of docs/scene-reference.md (keys, output fields, history kinds, material parameters) are what
+// the generator writes from the specs the program registers (a test process also holds what other tests register).
+TEST(SceneReference, IsCurrent) {
+  const auto dir = cli::scratch("reference_current");
+  const fs::path original = fs::path(MPM_SOURCE_DIR) / "docs" / "scene-reference.md";
+  const fs::path copy = dir / "scene-reference.md";
+  fs::copy_file(original, copy);
+  const auto r = cli::mpm("reference " + copy.string(), dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find(": current ("), std::string::npos)
+      << "docs/scene-reference.md is not current with the specs; rewrite its generated tables with\n"
+      << "  ./build/apps/mpm reference docs/scene-reference.md\n"
+      << "(or: cmake --build build --target scene_reference)\n"
+      << r.out;
+#if defined(MPM_WITH_PLASTICITY) && defined(MPM_WITH_FLUIDS) && defined(MPM_WITH_THERMAL) && defined(MPM_WITH_CONTACT)
+  EXPECT_TRUE(r.err.empty()) << "a block names a model or section no module registers: " << r.err;
+  EXPECT_NE(cli::slurp(original).find("| `internal_energy` | 1 | J/kg |"), std::string::npos);  // every module's field
+#endif
+  fs::remove_all(dir);
+}
+
 TEST(ReferenceCommand, HelpNamesTheSchemesThereAre) {
   const auto dir = cli::scratch("reference_help");
   auto r = cli::mpm("--help", dir);
