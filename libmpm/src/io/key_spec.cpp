@@ -38,6 +38,7 @@ const std::string& KeySpec::default_text() const {
 
 std::vector<std::string> key_names(const std::vector<KeySpec>& keys) {
   std::vector<std::string> names;
+  names.reserve(keys.size());
   for (const auto& key : keys) names.push_back(key.name);
   return names;
 }

@@ -38,6 +38,7 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
                                        fmt::join(material_model_names(), ", ")));
   const std::vector<ParameterSpec> parameters = material_parameters(*model);
   std::vector<std::string> keys;
+  keys.reserve(parameters.size());
   for (const auto& p : parameters) keys.push_back(p.name);
   map.allow(keys, "parameter", " for model " + material.model);
   for (const auto& p : parameters) {
