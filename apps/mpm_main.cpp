@@ -1,6 +1,6 @@
 // The `mpm` command line program: `mpm run SCENE [--restart FILE|DIR]`, `mpm check SCENE`, `mpm particles INPUT`,
-// `mpm reference --materials [FILE]`, `mpm diff RUN_A RUN_B`, `mpm verify SCENE`, `mpm checkpoint FILE`. Exit
-// statuses in run_scene.hpp.
+// `mpm reference [--keys|--section PATH|--materials|--output-fields|--history-kinds|--energy-hints] [FILE]`, `mpm diff
+// RUN_A RUN_B`, `mpm verify SCENE`, `mpm checkpoint FILE`. Exit statuses in run_scene.hpp.
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -64,7 +64,9 @@ std::string fmt_rank(int rank) { return "rank " + std::to_string(rank) + ": "; }
 int main(int argc, char** argv) {
   using namespace mpm::app;
   install_terminate_handler();  // an exception escaping a worker thread: a message, not "terminate called..."
-  CLI::App cli{"mpm: explicit material point method (USL, MUSL, USF, TLMPM) with YAML scenes and ParaView output"};
+  CLI::App cli{
+      "mpm: material point method (schemes usl, musl, usf, tlmpm, implicit) with YAML scenes and ParaView "
+      "output"};
   cli.set_version_flag("--version", std::string("mpm ") + MPM_VERSION);
   cli.require_subcommand(1);
   std::string scene_file;
@@ -84,8 +86,8 @@ int main(int argc, char** argv) {
   int rebalance_every = 50;
   run_cmd
       ->add_option("--rebalance-every", rebalance_every,
-                   "under mpirun: steps between balance checks; the slabs are dealt anew when the most loaded rank "
-                   "exceeds the mean by more than 10% (0: never; results do not depend on it)")
+                   "under mpirun: steps between balance checks; the ranks' boxes of tiles are dealt anew when the most "
+                   "loaded rank exceeds the mean by more than 10% (0: never; results do not depend on it)")
       ->check(CLI::NonNegativeNumber);
   run_cmd->add_flag(
       "--profile", profile,
@@ -136,13 +138,20 @@ int main(int argc, char** argv) {
                             "also write CPDI domains to NAME_domains.vtu: lattice or conforming (INPUT), scene "
                             "(the scene's shape function)");
   particles_cmd->add_option("-o,--output", particles.output, "output .vtu file")->required();
-  std::string reference_file;  // `mpm reference`: the generated tables of docs/scene-reference.md
-  bool materials = false;
+  ReferenceOptions reference;  // `mpm reference`: the generated tables of docs/scene-reference.md
+  std::string reference_file;
   auto* reference_cmd = cli.add_subcommand("reference",
-                                           "print the material parameter tables, or rewrite them in FILE (the "
-                                           "generated blocks of docs/scene-reference.md)");
-  reference_cmd->add_flag("--materials", materials, "the material parameter tables (the only reference so far)")
-      ->required();
+                                           "print the reference tables generated from the specs (all of them "
+                                           "without a flag), or rewrite the generated blocks of FILE "
+                                           "(docs/scene-reference.md)");
+  reference_cmd->add_flag("--keys", reference.keys, "the keys of every scene section that declares them");
+  reference_cmd->add_option("--section", reference.section,
+                            "the keys of one section: output, output.checkpoint, bodies, contact.planes, ...");
+  reference_cmd->add_flag("--materials", reference.materials, "the material models' parameter tables");
+  reference_cmd->add_flag("--output-fields", reference.output_fields, "the particle fields output.fields may name");
+  reference_cmd->add_flag("--history-kinds", reference.history_kinds, "the types of output.histories entries");
+  reference_cmd->add_flag("--energy-hints", reference.energy_hints,
+                          "the documented instabilities the energy sentinel and the flight recorder quote");
   reference_cmd->add_option("file", reference_file, "Markdown file whose generated blocks to rewrite");
   DiffOptions diff;  // `mpm diff`: two output directories compared for regression checks
   std::string diff_a, diff_b;
@@ -222,9 +231,8 @@ int main(int argc, char** argv) {
   }
   if (checkpoint_cmd->parsed()) return checkpoint_command(checkpoint_file, std::cout, std::cerr);
   if (reference_cmd->parsed()) {
-    std::optional<std::filesystem::path> file;
-    if (!reference_file.empty()) file = reference_file;
-    return reference_command(file, std::cout, std::cerr);
+    if (!reference_file.empty()) reference.file = reference_file;
+    return reference_command(reference, std::cout, std::cerr);
   }
   try {
     register_modules();  // the optional modules' material models, before the scene is read

@@ -7,14 +7,21 @@
 
 #include "mpm/io/yaml_reader.hpp"
 #include "mpm/scene_error.hpp"
-#include "mpm/scene_extension.hpp"
+#include "mpm/scene_keys.hpp"
 
 namespace mpm::app {
 namespace {
 
-/// The core's run-control keys; the modules add theirs (SceneExtension::run_control_keys).
-const std::vector<std::string> core_run_control_keys{"solver.end_time", "solver.cfl", "output",
-                                                     "grid.boundary.*.velocity"};
+/// The run-control keys of the sections whose readers do not read through key specs (solver, grid).
+const std::vector<std::string> unspecified_run_control_keys{"solver.end_time", "solver.cfl",
+                                                            "grid.boundary.*.velocity"};
+
+/// Every run-control key: those the sections' specs mark (KeySpec::run_control), the others'.
+std::vector<std::string> run_control_keys() {
+  std::vector<std::string> patterns = io::run_control_patterns(scene_keys());
+  patterns.insert(patterns.end(), unspecified_run_control_keys.begin(), unspecified_run_control_keys.end());
+  return patterns;
+}
 
 std::vector<std::string> split(const std::string& path) {
   std::vector<std::string> parts;
@@ -108,13 +115,8 @@ class Differ {
 }  // namespace
 
 bool is_run_control_key(const std::string& key) {
-  auto match = [&](const std::vector<std::string>& patterns) {
-    return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return matches(p, key); });
-  };
-  if (match(core_run_control_keys)) return true;
-  for (const auto& section : scene_extension_keys())
-    if (match(find_scene_extension(section)->run_control_keys)) return true;
-  return false;
+  const auto patterns = run_control_keys();
+  return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return matches(p, key); });
 }
 
 std::vector<SceneDifference> scene_differences(const std::string& saved, const std::string& current,

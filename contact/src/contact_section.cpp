@@ -12,14 +12,16 @@
 #include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/contact/multi_velocity_contact.hpp"
 #include "mpm/expression.hpp"
+#include "mpm/io/spec_map.hpp"
 #include "mpm/io/yaml_reader.hpp"
 #include "mpm/scene_error.hpp"
 
 namespace mpm::contact {
 namespace {
 
+using io::KeySpec;
 using io::Range;
-using io::YamlMap;
+using io::SpecMap;
 using io::YamlReader;
 using io::YamlValue;
 
@@ -54,11 +56,15 @@ std::array<std::string, 3> velocity(const YamlReader& reader, const YamlValue& v
   return components;
 }
 
-/// A thermal contact conductance, W/(m^2 K): a number >= 0, or `perfect` (+infinity: the bodies share the
-/// temperature at their common nodes).
-double read_conductance(const YamlReader& reader, const YamlValue& value) {
+/// The keys of the entries of the section's list `key`.
+const std::vector<KeySpec>& entry_keys(const char* key) { return io::find_key(contact_keys(), key)->keys; }
+
+/// A thermal contact conductance, W/(m^2 K): a number in the spec's range, or `perfect` (+infinity: the bodies
+/// share the temperature at their common nodes).
+double read_conductance(const SpecMap& map, const YamlValue& value) {
   if (value.node.IsScalar() && value.node.Scalar() == "perfect") return std::numeric_limits<double>::infinity();
-  return reader.number(value, Range::at_least(0), "W/(m^2 K)");
+  const KeySpec& spec = map.spec("thermal_conductance");
+  return map.reader().number(value, spec.range, spec.unit);
 }
 
 /// Fails when the scene's other choices exclude contact (contact/README.md, limits).
@@ -77,19 +83,18 @@ std::vector<PairFriction> read_pairs(const YamlReader& reader, const YamlValue& 
   std::vector<PairFriction> pairs;
   for (const auto& item :
        reader.list(value, std::nullopt, "pairs {bodies: [a, b], friction: mu, thermal_conductance: h}")) {
-    const YamlMap map = reader.map(item);
-    map.allow({"bodies", "friction", "thermal_conductance"});
+    const SpecMap map(reader, item, entry_keys("pairs"));
     const YamlValue bodies = map.required("bodies");
     const auto friction = map.find("friction");
     const auto conductance = map.find("thermal_conductance");
     if (!friction && !conductance)  // a pair sets at least one of the two
-      map.required("friction", "key", " (a pair gives friction, thermal_conductance or both)");
+      map.map().required("friction", "key", " (a pair gives friction, thermal_conductance or both)");
     const auto names = reader.list(bodies, 2, "body names", "");
     PairFriction pair;
     pair.bodies = {body_name(reader, names[0], scene), body_name(reader, names[1], scene)};
     if (pair.bodies[0] == pair.bodies[1]) reader.fail(bodies, "a pair needs two different bodies");
-    if (friction) pair.friction = reader.number(*friction, Range::at_least(0), "");
-    if (conductance) pair.thermal_conductance = read_conductance(reader, *conductance);
+    pair.friction = map.optional_number("friction");
+    if (conductance) pair.thermal_conductance = read_conductance(map, *conductance);
     pair.where = reader.location(item.mark);
     pairs.push_back(pair);
   }
@@ -101,8 +106,7 @@ std::vector<RigidBodyDescription> read_rigid_bodies(const YamlReader& reader, co
   std::vector<RigidBodyDescription> rigid_bodies;
   std::set<std::string> seen;
   for (const auto& item : reader.list(value, std::nullopt, "rigid bodies {body: name, velocity: [...]}")) {
-    const YamlMap map = reader.map(item);
-    map.allow({"body", "velocity"});
+    const SpecMap map(reader, item, entry_keys("rigid_bodies"));
     const YamlValue body = map.required("body");
     RigidBodyDescription rigid;
     rigid.body = body_name(reader, body, scene);
@@ -129,8 +133,7 @@ std::vector<PlaneDescription> read_planes(const YamlReader& reader, const YamlVa
   std::vector<PlaneDescription> planes;
   const auto items = reader.list(value, std::nullopt, "planes {point, normal, friction, velocity}");
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const YamlMap map = reader.map(items[i]);
-    map.allow({"name", "point", "normal", "friction", "velocity"});
+    const SpecMap map(reader, items[i], entry_keys("planes"));
     const YamlValue point = map.required("point");
     const YamlValue normal = map.required("normal");
     PlaneDescription plane;
@@ -145,7 +148,7 @@ std::vector<PlaneDescription> read_planes(const YamlReader& reader, const YamlVa
       reader.fail(normal,
                   "in axisymmetric coordinates a rigid plane must be normal to the axis, normal [0, 1] or "
                   "[0, -1] (a tilted plane would revolve into a cone)");
-    if (const auto friction = map.find("friction")) plane.friction = reader.number(*friction, Range::at_least(0), "");
+    plane.friction = map.number("friction");
     if (const auto v = map.find("velocity")) plane.velocity = velocity(reader, *v, scene.dimension);
     plane.where = reader.location(items[i].mark);
     planes.push_back(plane);
@@ -161,11 +164,10 @@ std::vector<BodyBoundaryDescription> read_body_boundaries(const YamlReader& read
   std::set<std::string> seen;
   const auto& names = GridDescription::face_names;
   const std::vector<std::string> faces(names.begin(), names.begin() + std::ptrdiff_t{2} * scene.dimension);
+  const auto& all_keys = entry_keys("body_boundaries");  // body, then the faces
+  const std::vector<KeySpec> keys(all_keys.begin(), all_keys.begin() + 1 + std::ptrdiff_t{2} * scene.dimension);
   for (const auto& item : reader.list(value, std::nullopt, "body boundaries {body: name, FACE: fixed|slip|free}")) {
-    const YamlMap map = reader.map(item);
-    std::vector<std::string> keys{"body"};
-    keys.insert(keys.end(), faces.begin(), faces.end());
-    map.allow(keys, "key", fmt::format(" (body and the faces of {}D)", scene.dimension));
+    const SpecMap map(reader, item, keys, {}, "key", fmt::format(" (body and the faces of {}D)", scene.dimension));
     const YamlValue body = map.required("body");
     BodyBoundaryDescription own;
     own.body = body_name(reader, body, scene);
@@ -175,13 +177,13 @@ std::vector<BodyBoundaryDescription> read_body_boundaries(const YamlReader& read
                             "face conditions would contradict it");
     if (!seen.insert(own.body).second) reader.fail(body, "body '" + own.body + "' is listed twice");
     bool any = false;
-    for (const auto& entry : map.entries()) {
+    for (const auto& entry : map.map().entries()) {
       if (entry.key == "body") continue;
       const int index = static_cast<int>(std::find(faces.begin(), faces.end(), entry.key) - faces.begin());
       if (!entry.value.node.IsScalar())
         reader.fail(entry.value, "expected fixed, slip or free (conditions that hold a velocity component at 0), got " +
                                      io::describe(entry.value.node));
-      const std::string kind = reader.choice(entry.value, {"fixed", "slip", "free"});
+      const std::string kind = reader.choice(entry.value, map.spec(entry.key).choices);
       if (index == 0 && scene.grid.coordinates == Coordinates::axisymmetric && kind != "slip")
         reader.fail(entry.value,
                     "in axisymmetric coordinates the face x_min is the axis: its radial velocity is held "
@@ -204,20 +206,17 @@ std::any parse_contact_section(const YamlReader& reader, const YamlValue& sectio
   ContactDescription contact;
   contact.where = reader.location(section.mark);
   if (section.node.IsNull()) return contact;  // `contact:` alone: frictionless, defaults
-  const YamlMap map = reader.map(section);
-  map.allow({"friction", "thermal_conductance", "pairs", "normals", "onset", "rigid_bodies", "planes",
-             "body_boundaries", "force_file", "force_interval"});
+  const SpecMap map(reader, section, contact_keys());
   check_solver(reader, section, scene);
-  if (const auto friction = map.find("friction")) contact.friction = reader.number(*friction, Range::at_least(0), "");
+  contact.friction = map.number("friction");
   if (const auto conductance = map.find("thermal_conductance")) {
-    contact.thermal_conductance = read_conductance(reader, *conductance);
+    contact.thermal_conductance = read_conductance(map, *conductance);
     contact.thermal_conductance_where = reader.location(conductance->mark);
   }
-  if (const auto normals = map.find("normals")) contact.normals = reader.choice(*normals, {"mass_gradient", "density"});
-  if (const auto onset = map.find("onset")) contact.onset = reader.choice(*onset, {"grid", "particle_gap"});
+  contact.normals = map.choice("normals");
+  contact.onset = map.choice("onset");
   if (const auto file = map.find("force_file")) contact.force_file = reader.name(*file);
-  if (const auto interval = map.find("force_interval"))
-    contact.force_interval = reader.number(*interval, Range::at_least(0), "s");
+  contact.force_interval = map.number("force_interval");
   if (const auto pairs = map.find("pairs")) contact.pairs = read_pairs(reader, *pairs, scene);
   if (const auto rigid = map.find("rigid_bodies")) contact.rigid_bodies = read_rigid_bodies(reader, *rigid, scene);
   if (const auto planes = map.find("planes")) contact.planes = read_planes(reader, *planes, scene);

@@ -1,12 +1,18 @@
 #pragma once
 // Reading and building the scene's `contact:` section (private to contact/).
 #include <any>
+#include <vector>
 
 #include "mpm/contact/contact_description.hpp"
+#include "mpm/io/key_spec.hpp"
 #include "mpm/io/yaml_reader.hpp"
 #include "mpm/simulation.hpp"
 
 namespace mpm::contact {
+
+/// The section's keys (contact_keys.cpp; docs/scene-reference.md, contact), which parse_contact_section reads
+/// through.
+const std::vector<io::KeySpec>& contact_keys();
 
 /// Parses and checks the section (the value of `contact:`) through the scene's reader; returns a
 /// ContactDescription. Throws SceneError naming file, line and key.

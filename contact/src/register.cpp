@@ -39,8 +39,9 @@ void register_module() {
                               .build_1d = &build_contact<1>,
                               .build_2d = &build_contact<2>,
                               .build_3d = &build_contact<3>,
-                              .run_control_keys = {"contact.rigid_bodies.*.velocity", "contact.planes.*.velocity",
-                                                   "contact.force_file", "contact.force_interval"}});
+                              .keys = contact_keys(),
+                              .description = "[Multi-body contact, rigid bodies, rigid planes](#contact) (module "
+                                             "`contact`, CMake option `MPM_WITH_CONTACT`)"});
   });
 }
 

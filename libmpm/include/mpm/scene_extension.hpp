@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/io/key_spec.hpp"
 #include "mpm/module.hpp"
 #include "mpm/scene.hpp"
 
@@ -52,9 +53,12 @@ struct SceneExtension {
   SectionBuilder<1> build_1d = nullptr;
   SectionBuilder<2> build_2d = nullptr;
   SectionBuilder<3> build_3d = nullptr;
-  /// Keys of the section a fork may change when it continues a checkpoint (`mpm run --restart` with a changed
-  /// scene): dotted paths from the top, `*` for any key or list index ("contact.planes.*.velocity").
-  std::vector<std::string> run_control_keys{};
+  /// The section's keys (io/key_spec.hpp), which its parser reads through (io/spec_map.hpp): the scene reference's
+  /// table of the section, `mpm reference --section KEY`, and the keys a fork may change when it continues a
+  /// checkpoint (`mpm run --restart` with a changed scene: KeySpec::run_control) come from them.
+  std::vector<io::KeySpec> keys{};
+  /// One line for the scene reference's table of sections.
+  std::string description{};
 };
 
 /// Registers (or replaces) the section with this key. Called by a module's register_module().

@@ -3,11 +3,55 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpm/io/spec_map.hpp"
+#include "mpm/scene_keys.hpp"
 #include "mpm/scene_limits.hpp"
 #include "sections.hpp"
 #include "shapes.hpp"
 
-namespace mpm::sections {
+namespace mpm {
+
+const std::vector<io::KeySpec>& body_keys() {
+  using io::KeyType;
+  static const std::vector<io::KeySpec> keys{
+      {.name = "name",
+       .type = KeyType::name,
+       .absent = "`body<i>` (`i` = position in the list, from 0)",
+       .description = "the body's name in messages, histories and the contact section",
+       .allowed_text = "non-empty; names must be unique"},
+      {.name = "material",
+       .type = KeyType::name,
+       .required = true,
+       .description = "the material the body is made of",
+       .allowed_text = "a key of `materials`"},
+      {.name = "shape",
+       .type = KeyType::map,
+       .required = true,
+       .description = "what the particles fill, see [bodies[].shape](#bodiesshape)"},
+      {.name = "particles_per_cell",
+       .type = KeyType::integer,
+       .range = io::Range::closed(1, max_particles_per_cell),
+       .default_value = 2.0,
+       .absent = "2 on every axis",
+       .description = "particles per cell on each axis (see [Limits](#limits))",
+       .type_text = "integer, or list of `dimension` integers"},
+      {.name = "velocity",
+       .type = KeyType::list,
+       .unit = "m/s",
+       .default_value = std::string("0"),
+       .absent = "zeros",
+       .description = "initial velocity, one component per axis",
+       .type_text = "list of `dimension` numbers or expressions of `x`, `y`, `z`"},
+      {.name = "domains",
+       .type = KeyType::choice,
+       .choices = {"lattice", "conforming"},
+       .default_value = std::string("lattice"),
+       .description = "the CPDI particle elements (see below)"},
+  };
+  return keys;
+}
+
+namespace sections {
 namespace {
 
 /// Fails unless the shape's bounding box (when the description knows it) lies inside the grid. Axisymmetric: a
@@ -31,8 +75,7 @@ void check_inside_grid(const YamlReader& reader, const YamlValue& shape, const B
 BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std::size_t index,
                           const SceneDescription& scene, std::vector<double>& labels) {
   const int dimension = scene.dimension;
-  const YamlMap map = reader.map(value);
-  map.allow({"name", "material", "shape", "particles_per_cell", "velocity", "domains"});
+  const io::SpecMap map(reader, value, body_keys());
   BodyDescription body;
   body.where = reader.location(value.mark);
   body.name = fmt::format("body{}", index);
@@ -52,24 +95,26 @@ BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std:
   check_inside_grid(reader, shape, body, dimension, scene.grid);
 
   body.particles_per_cell = {1, 1, 1};
+  const io::KeySpec& ppc_spec = map.spec("particles_per_cell");
   if (const auto ppc = map.find("particles_per_cell")) {
     const auto counts = reader.per_axis(*ppc, dimension, "integers");
     for (int d = 0; d < dimension; ++d) {
-      body.particles_per_cell[d] = reader.integer(counts[d], 1);
-      if (body.particles_per_cell[d] > max_particles_per_cell)
+      body.particles_per_cell[d] = reader.integer(counts[d], static_cast<int>(ppc_spec.range.lower));
+      if (!ppc_spec.range.contains(body.particles_per_cell[d]))
         reader.fail(counts[d], fmt::format("at most {} particles per cell on an axis, got {} (the memory a body "
                                            "needs is checked against the machine's before it is filled)",
-                                           max_particles_per_cell, body.particles_per_cell[d]));
+                                           ppc_spec.range.upper, body.particles_per_cell[d]));
     }
   } else {
-    for (int d = 0; d < dimension; ++d) body.particles_per_cell[d] = 2;
+    for (int d = 0; d < dimension; ++d) body.particles_per_cell[d] = static_cast<int>(ppc_spec.default_number());
   }
 
+  body.velocity.fill(map.spec("velocity").default_text());
   if (const auto velocity = map.find("velocity")) {
     const auto components = reader.list(*velocity, dimension, "components");
     for (int d = 0; d < dimension; ++d) body.velocity[d] = reader.expression(components[d], {"x", "y", "z"});
   }
-  if (const auto domains = map.find("domains")) body.domains = reader.choice(*domains, {"lattice", "conforming"});
+  body.domains = map.choice("domains");
   return body;
 }
 
@@ -107,4 +152,5 @@ std::vector<BodyDescription> read_bodies(const YamlReader& reader, const YamlVal
   return bodies;
 }
 
-}  // namespace mpm::sections
+}  // namespace sections
+}  // namespace mpm

@@ -6,9 +6,36 @@
 #include <cctype>
 
 #include "mpm/history/history_kind.hpp"
+#include "mpm/io/spec_map.hpp"
+#include "mpm/scene_keys.hpp"
 #include "sections.hpp"
 
-namespace mpm::sections {
+namespace mpm {
+
+const std::vector<io::KeySpec>& history_keys() {
+  using io::KeyType;
+  static const std::vector<io::KeySpec> keys{
+      {.name = "name",
+       .type = KeyType::name,
+       .required = true,
+       .description = "the file is `NAME.csv`",
+       .allowed_text = "letters, digits, `_`, `-`, `.`; unique; not `energy` (taken by energy.csv)"},
+      {.name = "type",
+       .type = KeyType::choice,
+       .required = true,
+       .description = "the kind of history (table below)",
+       .allowed_text = "a registered history kind"},
+      {.name = "interval",
+       .type = KeyType::number,
+       .unit = "s",
+       .range = io::Range::above(0),
+       .absent = "`output.interval`",
+       .description = "time between rows; this or `output.interval` must be given"},
+  };
+  return keys;
+}
+
+namespace sections {
 namespace {
 
 /// A history's name becomes a file name: letters, digits, '_', '-' and '.', not the audit's `energy`.
@@ -25,7 +52,7 @@ std::vector<HistoryDescription> read_histories(const YamlReader& reader, const Y
                                                const SceneDescription& scene, double output_interval) {
   std::vector<HistoryDescription> histories;
   for (const auto& item : reader.list(value, std::nullopt, "histories")) {
-    const YamlMap entry = reader.map(item);
+    const io::SpecMap entry(reader, item, history_keys(), io::SpecMap::AllowLater{});
     HistoryDescription h;
     h.where = reader.location(item.mark);
     h.path = item.path;
@@ -39,11 +66,9 @@ std::vector<HistoryDescription> read_histories(const YamlReader& reader, const Y
     const YamlValue type = entry.required("type");
     h.type = reader.choice(type, history_kind_names());
     const HistoryKind& kind = *find_history_kind(h.type);
-    std::vector<std::string> allowed{"name", "type", "interval"};
-    allowed.insert(allowed.end(), kind.keys.begin(), kind.keys.end());
-    entry.allow(allowed, "key", " for a history of type " + h.type);
-    if (const auto interval = entry.find("interval")) {
-      h.interval = reader.number(*interval, Range::above(0), "s");
+    entry.allow(kind.keys, "key", " for a history of type " + h.type);
+    if (const auto interval = entry.optional_number("interval")) {
+      h.interval = *interval;
     } else {
       h.interval = output_interval;
       if (!(h.interval > 0))
@@ -51,10 +76,11 @@ std::vector<HistoryDescription> read_histories(const YamlReader& reader, const Y
                     "give the history an interval (s), or output.interval: with neither it would have only a "
                     "first and a last row");
     }
-    h.spec = kind.parse(reader, entry, scene);
+    h.spec = kind.parse(reader, entry.map(), scene);
     histories.push_back(std::move(h));
   }
   return histories;
 }
 
-}  // namespace mpm::sections
+}  // namespace sections
+}  // namespace mpm

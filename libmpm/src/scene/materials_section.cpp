@@ -3,10 +3,25 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpm/io/spec_map.hpp"
 #include "mpm/material_registry.hpp"
+#include "mpm/scene_keys.hpp"
 #include "sections.hpp"
 
-namespace mpm::sections {
+namespace mpm {
+
+const std::vector<io::KeySpec>& material_keys() {
+  static const std::vector<io::KeySpec> keys{
+      {.name = "model",
+       .type = io::KeyType::choice,
+       .required = true,
+       .description = "the material model; its parameters are the other keys of the entry (tables below)",
+       .allowed_text = "a registered material model, see [Models](#models)"},
+  };
+  return keys;
+}
+
+namespace sections {
 namespace {
 
 MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry& entry) {
@@ -14,7 +29,7 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
   material.name = entry.key;
   material.where = reader.location(entry.key_mark);
   if (material.name.empty()) reader.fail(entry.key_mark, entry.value.path, "material name must not be empty");
-  const YamlMap map = reader.map(entry.value);
+  const io::SpecMap map(reader, entry.value, material_keys(), io::SpecMap::AllowLater{});
   const io::YamlValue model_key = map.required("model");
   material.model = reader.string(model_key);
   const MaterialModel* model = find_material_model(material.model);
@@ -22,24 +37,25 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
     reader.fail(model_key, fmt::format("unknown material model '{}'; valid models: {}", material.model,
                                        fmt::join(material_model_names(), ", ")));
   const std::vector<ParameterSpec> parameters = material_parameters(*model);
-  std::vector<std::string> keys{"model"};
+  std::vector<std::string> keys;
+  keys.reserve(parameters.size());
   for (const auto& p : parameters) keys.push_back(p.name);
   map.allow(keys, "parameter", " for model " + material.model);
   for (const auto& p : parameters) {
-    if (const auto value = map.find(p.name)) {
+    if (const auto value = map.map().find(p.name)) {
       material.parameters[p.name] = reader.number(*value, p.range, p.unit);
     } else if (p.default_value) {
       if (p.applies_with.empty()) material.parameters[p.name] = *p.default_value;  // else material_parameter()
     } else if (p.is_required()) {
-      map.required(p.name, "parameter",
-                   fmt::format(" of model {} ({}{})", material.model, p.description,
-                               p.unit.empty() || p.unit == "-" ? "" : ", " + p.unit));
+      map.map().required(p.name, "parameter",
+                         fmt::format(" of model {} ({}{})", material.model, p.description,
+                                     p.unit.empty() || p.unit == "-" ? "" : ", " + p.unit));
     }
   }
   if (model->check)
     if (const auto error = model->check(material.parameters)) {
-      if (const auto value = map.find(error->key)) reader.fail(*value, error->message);
-      reader.fail(entry.key_mark, map.path_of(error->key), error->message);
+      if (const auto value = map.map().find(error->key)) reader.fail(*value, error->message);
+      reader.fail(entry.key_mark, map.map().path_of(error->key), error->message);
     }
   return material;
 }
@@ -54,4 +70,5 @@ std::map<std::string, MaterialDescription> read_materials(const YamlReader& read
   return materials;
 }
 
-}  // namespace mpm::sections
+}  // namespace sections
+}  // namespace mpm

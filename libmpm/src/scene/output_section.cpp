@@ -1,24 +1,98 @@
 // `output:` (docs/scene-reference.md, output): where and how often the frames are written, and which fields.
 #include <fmt/format.h>
 
+#include "mpm/io/spec_map.hpp"
 #include "mpm/output_writer.hpp"
+#include "mpm/scene_keys.hpp"
 #include "sections.hpp"
 
-namespace mpm::sections {
+namespace mpm {
+
+namespace {
+
+using io::KeySpec;
+using io::KeyType;
+using io::Range;
+
+/// `output.checkpoint`'s keys.
+const std::vector<KeySpec>& checkpoint_keys() {
+  static const std::vector<KeySpec> keys{
+      {.name = "interval",
+       .type = KeyType::number,
+       .unit = "s",
+       .range = Range::above(0),
+       .description = "simulated time between checkpoints (one after the first step that reaches each multiple)"},
+      {.name = "wall_interval",
+       .type = KeyType::number,
+       .unit = "s",
+       .range = Range::above(0),
+       .description = "wall-clock time between checkpoints"},
+      {.name = "keep",
+       .type = KeyType::integer,
+       .range = Range::at_least(1),
+       .default_value = 2.0,
+       .description = "the newest checkpoints kept, older ones are removed"},
+      {.name = "directory",
+       .type = KeyType::name,
+       .absent = "`OUTPUT/checkpoints`",
+       .description = "where they go (created; checked to be writable before the first step)"},
+  };
+  return keys;
+}
+
+}  // namespace
+
+const std::vector<io::KeySpec>& output_keys() {
+  static const std::vector<KeySpec> keys{
+      {.name = "directory",
+       .type = KeyType::name,
+       .default_value = std::string("output"),
+       .description = "where the files go; a relative path is relative to the working directory (`-o DIR` "
+                      "overrides it)"},
+      {.name = "prefix",
+       .type = KeyType::name,
+       .default_value = std::string("particles"),
+       .description = "file-name prefix of the particle frames, without `/`"},
+      {.name = "interval",
+       .type = KeyType::number,
+       .unit = "s",
+       .range = Range::at_least(0),
+       .default_value = 0.0,
+       .description = "time between frames; 0 = first and last frame only"},
+      {.name = "fields",
+       .type = KeyType::list,
+       .default_value = std::vector<std::string>{"velocity", "stress", "mass", "volume", "body"},
+       .description = "the particle fields written in every frame; may be empty",
+       .type_text = "list of strings",
+       .allowed_text = "each once, from the [table below](#output-fields)"},
+      {.name = "grid",
+       .type = KeyType::boolean,
+       .default_value = false,
+       .description = "also write the grid at each frame"},
+      {.name = "histories",
+       .type = KeyType::list,
+       .description = "probes, reactions, energies, extents: one CSV each, see [histories](#histories)",
+       .keys = history_keys()},
+      {.name = "checkpoint",
+       .type = KeyType::map,
+       .description = "when to write checkpoints, see [output.checkpoint](#outputcheckpoint)",
+       .keys = checkpoint_keys()},
+  };
+  return keys;
+}
+
+namespace sections {
 namespace {
 
 /// `output.checkpoint: {interval, wall_interval, keep, directory}`.
 CheckpointDescription read_checkpoint(const io::YamlReader& reader, const io::YamlValue& value) {
-  const io::YamlMap map = reader.map(value);
-  map.allow({"interval", "wall_interval", "keep", "directory"});
+  const io::SpecMap map(reader, value, checkpoint_keys());
   CheckpointDescription checkpoint;
   checkpoint.enabled = true;
   checkpoint.where = reader.location(value.mark);
-  if (const auto interval = map.find("interval"))
-    checkpoint.interval = reader.number(*interval, io::Range::above(0), "s");
-  if (const auto wall = map.find("wall_interval"))
-    checkpoint.wall_interval = reader.number(*wall, io::Range::above(0), "s");
-  if (const auto keep = map.find("keep")) checkpoint.keep = reader.integer(*keep, 1);
+  checkpoint.interval = map.optional_number("interval");
+  checkpoint.wall_interval = map.optional_number("wall_interval");
+  checkpoint.keep = map.integer("keep");
   if (const auto directory = map.find("directory")) checkpoint.directory = reader.name(*directory);
   return checkpoint;
 }
@@ -26,18 +100,15 @@ CheckpointDescription read_checkpoint(const io::YamlReader& reader, const io::Ya
 }  // namespace
 
 OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue& value, const SceneDescription& scene) {
-  const io::YamlMap map = reader.map(value);
-  map.allow({"directory", "prefix", "interval", "fields", "grid", "histories", "checkpoint"});
+  const io::SpecMap map(reader, value, output_keys());
   OutputDescription output;
   output.where = reader.location(value.mark);
-  if (const auto directory = map.find("directory")) output.directory = reader.name(*directory);
-  if (const auto prefix = map.find("prefix")) {
-    output.prefix = reader.name(*prefix);
-    if (output.prefix.find_first_of("/\\") != std::string::npos)
-      reader.fail(*prefix, "must be a file name prefix, not a path (use directory for the folder)");
-  }
-  if (const auto interval = map.find("interval"))
-    output.interval = reader.number(*interval, io::Range::at_least(0), "s");
+  output.directory = map.name("directory");
+  output.prefix = map.name("prefix");
+  if (output.prefix.find_first_of("/\\") != std::string::npos)
+    reader.fail(*map.find("prefix"), "must be a file name prefix, not a path (use directory for the folder)");
+  output.interval = map.number("interval");
+  output.fields = std::get<std::vector<std::string>>(map.spec("fields").default_value);
   if (const auto fields = map.find("fields")) {
     output.fields.clear();
     for (const auto& item : reader.list(*fields, std::nullopt, "field names")) {
@@ -46,11 +117,12 @@ OutputDescription read_output(const io::YamlReader& reader, const io::YamlValue&
       output.fields.push_back(std::move(field));
     }
   }
-  if (const auto grid = map.find("grid")) output.grid = reader.boolean(*grid);
+  output.grid = map.boolean("grid");
   if (const auto histories = map.find("histories"))
     output.histories = read_histories(reader, *histories, scene, output.interval);
   if (const auto checkpoint = map.find("checkpoint")) output.checkpoint = read_checkpoint(reader, *checkpoint);
   return output;
 }
 
-}  // namespace mpm::sections
+}  // namespace sections
+}  // namespace mpm

@@ -50,7 +50,10 @@ void register_module() {
                               .parse = &parse_thermal_section,
                               .prepare_1d = &build_heat_conduction<1>,
                               .prepare_2d = &build_heat_conduction<2>,
-                              .prepare_3d = &build_heat_conduction<3>});
+                              .prepare_3d = &build_heat_conduction<3>,
+                              .keys = thermal_keys(),
+                              .description = "[Heat conduction](#thermal) (module `thermal`): its presence turns "
+                                             "conduction on"});
     register_output_fields();
   });
 }

@@ -1,24 +1,61 @@
 #include "thermal_section.hpp"
 
+#include "mpm/io/spec_map.hpp"
 #include "mpm/thermal/thermal_description.hpp"
 
 namespace mpm::thermal {
 namespace {
 
-using io::YamlMap;
+using io::KeySpec;
+using io::KeyType;
+using io::SpecMap;
 using io::YamlReader;
 using io::YamlValue;
 
+/// The keys of a face of `boundary:`.
+std::vector<KeySpec> face_keys() {
+  return {{.name = "temperature",
+           .type = KeyType::expression,
+           .unit = "K",
+           .description = "the face nodes are held at it; an expression of t; not with `flux`"},
+          {.name = "flux",
+           .type = KeyType::expression,
+           .unit = "W/m^2",
+           .description = "prescribed heat flux q.n (outward normal; positive = heat leaving); an expression of t; "
+                          "not with `temperature`"}};
+}
+
+/// The keys of one box of `fixed_temperature:`.
+std::vector<KeySpec> region_keys() {
+  return {{.name = "min",
+           .type = KeyType::list,
+           .unit = "m",
+           .required = true,
+           .description = "lower corner of the box",
+           .type_text = "list of `dimension` numbers"},
+          {.name = "max",
+           .type = KeyType::list,
+           .unit = "m",
+           .required = true,
+           .description = "upper corner of the box",
+           .type_text = "list of `dimension` numbers",
+           .allowed_text = "> `min` on every axis"},
+          {.name = "temperature",
+           .type = KeyType::expression,
+           .unit = "K",
+           .required = true,
+           .description = "the temperature the particles inside the box at t = 0 are held at; an expression of t"}};
+}
+
 /// `boundary:` faces, each held at a temperature or given a heat flux.
 void read_boundary(const YamlReader& reader, const YamlValue& value, int dimension, ThermalDescription& thermal) {
-  const YamlMap faces = reader.map(value);
+  const io::YamlMap faces = reader.map(value);
   const auto& names = GridDescription::face_names;
   faces.allow(std::vector<std::string>(names.begin(), names.begin() + 2 * dimension));
   for (int f = 0; f < 2 * dimension; ++f) {
     const auto face = faces.find(names[f]);
     if (!face) continue;
-    const YamlMap condition = reader.map(*face);
-    condition.allow({"temperature", "flux"});
+    const SpecMap condition(reader, *face, io::find_key(thermal_keys(), "boundary")->keys);
     ThermalFace& thermal_face = thermal.boundary[f];
     thermal_face.where = reader.location(face->mark);
     const auto temperature = condition.find("temperature");
@@ -35,8 +72,7 @@ std::vector<FixedTemperatureRegion> read_fixed_temperature(const YamlReader& rea
                                                            int dimension) {
   std::vector<FixedTemperatureRegion> regions;
   for (const auto& item : reader.list(value, std::nullopt, "boxes {min, max, temperature}")) {
-    const YamlMap map = reader.map(item);
-    map.allow({"min", "max", "temperature"});
+    const SpecMap map(reader, item, io::find_key(thermal_keys(), "fixed_temperature")->keys);
     const YamlValue min = map.required("min"), max = map.required("max"), temperature = map.required("temperature");
     FixedTemperatureRegion region;
     region.where = reader.location(item.mark);
@@ -52,15 +88,46 @@ std::vector<FixedTemperatureRegion> read_fixed_temperature(const YamlReader& rea
 
 }  // namespace
 
+const std::vector<KeySpec>& thermal_keys() {
+  static const std::vector<KeySpec> keys{
+      {.name = "initial_temperature",
+       .type = KeyType::expression,
+       .unit = "K",
+       .absent = "each material's `room_temperature`",
+       .description = "the temperature at t = 0",
+       .type_text = "number or expression of x, y, z",
+       .allowed_text = "finite"},
+      {.name = "source",
+       .type = KeyType::expression,
+       .unit = "W/m^3",
+       .default_value = std::string("0"),
+       .description = "volumetric heat source gamma* (eq. 5.18), per current volume",
+       .type_text = "number or expression of x, y, z, t"},
+      {.name = "boundary",
+       .type = KeyType::named_map,
+       .absent = "none: insulated",
+       .description = "conditions on the faces (`x_min`, ... as in `grid.boundary`, those of the scene's "
+                      "dimension), each `{temperature: T}` or `{flux: q}` (keys below)",
+       .type_text = "map of faces",
+       .keys = face_keys()},
+      {.name = "fixed_temperature",
+       .type = KeyType::list,
+       .description = "boxes `{min, max, temperature}`: the particles inside the box at t = 0 are held at "
+                      "`temperature` (expression of t); `max` > `min` on every axis",
+       .type_text = "list of `{min, max, temperature}`",
+       .keys = region_keys()},
+  };
+  return keys;
+}
+
 std::any parse_thermal_section(const YamlReader& reader, const YamlValue& section, const SceneDescription& scene) {
   ThermalDescription thermal;
   thermal.where = reader.location(section.mark);
   if (section.node.IsNull()) return thermal;  // `thermal:` alone: conduction with insulated boundaries
-  const YamlMap map = reader.map(section);
-  map.allow({"initial_temperature", "source", "boundary", "fixed_temperature"});
+  const SpecMap map(reader, section, thermal_keys());
   if (const auto initial = map.find("initial_temperature"))
     thermal.initial_temperature = reader.expression(*initial, {"x", "y", "z"});
-  if (const auto source = map.find("source")) thermal.source = reader.expression(*source, {"x", "y", "z", "t"});
+  thermal.source = map.expression("source", {"x", "y", "z", "t"});
   if (const auto boundary = map.find("boundary")) read_boundary(reader, *boundary, scene.dimension, thermal);
   if (const auto fixed = map.find("fixed_temperature"))
     thermal.fixed_temperature = read_fixed_temperature(reader, *fixed, scene.dimension);

@@ -1,11 +1,16 @@
 #pragma once
 // The parser of the `thermal:` scene section (registered by register.cpp).
 #include <any>
+#include <vector>
 
+#include "mpm/io/key_spec.hpp"
 #include "mpm/io/yaml_reader.hpp"
 #include "mpm/scene.hpp"
 
 namespace mpm::thermal {
+
+/// The section's keys (docs/scene-reference.md, thermal), which parse_thermal_section reads through.
+const std::vector<io::KeySpec>& thermal_keys();
 
 /// Reads and checks `section` (the value of `thermal:`) through the scene's reader; returns a
 /// ThermalDescription. Throws SceneError.

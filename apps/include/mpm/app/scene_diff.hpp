@@ -2,8 +2,9 @@
 /// \file scene_diff.hpp
 /// What differs between the scene a checkpoint was written with and the scene a restart is given, key by
 /// key, and whether each difference is a run-control key that a fork may change (docs/scene-reference.md,
-/// "Restart and fork"): solver.end_time, solver.cfl, everything under output, the prescribed velocities of
-/// grid.boundary, and the keys the modules' sections declare (SceneExtension::run_control_keys).
+/// "Restart and fork"): the keys the sections' specs mark (io::KeySpec::run_control, scene_keys.hpp: everything
+/// under output; the modules' keys, e.g. contact's plane velocities), and solver.end_time, solver.cfl and the
+/// prescribed velocities of grid.boundary.
 
 #include <string>
 #include <vector>
