@@ -160,12 +160,6 @@ TEST(MaterialReference, SceneReferenceIsCurrent) {
 }
 
 TEST(SolverOptions, NamesAreWrittenOnce) {
-  EXPECT_EQ(mpm::enum_names<mpm::SchemeKind>(), (std::vector<std::string>{"musl", "tlmpm", "usf", "usl"}));
-  for (const auto& name : mpm::enum_names<mpm::SchemeKind>())
-    EXPECT_EQ(mpm::enum_name(*mpm::enum_from_name<mpm::SchemeKind>(name)), name);
-  EXPECT_FALSE(mpm::enum_from_name<mpm::SchemeKind>("flip"));
-  EXPECT_TRUE(mpm::is_total_lagrangian(mpm::SchemeKind::tlmpm));
-  EXPECT_FALSE(mpm::is_total_lagrangian(mpm::SchemeKind::musl));
   EXPECT_EQ(mpm::enum_names<mpm::VelocityTransfer>(), (std::vector<std::string>{"flip", "apic", "polypic"}));
   EXPECT_EQ(mpm::enum_names<mpm::CpdiDomainUpdate>(), (std::vector<std::string>{"deformation_gradient", "corners"}));
 }

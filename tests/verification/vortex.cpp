@@ -16,6 +16,7 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/output_writer.hpp"
 #include "mpm/scene_loader.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "mpm/stability_error.hpp"
 #include "scene_number.hpp"
 
@@ -245,7 +246,7 @@ VortexResult run_vortex(const VortexSpec& spec) {
     const GridGeometry<2> geometry = disk->grid().geometry;
     sim = std::make_unique<Simulation<2>>(
         geometry, ring_bodies(*disk, writes),
-        make_scheme<2>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function),
+        make_scene_scheme<2>(scene),
         GridBoundary<2>(geometry, scene.grid.boundary), disk->settings());
     built_modules = disk->modules();
   }
