@@ -87,8 +87,10 @@ void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int 
   fmt::print(out, "ranks: {} on {}, each rank a box of tiles (recursive bisection); {} tiles hold particles\n", ranks,
              tile_shape(tiles), occupied);
   if (!scheme.runs_distributed)
-    fmt::print(out, "warning: scheme {} runs in one process only; the shares below are what a distributed scheme "
-               "would get\n", scene.solver.scheme_name());
+    fmt::print(out,
+               "warning: scheme {} runs in one process only; the shares below are what a distributed scheme "
+               "would get\n",
+               scene.solver.scheme_name());
   if (ranks <= listed_ranks) {
     fmt::print(out, "  rank  particles  tiles  cost / mean  messages per scatter\n");
     for (int r = 0; r < ranks; ++r) {

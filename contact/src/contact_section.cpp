@@ -64,9 +64,9 @@ double read_conductance(const YamlReader& reader, const YamlValue& value) {
 /// Fails when the scene's other choices exclude contact (contact/README.md, limits).
 void check_solver(const YamlReader& reader, const YamlValue& section, const SceneDescription& scene) {
   if (const Support& contact = scheme_of(scene.solver).traits.contact; !contact)
-    reader.fail(section, fmt::format("contact needs scheme {} ({})",
-                                     scheme_names_where([](const SchemeTraits& t) { return t.contact.yes; }),
-                                     contact.why_not));
+    reader.fail(section,
+                fmt::format("contact needs scheme {} ({})",
+                            scheme_names_where([](const SchemeTraits& t) { return t.contact.yes; }), contact.why_not));
   for (int f = 0; f < 2 * scene.dimension; ++f)
     for (const auto& traction : scene.grid.boundary[f].traction)
       if (traction)

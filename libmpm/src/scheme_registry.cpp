@@ -50,8 +50,8 @@ const SchemeSpec* find_scheme(std::string_view name) {
 
 const SchemeSpec& scheme_of(const SolverDescription& solver) {
   if (const SchemeSpec* spec = find_scheme(solver.scheme)) return *spec;
-  throw std::invalid_argument("unknown scheme '" + solver.scheme + "' (valid: " +
-                              scheme_names_where([](const SchemeTraits&) { return true; }) + ")");
+  throw std::invalid_argument("unknown scheme '" + solver.scheme +
+                              "' (valid: " + scheme_names_where([](const SchemeTraits&) { return true; }) + ")");
 }
 
 std::vector<std::string> scheme_names() {
@@ -81,8 +81,7 @@ template <int Dim>
 std::unique_ptr<Scheme<Dim>> make_scene_scheme(const SceneDescription& scene) {
   const SchemeSpec& spec = scheme_of(scene.solver);
   const SchemeMaker<Dim> make = spec.maker<Dim>();
-  if (!make)
-    throw std::invalid_argument("scheme '" + spec.name + "' is not available in " + std::to_string(Dim) + "D");
+  if (!make) throw std::invalid_argument("scheme '" + spec.name + "' is not available in " + std::to_string(Dim) + "D");
   return make(scene);
 }
 

@@ -389,8 +389,7 @@ contact: {thermal_conductance: 1.0e3, force_file: forces.csv}
        VelocityTransfer::apic},
       {"2D USF quadratic (two disks)", "02_two_disks/scene.yaml", 2, 40, "usf", "quadratic_bspline"},
       {"2D MUSL linear FLIP (two small disks on 100 x 100 cells: bodies away from the cut exchange nothing)",
-       "02_two_disks/scene.yaml", 2, 40, "musl", "linear", VelocityTransfer::flip, 1, 0, small_disks, "",
-       true, true},
+       "02_two_disks/scene.yaml", 2, 40, "musl", "linear", VelocityTransfer::flip, 1, 0, small_disks, "", true, true},
       {"2D MUSL linear FLIP (dam break, fluid)", "12_dam_break/scene.yaml", 2, 40, "musl", "linear"},
       {"2D USL GIMP (dam break, fluid)", "12_dam_break/scene.yaml", 2, 30, "usl", "gimp"},
       {"2D TLMPM cubic B-spline (two disks)", "02_two_disks/scene.yaml", 2, 40, "tlmpm", "cubic_bspline"},
@@ -407,13 +406,13 @@ contact: {thermal_conductance: 1.0e3, force_file: forces.csv}
        cylinders_with_contact, "forces.csv", false},
       {"2D USL GIMP, rigid platens, friction, particle-gap onset (ring crush)", "09_ring_crush/scene.yaml", 2, 40,
        "usl", "gimp", VelocityTransfer::flip, 1, 0, ring_crush_fast, "ring_forces.csv", false},
-      {"2D MUSL linear heat conduction, held face temperatures (heat plate)", "10_heat_plate/plate.yaml", 2, 40,
-       "musl", "linear", VelocityTransfer::flip, 1, 0, without_grid_output, "", false},
+      {"2D MUSL linear heat conduction, held face temperatures (heat plate)", "10_heat_plate/plate.yaml", 2, 40, "musl",
+       "linear", VelocityTransfer::flip, 1, 0, without_grid_output, "", false},
       {"3D MUSL linear thermal Taylor anvil (plastic heating, thermal softening)", "11_thermal_taylor/musl.yaml", 3, 20,
        "musl", "linear", VelocityTransfer::flip, 2, 0, nullptr, "", false},
       {"2D MUSL linear, heat across contact with a finite conductance (hot block under a cold one)",
-       "02_two_disks/scene.yaml", 2, 40, "musl", "linear", VelocityTransfer::flip, 1, 0, hot_under_cold,
-       "forces.csv", false},
+       "02_two_disks/scene.yaml", 2, 40, "musl", "linear", VelocityTransfer::flip, 1, 0, hot_under_cold, "forces.csv",
+       false},
   };
   // Each case's output folders (the force CSVs), in the system's temporary folder under rank 0's process id.
   std::vector<std::byte> id(sizeof(int));

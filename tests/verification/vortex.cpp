@@ -244,10 +244,8 @@ VortexResult run_vortex(const VortexSpec& spec) {
     // scheme's initial caches and the guard's first snapshot must not see the removed particles).
     const auto disk = app::build_simulation<2>(scene);
     const GridGeometry<2> geometry = disk->grid().geometry;
-    sim = std::make_unique<Simulation<2>>(
-        geometry, ring_bodies(*disk, writes),
-        make_scene_scheme<2>(scene),
-        GridBoundary<2>(geometry, scene.grid.boundary), disk->settings());
+    sim = std::make_unique<Simulation<2>>(geometry, ring_bodies(*disk, writes), make_scene_scheme<2>(scene),
+                                          GridBoundary<2>(geometry, scene.grid.boundary), disk->settings());
     built_modules = disk->modules();
   }
   const bool total_lagrangian = spec.scheme == "tlmpm";

@@ -26,11 +26,11 @@ void check_shape_function(const YamlReader& reader, const YamlValue& key, const 
                                  info.name, valid));
   }
   if (info.tlmpm_only && !scheme_of(solver).traits.total_lagrangian)
-    reader.fail(key, fmt::format("{} has negative weights and is only valid with scheme: {} (particles at "
-                                 "fixed reference positions); the scheme is {}",
-                                 info.name,
-                                 scheme_names_where([](const SchemeTraits& t) { return t.total_lagrangian; }),
-                                 solver.scheme_name()));
+    reader.fail(key,
+                fmt::format("{} has negative weights and is only valid with scheme: {} (particles at "
+                            "fixed reference positions); the scheme is {}",
+                            info.name, scheme_names_where([](const SchemeTraits& t) { return t.total_lagrangian; }),
+                            solver.scheme_name()));
   for (int d = 0; d < dimension; ++d) {
     if (scene.grid.cells[d] < info.min_cells)
       reader.fail(key, fmt::format("{} needs at least {} cells per axis; the grid has {} on axis {}", info.name,

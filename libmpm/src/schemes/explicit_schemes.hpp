@@ -29,8 +29,8 @@ struct ExplicitSchemeList {
 };
 
 /// The core's explicit schemes.
-using ExplicitSchemes = ExplicitSchemeList<ExplicitScheme<Musl>, ExplicitScheme<Tlmpm, true>, ExplicitScheme<Usf>,
-                                           ExplicitScheme<Usl>>;
+using ExplicitSchemes =
+    ExplicitSchemeList<ExplicitScheme<Musl>, ExplicitScheme<Tlmpm, true>, ExplicitScheme<Usf>, ExplicitScheme<Usl>>;
 
 /// The position of `Scheme` in ExplicitSchemes: how a registered maker names the template to the units.
 template <class Scheme, class List = ExplicitSchemes>

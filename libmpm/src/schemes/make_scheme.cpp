@@ -18,10 +18,9 @@ std::unique_ptr<Scheme<Dim>> make_explicit_scheme(std::size_t scheme, const Scen
     throw std::invalid_argument("unknown shape function '" + shape +
                                 "' (valid: " + shape_function_names_where([]<class>() { return true; }) + ")");
   if (info->tlmpm_only && !scheme_of(scene.solver).traits.total_lagrangian)
-    throw std::invalid_argument(
-        "shape function '" + shape + "' is only valid with scheme " +
-        scheme_names_where([](const SchemeTraits& t) { return t.total_lagrangian; }) + ", not '" +
-        scene.solver.scheme + "'");
+    throw std::invalid_argument("shape function '" + shape + "' is only valid with scheme " +
+                                scheme_names_where([](const SchemeTraits& t) { return t.total_lagrangian; }) +
+                                ", not '" + scene.solver.scheme + "'");
   if (scene.grid.coordinates == Coordinates::axisymmetric) {
     if constexpr (Dim == 2) {
       if (auto made = make_axisymmetric_scheme_for(scheme, shape)) return made;
