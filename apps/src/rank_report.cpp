@@ -110,6 +110,10 @@ void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int 
     fmt::print(out, "warning: only {} tiles hold particles: {} of the {} ranks would start without any\n", occupied,
                ranks - occupied, ranks);
   fmt::print(out, "  at most {} ranks get particles (one occupied tile each)\n", occupied);
+  if (!scheme.runs_distributed) {
+    fmt::print(out, "halo: none (scheme {} runs in one process)\n", scene.solver.scheme_name());
+    return;
+  }
   fmt::print(out, "halo: {} per step ({} scatter(s) x {} bod{} x {} B per ghost node and array, every rank's sends)\n",
              format_bytes(static_cast<double>(halo)), scatters, sim.bodies().size(),
              sim.bodies().size() == 1 ? "y" : "ies", sizeof(NodeRecord<Dim>));
