@@ -11,11 +11,12 @@
 
 #include "mpm/scheme_registry.hpp"
 #include "scene_fixture.hpp"
+#include "two_disks_scene.hpp"
 
 namespace mpm {
 namespace {
 
-const SchemeTraits& traits(const char* name) {
+const SchemeTraits& registered_traits(const char* name) {
   const SchemeSpec* spec = find_scheme(name);
   if (!spec) throw std::logic_error(std::string("not registered: ") + name);
   return spec->traits;
@@ -28,26 +29,26 @@ TEST(SchemeRegistry, CoreSchemesComeFirstWithTheirTraits) {
             (std::vector<std::string>{"musl", "tlmpm", "usf", "usl"}));
   for (const char* name : {"musl", "tlmpm", "usf", "usl"}) {
     EXPECT_EQ(make_scheme<2>(name, "linear")->name(), name);
-    EXPECT_TRUE(traits(name).runs_distributed) << name;
-    EXPECT_FALSE(traits(name).unconditionally_stable) << name;
+    EXPECT_TRUE(registered_traits(name).runs_distributed) << name;
+    EXPECT_FALSE(registered_traits(name).unconditionally_stable) << name;
     EXPECT_FALSE(find_scheme(name)->description.empty()) << name;
   }
   // USL: one scatter per step, its stress from the un-mapped grid velocity, no release of separating contact nodes
-  EXPECT_EQ(traits("usl").scatters_per_step, 1);
-  EXPECT_TRUE(traits("usl").stress_update_without_remap);
-  EXPECT_FALSE(traits("usl").contact_releases_separating_nodes);
+  EXPECT_EQ(registered_traits("usl").scatters_per_step, 1);
+  EXPECT_TRUE(registered_traits("usl").stress_update_without_remap);
+  EXPECT_FALSE(registered_traits("usl").contact_releases_separating_nodes);
   for (const char* name : {"musl", "usf"}) {
-    EXPECT_EQ(traits(name).scatters_per_step, 2) << name;
-    EXPECT_FALSE(traits(name).stress_update_without_remap) << name;
-    EXPECT_TRUE(traits(name).contact_releases_separating_nodes) << name;
+    EXPECT_EQ(registered_traits(name).scatters_per_step, 2) << name;
+    EXPECT_FALSE(registered_traits(name).stress_update_without_remap) << name;
+    EXPECT_TRUE(registered_traits(name).contact_releases_separating_nodes) << name;
   }
   for (const char* name : {"musl", "usf", "usl"}) {
-    EXPECT_FALSE(traits(name).total_lagrangian) << name;
-    EXPECT_TRUE(traits(name).affine_transfers) << name;
-    EXPECT_TRUE(traits(name).contact) << name;
-    EXPECT_EQ(traits(name).bytes_per_particle, nullptr) << name;
+    EXPECT_FALSE(registered_traits(name).total_lagrangian) << name;
+    EXPECT_TRUE(registered_traits(name).affine_transfers) << name;
+    EXPECT_TRUE(registered_traits(name).contact) << name;
+    EXPECT_EQ(registered_traits(name).bytes_per_particle, nullptr) << name;
   }
-  const SchemeTraits& tl = traits("tlmpm");
+  const SchemeTraits& tl = registered_traits("tlmpm");
   EXPECT_TRUE(tl.total_lagrangian);
   EXPECT_FALSE(tl.affine_transfers);
   EXPECT_NE(tl.affine_transfers.why_not.find("Remark 35"), std::string::npos);
@@ -61,9 +62,9 @@ TEST(SchemeRegistry, CoreSchemesComeFirstWithTheirTraits) {
   EXPECT_EQ(tl.bytes_per_particle(1, 2), 40u);
   // the defaults (a hand-made HintContext) are MUSL's in every trait the energy hints ask
   const SchemeTraits defaults;
-  EXPECT_EQ(defaults.total_lagrangian, traits("musl").total_lagrangian);
-  EXPECT_EQ(defaults.stress_update_without_remap, traits("musl").stress_update_without_remap);
-  EXPECT_EQ(defaults.unconditionally_stable, traits("musl").unconditionally_stable);
+  EXPECT_EQ(defaults.total_lagrangian, registered_traits("musl").total_lagrangian);
+  EXPECT_EQ(defaults.stress_update_without_remap, registered_traits("musl").stress_update_without_remap);
+  EXPECT_EQ(defaults.unconditionally_stable, registered_traits("musl").unconditionally_stable);
 }
 
 // What a scheme declares agrees with what the scheme it makes does: every registered scheme that needs no keys of
