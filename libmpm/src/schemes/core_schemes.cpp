@@ -15,11 +15,11 @@ std::unique_ptr<Scheme<Dim>> make_listed(const SceneDescription& scene) {
 
 /// An entry of ExplicitSchemes as a registered scheme; its total-Lagrangian trait is the list's.
 template <class Listed>
-SchemeSpec explicit_scheme(std::string name, std::string description, SchemeTraits traits) {
+SchemeSpec explicit_scheme(const char* name, const char* description, SchemeTraits traits) {
   traits.total_lagrangian = Listed::total_lagrangian;
   traits.runs_distributed = true;
-  return {.name = std::move(name),
-          .description = std::move(description),
+  return {.name = name,
+          .description = description,
           .make_1d = &make_listed<1, Listed>,
           .make_2d = &make_listed<2, Listed>,
           .make_3d = &make_listed<3, Listed>,
