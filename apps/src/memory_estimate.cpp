@@ -9,6 +9,7 @@
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/scene_error.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "mpm/shape/shape_functions.hpp"
 
 namespace mpm::app {
@@ -29,14 +30,14 @@ int elements_per_sub_cell(int dimension, int corners) {
   return 6;
 }
 
-/// TLMPM caches the reference stencil of every particle in factored form (factored_stencil.hpp): a weight and a
-/// derivative per node of the support on each axis, and the base node.
+/// What the scheme keeps per particle besides the fields (TLMPM: its cached reference stencils), by its trait.
 template <int Dim>
 std::size_t scheme_bytes_per_particle(const SceneDescription& scene) {
-  if (!is_total_lagrangian(scene.solver.scheme)) return 0;
+  const SchemeBytesPerParticle bytes = scheme_of(scene.solver).traits.bytes_per_particle;
+  if (!bytes) return 0;
   int support = 0;
   dispatch_shape(scene.solver.shape_function, [&]<class Shape>() { support = Shape::support; });
-  return static_cast<std::size_t>(Dim) * support * 2 * sizeof(Real) + sizeof(Index);
+  return bytes(Dim, support);
 }
 
 /// The count of one body: an upper bound (bounding box, or the grid for shapes read from files) or the sample.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mpm/memory_budget.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "mpm/tile_halo.hpp"
 
 namespace mpm::app {
@@ -55,8 +56,8 @@ void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int 
       }
     for (const std::int64_t n : particles) occupied += n > 0;
   }
-  const std::string scheme = scene.solver.scheme_name();
-  const std::size_t scatters = scheme == "usl" ? 1 : 2;
+  const SchemeTraits& scheme = scheme_of(scene.solver).traits;
+  const auto scatters = static_cast<std::size_t>(scheme.scatters_per_step);
   const std::size_t bytes_per_node = sizeof(NodeRecord<Dim>) * scatters * sim.bodies().size();
   struct Share {
     std::int64_t particles = 0;
@@ -85,6 +86,11 @@ void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int 
   const double mean = total / ranks;
   fmt::print(out, "ranks: {} on {}, each rank a box of tiles (recursive bisection); {} tiles hold particles\n", ranks,
              tile_shape(tiles), occupied);
+  if (!scheme.runs_distributed)
+    fmt::print(out,
+               "warning: scheme {} runs in one process only; the shares below are what a distributed scheme "
+               "would get\n",
+               scene.solver.scheme_name());
   if (ranks <= listed_ranks) {
     fmt::print(out, "  rank  particles  tiles  cost / mean  messages per scatter\n");
     for (int r = 0; r < ranks; ++r) {
@@ -104,6 +110,10 @@ void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int 
     fmt::print(out, "warning: only {} tiles hold particles: {} of the {} ranks would start without any\n", occupied,
                ranks - occupied, ranks);
   fmt::print(out, "  at most {} ranks get particles (one occupied tile each)\n", occupied);
+  if (!scheme.runs_distributed) {
+    fmt::print(out, "halo: none (scheme {} runs in one process)\n", scene.solver.scheme_name());
+    return;
+  }
   fmt::print(out, "halo: {} per step ({} scatter(s) x {} bod{} x {} B per ghost node and array, every rank's sends)\n",
              format_bytes(static_cast<double>(halo)), scatters, sim.bodies().size(),
              sim.bodies().size() == 1 ? "y" : "ies", sizeof(NodeRecord<Dim>));

@@ -26,7 +26,7 @@
 #include "mpm/reaction_provider.hpp"
 #include "mpm/scene_error.hpp"
 #include "mpm/scene_extension.hpp"
-#include "mpm/scheme_extension.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "particle_file_body.hpp"
 
 namespace mpm::app {
@@ -240,7 +240,7 @@ template <int Dim>
 void check_fixed_time_step(const SceneDescription& scene, const Simulation<Dim>& sim) {
   const auto& fixed_dt = sim.settings().fixed_dt;
   if (!fixed_dt) return;
-  if (const auto* e = find_scheme_extension(scene.solver.extension_scheme); e && e->unconditionally_stable) return;
+  if (scheme_of(scene.solver).traits.unconditionally_stable) return;
   const Real bound = sim.stable_time_step();
   if (*fixed_dt > bound)
     throw SceneError(scene.solver.dt_where, "solver.dt",
@@ -300,7 +300,7 @@ namespace {
 template <int Dim>
 void add_energy_sentinel(const SceneDescription& scene, Simulation<Dim>& sim) {
   HintContext context;
-  context.scheme = scene.solver.scheme;
+  context.scheme = scheme_of(scene.solver).traits;
   context.shape_function = scene.solver.shape_function;
   context.transfer = scene.solver.velocity_transfer;
   context.flip_fraction = scene.solver.flip_fraction;
@@ -329,10 +329,7 @@ template <int Dim>
 std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
   const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
   check_memory<Dim>(scene, geometry, available_memory());  // before anything the size of the scene is allocated
-  auto scheme = scene.solver.extension_scheme.empty()
-                    ? make_scheme<Dim>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function,
-                                       scene.grid.coordinates)
-                    : make_extension_scheme<Dim>(scene);
+  auto scheme = make_scene_scheme<Dim>(scene);
   const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
   check_output_against_shape_function(scene, shape);
 

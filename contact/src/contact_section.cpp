@@ -15,6 +15,7 @@
 #include "mpm/io/spec_map.hpp"
 #include "mpm/io/yaml_reader.hpp"
 #include "mpm/scene_error.hpp"
+#include "mpm/scheme_registry.hpp"
 
 namespace mpm::contact {
 namespace {
@@ -69,11 +70,10 @@ double read_conductance(const SpecMap& map, const YamlValue& value) {
 
 /// Fails when the scene's other choices exclude contact (contact/README.md, limits).
 void check_solver(const YamlReader& reader, const YamlValue& section, const SceneDescription& scene) {
-  if (is_total_lagrangian(scene.solver.scheme))
+  if (const Support& contact = scheme_of(scene.solver).traits.contact; !contact)
     reader.fail(section,
-                "contact needs scheme usl, musl or usf (TLMPM has no contact between bodies: it maps on the reference "
-                "configuration, where they never meet; so neither has lagrange_quadratic, offered with the TLMPM "
-                "only because its negative weights would give nodes at a moving body's edge a negative mass)");
+                fmt::format("contact needs scheme {} ({})",
+                            scheme_names_where([](const SchemeTraits& t) { return t.contact.yes; }), contact.why_not));
   for (int f = 0; f < 2 * scene.dimension; ++f)
     if (const std::string why = face_traits(scene.grid.boundary[static_cast<std::size_t>(f)]).not_contact; !why.empty())
       reader.fail(section, why);
@@ -310,7 +310,8 @@ void build_contact(const SceneDescription& scene, Simulation<Dim>& simulation) {
   // energy changes by J.v^t) gained energy from impulses on bodies separating at v^t: such nodes are released
   // (docs/theory.md §11, "Energy"). USL is dissipative with contact, and the particle gap only corrects where the
   // particles touch: both keep the paper's test.
-  settings.release_on_start = settings.onset == Onset::grid && scene.solver.scheme != SchemeKind::usl;
+  settings.release_on_start =
+      settings.onset == Onset::grid && scheme_of(scene.solver).traits.contact_releases_separating_nodes;
   try {
     simulation.add_module(std::make_shared<MultiVelocityContact<Dim>>(simulation.grid().geometry, simulation.bodies(),
                                                                       scene.solver.shape_function, settings));

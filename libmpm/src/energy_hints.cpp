@@ -6,10 +6,22 @@
 
 #include <array>
 
+#include "mpm/scheme.hpp"
+
 namespace mpm {
 namespace {
 
-bool is_linear(const HintContext& c) { return c.shape_function == "linear"; }
+/// The shape function's entry of the table; an unknown name (a hand-made context) has none of its traits.
+const ShapeFunctionInfo& shape_of(const HintContext& c) {
+  static const ShapeFunctionInfo none;
+  const ShapeFunctionInfo* info = find_shape_function(c.shape_function);
+  return info ? *info : none;
+}
+bool is_linear(const HintContext& c) { return shape_of(c).multilinear; }
+/// An explicit updated-Lagrangian scheme (USL, MUSL, USF): what the stability measurements of these rows ran.
+bool is_explicit_updated_lagrangian(const HintContext& c) {
+  return !c.scheme.total_lagrangian && !c.scheme.unconditionally_stable;
+}
 
 constexpr std::array<EnergyHint, 9> rows{{
     {"contact module (multi-velocity contact)", trigger_energy, [](const HintContext& c) { return c.contact; },
@@ -48,14 +60,14 @@ constexpr std::array<EnergyHint, 9> rows{{
      "its cell keeps none of it (examples/14 README, \"The spray of the far wall\"); USL inverts at 0.091 s "
      "(physics/fluids/README.md, Limits)"},
     {"USL (any shape function)", trigger_energy | trigger_guard,
-     [](const HintContext& c) { return c.scheme == SchemeKind::usl; },
+     [](const HintContext& c) { return c.scheme.stress_update_without_remap; },
      "USL is the least stable explicit scheme here: use `scheme: musl` (or usf), or a smaller `cfl`",
      "largest stable CFL factor on the two disks: USL 0.200 (linear) to 1.300 (cubic B-spline), MUSL 1.200 to >= 2; "
      "USL linear at 0.225 inverts a particle (docs/VERIFICATION.md, Largest stable CFL factor)"},
     {"FLIP (flip_fraction 1) with linear hats", trigger_energy | trigger_guard,
      [](const HintContext& c) {
        return c.transfer == VelocityTransfer::flip && c.flip_fraction > 0.999 && is_linear(c) &&
-              !is_total_lagrangian(c.scheme);
+              is_explicit_updated_lagrangian(c);
      },
      "pure FLIP with linear hats gains energy from the cell-crossing error at fine resolution; add a PIC fraction "
      "(`flip_fraction: 0.99`), or use `shape_function: quadratic_bspline` or `cpgimp`",
@@ -63,16 +75,18 @@ constexpr std::array<EnergyHint, 9> rows{{
      "and hats; flip_fraction 0.99: -19.6% (never above E0 by 1e-5), quadratic_bspline: +1.1% (largest +1.4%), cpgimp: "
      "+2.0% (largest +2.1%) (docs/VERIFICATION.md, Energy sentinel)"},
     {"Bernstein functions with an explicit scheme", trigger_energy | trigger_guard,
-     [](const HintContext& c) { return c.shape_function == "bernstein" && !is_total_lagrangian(c.scheme); },
+     // two-cell elements with an explicit scheme: Bernstein (Lagrange's are total-Lagrangian only)
+     [](const HintContext& c) { return shape_of(c).even_cells && is_explicit_updated_lagrangian(c); },
      "quadratic Bernstein functions tolerate a smaller time step than the others with MUSL; use `cfl: 0.5` or less",
      "largest stable CFL factor on the bar: MUSL with bernstein 0.600 against 1.500 to >= 2 for the other functions "
      "(docs/VERIFICATION.md, Largest stable CFL factor)"},
-    {"TLMPM", trigger_energy, [](const HintContext& c) { return is_total_lagrangian(c.scheme); },
+    {"TLMPM", trigger_energy, [](const HintContext& c) { return c.scheme.total_lagrangian; },
      "the total-Lagrangian scheme gains energy over long runs, the more the larger the step: use `cfl: 0.5` or less (a "
      "PIC fraction, `flip_fraction: 0.99`, removes the gain but damps strongly)",
      "a 2D elastic block (256 particles, linear hats, FLIP), 1e5 steps: +42.5% at cfl 1, +12.9% at 0.7, +2.3% at 0.5; "
      "flip_fraction 0.99 at cfl 1: -87% (docs/verification-notes.md, Stiff and extreme cases, extended)"},
-    {"fixed time step (solver.dt)", trigger_energy | trigger_guard, [](const HintContext& c) { return c.fixed_dt; },
+    {"fixed time step (solver.dt)", trigger_energy | trigger_guard,
+     [](const HintContext& c) { return c.fixed_dt && !c.scheme.unconditionally_stable; },
      "a fixed dt is checked against the CFL bound of the initial state only; faster or compressed material lowers the "
      "bound during the run: use `cfl: 0.5` (adaptive) instead of `dt`",
      "beyond the largest stable CFL factor the energy grows before the guard trips: two disks, MUSL linear at 1.225 x "

@@ -66,6 +66,16 @@ std::vector<std::string> material_model_names() {
   return names;
 }
 
+std::string material_model_names_where(const std::function<bool(const MaterialModel&)>& accept) {
+  std::vector<std::string> names;
+  for (const auto& [key, model] : registry())
+    if (accept(model)) names.push_back(key);
+  std::string text;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return text;
+}
+
 void register_common_material_parameters(const std::vector<ParameterSpec>& specs) {
   for (const auto& spec : specs)
     if (!declares(common_parameters(), spec.name)) common_parameters().push_back(spec);

@@ -12,7 +12,7 @@
 #include "mpm/io/spec_map.hpp"
 #include "mpm/scene_extension.hpp"
 #include "mpm/scene_keys.hpp"
-#include "mpm/scheme_extension.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "scene/sections.hpp"
 
 namespace mpm {
@@ -95,9 +95,8 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   for (const auto& key : scene_extension_keys())  // module sections last: they may refer to bodies
     if (const auto section = top.find(key))
       scene.extensions[key] = find_scene_extension(key)->parse(reader, *section, scene);
-  if (!scene.solver.extension_scheme.empty())  // a module's scheme checks the whole scene last
-    if (const auto* scheme = find_scheme_extension(scene.solver.extension_scheme); scheme && scheme->check)
-      scheme->check(reader, top.map(), scene);
+  if (const auto check = scheme_of(scene.solver).check)  // the scheme checks the whole scene last
+    check(reader, top.map(), scene);
   return scene;
 }
 

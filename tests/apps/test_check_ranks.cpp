@@ -32,6 +32,21 @@ TEST(CheckRanks, PrintsTheTilesRanksAndHalo) {
   fs::remove_all(dir);
 }
 
+#ifdef MPM_WITH_IMPLICIT
+// The scheme's traits, not its name, give the scatters: the implicit scheme runs in one process, so the report says so
+// and counts no halo (it counted MUSL's two scatters while the implicit scheme passed for MUSL).
+TEST(CheckRanks, ASchemeThatRunsInOneProcessHasNoHalo) {
+  const auto dir = scratch("check_ranks_implicit");
+  const auto r = mpm(
+      "check " + (fs::path(MPM_SOURCE_DIR) / "examples/17_love_sulsky_bar/implicit.yaml").string() + " --ranks 2", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("warning: scheme implicit runs in one process only"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("halo: none (scheme implicit runs in one process)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("scatter(s)"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+#endif
+
 TEST(CheckRanks, MoreRanksThanTilesIsRefused) {
   const auto dir = scratch("check_ranks_many");
   const auto r = mpm("check " + (data / "good_scene_2d.yaml").string() + " --ranks 13", dir);

@@ -15,6 +15,7 @@
 #include "mpm/energy_hints.hpp"
 #include "mpm/energy_sentinel.hpp"
 #include "mpm/scene_loader.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "run_mpm.hpp"
 
 namespace mpm {
@@ -138,6 +139,35 @@ TEST(EnergyHints, RowsAndTheirMeasurements) {
         << row.condition;
   }
   EXPECT_TRUE(energy_hints().back().applies(HintContext{}));
+}
+
+// The rows ask the scheme's traits, never its name: USL's row answers USL alone (a stress update without re-map), the
+// total-Lagrangian row the TLMPM, and an unconditionally stable scheme (implicit: hats, FLIP, a fixed dt) gets none of
+// the rows measured with explicit steps, where it used to pass for MUSL and get the FLIP row.
+TEST(EnergyHints, RowsAskTheSchemesTraits) {
+  const auto traits = [](const char* name) { return find_scheme(name)->traits; };
+  HintContext usl;
+  usl.scheme = traits("usl");
+  usl.shape_function = "cubic_bspline";
+  EXPECT_EQ(find_energy_hint(usl, trigger_guard).condition, "USL (any shape function)");
+  HintContext musl = usl;
+  musl.scheme = traits("musl");
+  EXPECT_EQ(&find_energy_hint(musl, trigger_guard), &energy_hints().back());
+  HintContext hats;  // MUSL's traits by default, linear hats, FLIP
+  hats.scheme = traits("musl");
+  EXPECT_EQ(find_energy_hint(hats, trigger_guard).condition, "FLIP (flip_fraction 1) with linear hats");
+  HintContext tl;
+  tl.scheme = traits("tlmpm");
+  EXPECT_EQ(find_energy_hint(tl, trigger_energy).condition, "TLMPM");
+  HintContext bernstein;
+  bernstein.scheme = traits("usf");
+  bernstein.shape_function = "bernstein";
+  EXPECT_EQ(find_energy_hint(bernstein, trigger_guard).condition, "Bernstein functions with an explicit scheme");
+  HintContext implicit;
+  implicit.scheme.unconditionally_stable = true;
+  implicit.fixed_dt = true;
+  EXPECT_EQ(&find_energy_hint(implicit, trigger_energy), &energy_hints().back());
+  EXPECT_EQ(&find_energy_hint(implicit, trigger_guard), &energy_hints().back());
 }
 
 TEST(EnergyHints, TheTableInVerificationMdIsCurrent) {

@@ -27,6 +27,7 @@
 #include "mpm/distributed/mpi_communicator.hpp"
 #include "mpm/energy_sentinel.hpp"
 #include "mpm/scene_loader.hpp"
+#include "mpm/scheme_registry.hpp"
 
 namespace {
 
@@ -35,7 +36,7 @@ struct Case {
   std::string file;  ///< under examples/
   int dimension = 2;
   int steps = 40;
-  mpm::SchemeKind scheme = mpm::SchemeKind::musl;
+  std::string scheme = "musl";  ///< a registered scheme
   std::string shape = "linear";
   mpm::VelocityTransfer transfer = mpm::VelocityTransfer::flip;
   int coarsen = 1;    ///< cells this many times larger than the example's (fewer particles)
@@ -169,7 +170,7 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
   std::size_t halo_bytes = 0, model_bytes = 0;
   // The halo model (TileHalo::model_bytes_per_scatter, the plan's nodes): per step, exchanging body and scatter (a
   // body with no particle in a tile that writes shared nodes does not exchange: Simulation::exchanging_bodies).
-  const int scatters = c.scheme == mpm::SchemeKind::usl ? 1 : 2;
+  const int scatters = mpm::find_scheme(c.scheme)->traits.scatters_per_step;
   std::size_t skipped = 0;  // body scatters without exchange
   // Steps whose grid kernels visited fewer nodes than the rank holds (sparse tiles on a rank, §5.11)
   int sparse_steps = 0;
@@ -299,7 +300,7 @@ class CountingCommunicator final : public mpm::Communicator {
 /// the energy sums), and one all-to-all per body only on the steps where some particle changes rank.
 bool one_reduction_per_step(const std::shared_ptr<mpm::distributed::MpiCommunicator>& comm) {
   mpm::SceneDescription scene = mpm::load_scene(std::string(MPM_SOURCE_DIR) + "/examples/02_two_disks/scene.yaml");
-  scene.solver.scheme = mpm::SchemeKind::usl;
+  scene.solver.scheme = "usl";
   auto counting = std::make_shared<CountingCommunicator>(comm);
   auto sim = mpm::app::build_simulation<2>(scene);
   sim->distribute(counting);
@@ -335,7 +336,6 @@ int main(int argc, char** argv) {
   }
   mpm::app::register_modules();
   tbb::global_control threads_control(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-  using mpm::SchemeKind;
   using mpm::VelocityTransfer;
   // Love & Sulsky's colliding cylinders, explicit, with frictionless contact and a floor with friction the left
   // one reaches (issue 18 §5: contact and its force CSV).
@@ -384,36 +384,35 @@ contact: {thermal_conductance: 1.0e3, force_file: forces.csv}
 )");
   };
   const std::vector<Case> cases = {
-      {"2D USL linear FLIP (two disks)", "02_two_disks/scene.yaml", 2, 60, SchemeKind::usl, "linear"},
-      {"2D MUSL cubic APIC (two disks)", "02_two_disks/scene.yaml", 2, 40, SchemeKind::musl, "cubic_bspline",
+      {"2D USL linear FLIP (two disks)", "02_two_disks/scene.yaml", 2, 60, "usl", "linear"},
+      {"2D MUSL cubic APIC (two disks)", "02_two_disks/scene.yaml", 2, 40, "musl", "cubic_bspline",
        VelocityTransfer::apic},
-      {"2D USF quadratic (two disks)", "02_two_disks/scene.yaml", 2, 40, SchemeKind::usf, "quadratic_bspline"},
+      {"2D USF quadratic (two disks)", "02_two_disks/scene.yaml", 2, 40, "usf", "quadratic_bspline"},
       {"2D MUSL linear FLIP (two small disks on 100 x 100 cells: bodies away from the cut exchange nothing)",
-       "02_two_disks/scene.yaml", 2, 40, SchemeKind::musl, "linear", VelocityTransfer::flip, 1, 0, small_disks, "",
-       true, true},
-      {"2D MUSL linear FLIP (dam break, fluid)", "12_dam_break/scene.yaml", 2, 40, SchemeKind::musl, "linear"},
-      {"2D USL GIMP (dam break, fluid)", "12_dam_break/scene.yaml", 2, 30, SchemeKind::usl, "gimp"},
-      {"2D TLMPM cubic B-spline (two disks)", "02_two_disks/scene.yaml", 2, 40, SchemeKind::tlmpm, "cubic_bspline"},
-      {"3D TLMPM linear (Johnson-Cook Taylor anvil)", "05_taylor_anvil/musl.yaml", 3, 20, SchemeKind::tlmpm, "linear",
+       "02_two_disks/scene.yaml", 2, 40, "musl", "linear", VelocityTransfer::flip, 1, 0, small_disks, "", true, true},
+      {"2D MUSL linear FLIP (dam break, fluid)", "12_dam_break/scene.yaml", 2, 40, "musl", "linear"},
+      {"2D USL GIMP (dam break, fluid)", "12_dam_break/scene.yaml", 2, 30, "usl", "gimp"},
+      {"2D TLMPM cubic B-spline (two disks)", "02_two_disks/scene.yaml", 2, 40, "tlmpm", "cubic_bspline"},
+      {"3D TLMPM linear (Johnson-Cook Taylor anvil)", "05_taylor_anvil/musl.yaml", 3, 20, "tlmpm", "linear",
        VelocityTransfer::flip, 2},
-      {"3D USL GIMP (Johnson-Cook Taylor anvil)", "05_taylor_anvil/musl.yaml", 3, 20, SchemeKind::usl, "gimp",
+      {"3D USL GIMP (Johnson-Cook Taylor anvil)", "05_taylor_anvil/musl.yaml", 3, 20, "usl", "gimp",
        VelocityTransfer::flip, 2},
       {"3D MUSL linear (Johnson-Cook Taylor anvil, rebalanced every 5 steps)", "05_taylor_anvil/musl.yaml", 3, 30,
-       SchemeKind::musl, "linear", VelocityTransfer::flip, 2, 5},
+       "musl", "linear", VelocityTransfer::flip, 2, 5},
       {"2D USL CPDI Q4 with tracked corners (two disks at 40 x 40 cells: 4 slabs of 9)", "02_two_disks/scene.yaml", 2,
-       40, SchemeKind::usl, "cpdi_q4", VelocityTransfer::flip, 1, 0, twice_finer, "", true},
+       40, "usl", "cpdi_q4", VelocityTransfer::flip, 1, 0, twice_finer, "", true},
       {"2D MUSL linear, frictionless contact and a floor with friction (colliding cylinders)",
-       "18_colliding_cylinders/scene.yaml", 2, 40, SchemeKind::musl, "linear", VelocityTransfer::flip, 1, 0,
+       "18_colliding_cylinders/scene.yaml", 2, 40, "musl", "linear", VelocityTransfer::flip, 1, 0,
        cylinders_with_contact, "forces.csv", false},
       {"2D USL GIMP, rigid platens, friction, particle-gap onset (ring crush)", "09_ring_crush/scene.yaml", 2, 40,
-       SchemeKind::usl, "gimp", VelocityTransfer::flip, 1, 0, ring_crush_fast, "ring_forces.csv", false},
-      {"2D MUSL linear heat conduction, held face temperatures (heat plate)", "10_heat_plate/plate.yaml", 2, 40,
-       SchemeKind::musl, "linear", VelocityTransfer::flip, 1, 0, without_grid_output, "", false},
+       "usl", "gimp", VelocityTransfer::flip, 1, 0, ring_crush_fast, "ring_forces.csv", false},
+      {"2D MUSL linear heat conduction, held face temperatures (heat plate)", "10_heat_plate/plate.yaml", 2, 40, "musl",
+       "linear", VelocityTransfer::flip, 1, 0, without_grid_output, "", false},
       {"3D MUSL linear thermal Taylor anvil (plastic heating, thermal softening)", "11_thermal_taylor/musl.yaml", 3, 20,
-       SchemeKind::musl, "linear", VelocityTransfer::flip, 2, 0, nullptr, "", false},
+       "musl", "linear", VelocityTransfer::flip, 2, 0, nullptr, "", false},
       {"2D MUSL linear, heat across contact with a finite conductance (hot block under a cold one)",
-       "02_two_disks/scene.yaml", 2, 40, SchemeKind::musl, "linear", VelocityTransfer::flip, 1, 0, hot_under_cold,
-       "forces.csv", false},
+       "02_two_disks/scene.yaml", 2, 40, "musl", "linear", VelocityTransfer::flip, 1, 0, hot_under_cold, "forces.csv",
+       false},
   };
   // Each case's output folders (the force CSVs), in the system's temporary folder under rank 0's process id.
   std::vector<std::byte> id(sizeof(int));

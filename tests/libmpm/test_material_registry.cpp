@@ -134,13 +134,27 @@ TEST(MaterialReference, LeavesBlocksOfUnknownModelsAndRejectsBrokenOnes) {
                std::invalid_argument);
 }
 
+// The traits the modules ask instead of model keys: how thermal expansion enters (heat conduction) and whether the
+// model gives the implicit scheme its algorithmic stress.
+TEST(MaterialRegistry, TraitsTheModulesAsk) {
+  mpm::app::register_modules();
+  const auto model = [](const char* key) { return *mpm::find_material_model(key); };
+  EXPECT_EQ(model("linear_elastic").thermal_expansion, mpm::ThermalExpansion::by_heat_conduction);
+  EXPECT_EQ(model("neo_hookean").thermal_expansion, mpm::ThermalExpansion::unsupported);
+  EXPECT_FALSE(model("linear_elastic").implicit_stress);
+#ifdef MPM_WITH_PLASTICITY
+  EXPECT_EQ(model("johnson_cook").thermal_expansion, mpm::ThermalExpansion::in_update);
+  EXPECT_EQ(model("j2_plasticity").thermal_expansion, mpm::ThermalExpansion::in_update);
+  EXPECT_TRUE(model("hencky_j2").implicit_stress);
+  EXPECT_EQ(mpm::material_model_names_where([](const mpm::MaterialModel& m) { return m.implicit_stress; }),
+            "hencky_j2");
+  EXPECT_EQ(mpm::material_model_names_where(
+                [](const mpm::MaterialModel& m) { return m.thermal_expansion != mpm::ThermalExpansion::unsupported; }),
+            "j2_plasticity, johnson_cook and linear_elastic");
+#endif
+}
+
 TEST(SolverOptions, NamesAreWrittenOnce) {
-  EXPECT_EQ(mpm::enum_names<mpm::SchemeKind>(), (std::vector<std::string>{"musl", "tlmpm", "usf", "usl"}));
-  for (const auto& name : mpm::enum_names<mpm::SchemeKind>())
-    EXPECT_EQ(mpm::enum_name(*mpm::enum_from_name<mpm::SchemeKind>(name)), name);
-  EXPECT_FALSE(mpm::enum_from_name<mpm::SchemeKind>("flip"));
-  EXPECT_TRUE(mpm::is_total_lagrangian(mpm::SchemeKind::tlmpm));
-  EXPECT_FALSE(mpm::is_total_lagrangian(mpm::SchemeKind::musl));
   EXPECT_EQ(mpm::enum_names<mpm::VelocityTransfer>(), (std::vector<std::string>{"flip", "apic", "polypic"}));
   EXPECT_EQ(mpm::enum_names<mpm::CpdiDomainUpdate>(), (std::vector<std::string>{"deformation_gradient", "corners"}));
 }

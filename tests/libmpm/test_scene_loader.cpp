@@ -267,7 +267,7 @@ TEST(SceneLoader, Good2D) {
   EXPECT_EQ(disk.where.line, 29);
 
   const auto& solver = s.solver;
-  EXPECT_EQ(solver.scheme, mpm::SchemeKind::usl);
+  EXPECT_EQ(solver.scheme, "usl");
   EXPECT_EQ(solver.shape_function, "cubic_bspline");
   EXPECT_EQ(solver.flip_fraction, 0.95);
   EXPECT_FALSE(solver.dt);
@@ -321,7 +321,7 @@ TEST(SceneLoader, Good3D) {
   EXPECT_EQ(pillar.particles_per_cell, (std::array<int, 3>{1, 2, 3}));
 
   // Defaults.
-  EXPECT_EQ(s.solver.scheme, mpm::SchemeKind::musl);
+  EXPECT_EQ(s.solver.scheme, "musl");
   EXPECT_EQ(s.solver.shape_function, "linear");
   EXPECT_EQ(s.solver.flip_fraction, 1.0);
   EXPECT_EQ(s.solver.dt, std::optional<double>(1.0e-5));

@@ -14,6 +14,7 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/output_writer.hpp"
 #include "mpm/scene_loader.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "mpm/stability_error.hpp"
 #include "scene_number.hpp"
 
@@ -146,7 +147,7 @@ MmsResult run(const MmsSpec& spec) {
     if (writer) {
       writer->write(*sim);  // the last good state, then the flight recorder's replay of the failure
       HintContext context;
-      context.scheme = enum_from_name<SchemeKind>(spec.scheme).value_or(SchemeKind::musl);
+      if (const SchemeSpec* scheme = find_scheme(spec.scheme)) context.scheme = scheme->traits;
       context.shape_function = spec.shape_function;
       context.flip_fraction = spec.flip_fraction;
       context.fixed_dt = !(spec.cfl > 0);

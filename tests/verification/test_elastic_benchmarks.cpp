@@ -26,7 +26,7 @@ struct BarResult {
 
 BarResult run_bar(const std::string& scene_file, const std::string& scheme, double flip, double end_time) {
   SceneDescription scene = load_scene(scene_file);
-  scene.solver.scheme = *enum_from_name<SchemeKind>(scheme);
+  scene.solver.scheme = scheme;
   scene.solver.flip_fraction = flip;
   scene.solver.end_time = end_time;
   auto sim = app::build_simulation<1>(scene);

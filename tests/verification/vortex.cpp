@@ -17,6 +17,7 @@
 #include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/output_writer.hpp"
 #include "mpm/scene_loader.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "mpm/stability_error.hpp"
 #include "scene_number.hpp"
 
@@ -244,10 +245,8 @@ VortexResult run_vortex(const VortexSpec& spec) {
     // scheme's initial caches and the guard's first snapshot must not see the removed particles).
     const auto disk = app::build_simulation<2>(scene);
     const GridGeometry<2> geometry = disk->grid().geometry;
-    sim = std::make_unique<Simulation<2>>(
-        geometry, ring_bodies(*disk, writes),
-        make_scheme<2>(std::string(enum_name(scene.solver.scheme)), scene.solver.shape_function),
-        make_grid_boundary<2>(geometry, scene.grid.boundary), disk->settings());
+    sim = std::make_unique<Simulation<2>>(geometry, ring_bodies(*disk, writes), make_scene_scheme<2>(scene),
+                                          make_grid_boundary<2>(geometry, scene.grid.boundary), disk->settings());
     for (const auto& m : disk->modules())  // the disk's own face conditions stay with it: the ring has its own
       if (m.get() != static_cast<const Module<2>*>(&disk->boundary())) built_modules.push_back(m);
   }

@@ -10,15 +10,17 @@
 #include <string>
 #include <string_view>
 
+#include "mpm/scheme_traits.hpp"
 #include "mpm/solver_options.hpp"
 #include "mpm/types.hpp"
 
 namespace mpm {
 
-/// What a hint is matched against: the run's numerical method.
+/// What a hint is matched against: the run's numerical method. The rows ask the scheme's traits
+/// (scheme_traits.hpp; the defaults are MUSL's) and the shape function's (ShapeFunctionInfo), never their names.
 struct HintContext {
-  SchemeKind scheme = SchemeKind::musl;
-  std::string shape_function = "linear";
+  SchemeTraits scheme;                    ///< the traits of the run's scheme (scheme_of(solver).traits)
+  std::string shape_function = "linear";  ///< a name of shape_function_names()
   VelocityTransfer transfer = VelocityTransfer::flip;
   Real flip_fraction = 1;
   bool contact = false;   ///< the multi-velocity contact module runs

@@ -70,7 +70,15 @@ using ParameterCheck = std::function<std::optional<ParameterError>(const std::ma
 template <int Dim>
 using MaterialMaker = std::unique_ptr<Material<Dim>> (*)(const MaterialDescription&);
 
-/// A material model: everything the loader, the builder and the scene reference know about it.
+/// How thermal expansion (the common parameter `thermal_expansion`, eq. 5.26) enters a model's stress.
+enum class ThermalExpansion {
+  unsupported,         ///< not at all: a scene that gives thermal_expansion is refused
+  by_heat_conduction,  ///< the heat conduction module's thermal stress, from youngs_modulus and poisson_ratio
+  in_update,           ///< the model's own update, from the temperature field (also without a thermal: section)
+};
+
+/// A material model: everything the loader, the builder and the scene reference know about it, and its traits:
+/// what the modules that couple to a material ask of it instead of its key.
 struct MaterialModel {
   std::string key;  ///< the scene's `model:`, e.g. "linear_elastic"
   std::string description;
@@ -79,6 +87,10 @@ struct MaterialModel {
   MaterialMaker<1> make_1d = nullptr;
   MaterialMaker<2> make_2d = nullptr;
   MaterialMaker<3> make_3d = nullptr;
+  ThermalExpansion thermal_expansion = ThermalExpansion::unsupported;  ///< asked by heat conduction (thermal)
+  /// Gives the algorithmic stress the implicit scheme solves with (ref. 003, eqs. 81-83, 90): a trial update without
+  /// committing state, and its commit. Asked by `scheme: implicit`.
+  bool implicit_stress = false;
 };
 
 /// Adds a model (or replaces the one with the same key). Call before loading scenes; the optional modules'
@@ -88,6 +100,9 @@ void register_material_model(MaterialModel model);
 const MaterialModel* find_material_model(std::string_view key);
 /// Keys of all registered models, sorted (for "valid models: ..." messages).
 std::vector<std::string> material_model_names();
+/// Keys of the registered models for which `accept(model)` is true, sorted, as "a, b and c" (for refusals that
+/// say which models would do).
+std::string material_model_names_where(const std::function<bool(const MaterialModel&)>& accept);
 
 /// Adds parameters to every model, registered or to come, that does not declare one of that name itself (an
 /// optional module's per-material keys, e.g. thermal_conductivity). The module that registers them reads them

@@ -101,11 +101,11 @@ struct BodyDescription {
 };
 
 struct SolverDescription {
-  SchemeKind scheme = SchemeKind::musl;  ///< a built-in scheme (unused when extension_scheme is set)
-  /// A scheme a module registered (scheme_extension.hpp), e.g. "implicit"; empty for the built-in ones.
-  std::string extension_scheme;
-  /// What that scheme's parser returned (its `solver:` keys), empty otherwise.
-  std::any extension_options;
+  /// The name of a registered scheme (scheme_registry.hpp: the core's musl, tlmpm, usf, usl, or a module's, e.g.
+  /// implicit); its traits say what it works with (scheme_of(solver).traits).
+  std::string scheme = "musl";
+  /// What that scheme's parser returned (its own `solver:` keys), empty when it has none.
+  std::any scheme_options;
   std::string shape_function = "linear";  ///< a name of shape_function_names() (scheme.hpp)
   VelocityTransfer velocity_transfer = VelocityTransfer::flip;
   double flip_fraction = 1.0;  ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
@@ -123,10 +123,8 @@ struct SolverDescription {
   EnergyDriftAction on_energy_drift = EnergyDriftAction::warn;
   SourceLocation dt_where;
 
-  /// The scheme's scene name: extension_scheme, or the built-in scheme's.
-  std::string scheme_name() const {
-    return extension_scheme.empty() ? std::string(enum_name(scheme)) : extension_scheme;
-  }
+  /// The scheme's scene name.
+  const std::string& scheme_name() const { return scheme; }
 };
 
 /// One entry of `output.histories` (docs/scene-reference.md#histories): a quantity written to its own CSV,

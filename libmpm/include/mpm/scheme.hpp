@@ -2,7 +2,8 @@
 /// \file scheme.hpp
 /// A time-integration scheme advances every body by one step. The explicit schemes (USL, MUSL, USF and the
 /// total-Lagrangian TLMPM, schemes/*.hpp) are templates on dimension and shape function; the scene picks
-/// one instantiation once (make_scheme).
+/// one instantiation once (make_scheme). Every scheme, the core's and the modules', is registered with its traits
+/// in scheme_registry.hpp.
 
 #include <memory>
 #include <string>
@@ -60,17 +61,17 @@ class ShapedScheme : public Scheme<Dim> {
   std::pair<int, int> slab_reach() const override { return {Shape::slab_reach_below, Shape::slab_reach_above}; }
 };
 
-/// A scheme of scheme_names() ("usl", "musl", "usf", "tlmpm") with a shape function of the table
-/// (find_shape_function: "linear", "gimp", "cpgimp", "quadratic_bspline", "cubic_bspline", "bernstein",
-/// "lagrange_quadratic", "cpdi_*"); throws std::invalid_argument listing valid names. `coordinates`:
-/// axisymmetric in 2D takes the schemes' axisymmetric instantiations (axisymmetric.hpp), on the shape functions
-/// that allow it (ShapeFunctionInfo::axisymmetric).
+/// The registered scheme named `scheme` (scheme_registry.hpp: "musl", "tlmpm", "usf", "usl" and the modules') with
+/// a shape function of the table (find_shape_function: "linear", "gimp", "cpgimp", "quadratic_bspline",
+/// "cubic_bspline", "bernstein", "lagrange_quadratic", "cpdi_*"); throws std::invalid_argument listing valid names.
+/// `coordinates`: axisymmetric in 2D takes the schemes' axisymmetric instantiations (axisymmetric.hpp), on the shape
+/// functions that allow it (ShapeFunctionInfo::axisymmetric). A scheme whose maker needs more of the scene (its own
+/// `solver:` keys) is made with make_scene_scheme.
 template <int Dim>
 std::unique_ptr<Scheme<Dim>> make_scheme(const std::string& scheme, const std::string& shape_function,
                                          Coordinates coordinates = Coordinates::cartesian);
 
-/// Names accepted by make_scheme.
-std::vector<std::string> scheme_names();
+/// Names accepted as `solver.shape_function`.
 std::vector<std::string> shape_function_names();
 
 /// What the scene loader must check about the grid for a shape function.
@@ -84,6 +85,7 @@ struct ShapeFunctionInfo {
   int domain_corners = 0;         ///< CPDI: corners of the particle element (fields "cpdi_corners"/"..._offsets0")
   bool domain_follows_F = false;  ///< CPDI: domains convect with F unless the scene asks for corner tracking
   bool axisymmetric = false;      ///< usable on an axisymmetric grid (shape_axisymmetric)
+  bool multilinear = false;       ///< the multilinear functions of the particle's cell (linear hats, shape_multilinear)
 };
 /// The entry for `name`, or nullptr.
 const ShapeFunctionInfo* find_shape_function(const std::string& name);

@@ -2,6 +2,7 @@
 /// \file solver_options.hpp
 /// The choices of the scene's `solver:` section as enums (docs/scene-reference.md, solver), each with its
 /// names written once (enum_names.hpp). The loader validates the names; everything after it compares enums.
+/// The scheme is not among them: it is a registered kind (scheme_registry.hpp), asked for its traits.
 
 #include <array>
 #include <string_view>
@@ -10,19 +11,6 @@
 #include "mpm/enum_names.hpp"
 
 namespace mpm {
-
-/// Time-integration scheme (review Alg. 1-3; USF: Bardenhagen 2002).
-enum class SchemeKind { musl, tlmpm, usf, usl };
-
-template <>
-struct EnumNames<SchemeKind> {
-  static constexpr std::array<std::pair<SchemeKind, std::string_view>, 4> table{
-      {{SchemeKind::musl, "musl"}, {SchemeKind::tlmpm, "tlmpm"}, {SchemeKind::usf, "usf"}, {SchemeKind::usl, "usl"}}};
-};
-
-/// True for the total-Lagrangian scheme: weights and gradients at the reference positions, which never change
-/// (no contact between bodies, no APIC, CPDI domains follow F).
-constexpr bool is_total_lagrangian(SchemeKind scheme) { return scheme == SchemeKind::tlmpm; }
 
 /// Grid-to-particle velocity transfer: the PIC/FLIP blend (eq. 2.53), APIC (review §5.5.1) or PolyPIC with
 /// linear hats (Fu et al. 2017: APIC plus the multilinear modes; docs/theory.md §2, velocity transfers).

@@ -25,23 +25,28 @@ std::unique_ptr<Material<Dim>> make_elastic(const MaterialDescription& d) {
 }
 
 template <class Law>
-MaterialModel elastic_model(std::string description) {
+MaterialModel elastic_model(std::string description, ThermalExpansion expansion) {
   return {Law::key,
           std::move(description),
           elastic_parameters(),
           {},
           &make_elastic<1, Law>,
           &make_elastic<2, Law>,
-          &make_elastic<3, Law>};
+          &make_elastic<3, Law>,
+          expansion,
+          /*implicit_stress=*/false};
 }
 
 }  // namespace
 
 std::vector<MaterialModel> elastic_material_models() {
   return {
+      // thermal stress -3 K alpha (T - T0) I (eq. 5.26) from its isotropic constants, added by heat conduction
       elastic_model<LinearElastic>(
-          "Isotropic linear elasticity, incremental (hypoelastic) form B.5 with the Jaumann rate"),
-      elastic_model<NeoHookean>("Compressible Neo-Hookean hyperelasticity, eq. B.6-B.7 (Bonet & Wood)"),
+          "Isotropic linear elasticity, incremental (hypoelastic) form B.5 with the Jaumann rate",
+          ThermalExpansion::by_heat_conduction),
+      elastic_model<NeoHookean>("Compressible Neo-Hookean hyperelasticity, eq. B.6-B.7 (Bonet & Wood)",
+                                ThermalExpansion::unsupported),
   };
 }
 

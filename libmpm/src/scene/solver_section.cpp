@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "mpm/scheme.hpp"
-#include "mpm/scheme_extension.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "sections.hpp"
 
 namespace mpm::sections {
@@ -25,10 +25,12 @@ void check_shape_function(const YamlReader& reader, const YamlValue& key, const 
     reader.fail(key, fmt::format("{} is not available in axisymmetric coordinates; the shape functions there are {}",
                                  info.name, valid));
   }
-  if (info.tlmpm_only && !is_total_lagrangian(solver.scheme))
-    reader.fail(key, fmt::format("{} has negative weights and is only valid with scheme: tlmpm (particles at "
-                                 "fixed reference positions); the scheme is {}",
-                                 info.name, solver.scheme_name()));
+  if (info.tlmpm_only && !scheme_of(solver).traits.total_lagrangian)
+    reader.fail(key,
+                fmt::format("{} has negative weights and is only valid with scheme: {} (particles at "
+                            "fixed reference positions); the scheme is {}",
+                            info.name, scheme_names_where([](const SchemeTraits& t) { return t.total_lagrangian; }),
+                            solver.scheme_name()));
   for (int d = 0; d < dimension; ++d) {
     if (scene.grid.cells[d] < info.min_cells)
       reader.fail(key, fmt::format("{} needs at least {} cells per axis; the grid has {} on axis {}", info.name,
@@ -50,7 +52,7 @@ void read_cpdi_domain_update(const YamlReader& reader, const YamlMap& map, Solve
       reader.fail(*key, "cpdi_domain_update applies to the CPDI shape functions only, not " + solver.shape_function);
     return;
   }
-  const bool total_lagrangian = is_total_lagrangian(solver.scheme);
+  const bool total_lagrangian = scheme_of(solver).traits.total_lagrangian;
   solver.cpdi_domain_update =
       info.domain_follows_F || total_lagrangian ? CpdiDomainUpdate::deformation_gradient : CpdiDomainUpdate::corners;
   if (!key) return;
@@ -71,15 +73,14 @@ void read_velocity_transfer(const YamlReader& reader, const YamlMap& map, Solver
   solver.velocity_transfer = reader.choice<VelocityTransfer>(*transfer);
   if (!carries_affine_velocity(solver.velocity_transfer)) return;
   const std::string name(enum_name(solver.velocity_transfer));
-  if (is_total_lagrangian(solver.scheme))
-    reader.fail(*transfer,
-                name + " is not available with tlmpm (review Remark 35: APIC does not work well with the TLMPM)");
+  if (const Support& affine = scheme_of(solver).traits.affine_transfers; !affine)
+    reader.fail(*transfer, fmt::format("{} is not available with {} ({})", name, solver.scheme_name(), affine.why_not));
   if (const auto flip = map.find("flip_fraction"))
     reader.fail(*flip, "flip_fraction applies to velocity_transfer: flip, not to " + name);
   // PolyPIC's modes are the 2^d multilinear functions of the hats' one cell (docs/theory.md §2, velocity transfers):
   // with them a particle keeps every velocity field its 2^d nodes can hold. Wider or domain-averaged functions reach
   // 3^d or more nodes with weights that are not multilinear, where these modes are neither complete nor orthogonal.
-  if (solver.velocity_transfer == VelocityTransfer::polypic && solver.shape_function != "linear")
+  if (solver.velocity_transfer == VelocityTransfer::polypic && !find_shape_function(solver.shape_function)->multilinear)
     reader.fail(*transfer,
                 "polypic keeps the 2^d multilinear velocity modes of a linear hat's cell, which make its "
                 "transfer lossless only with shape_function: linear (the shape function is " +
@@ -103,23 +104,15 @@ void read_time_step(const YamlReader& reader, const YamlMap& map, SolverDescript
   }
 }
 
-/// `scheme`: a built-in one (SchemeKind) or one a module registered (scheme_extension.hpp).
+/// `scheme`: a registered one (scheme_registry.hpp), the core's or a module's.
 void read_scheme(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {
-  const auto scheme = map.find("scheme");
-  if (!scheme) return;
-  std::vector<std::string> names = enum_names<SchemeKind>();
-  for (auto& name : scheme_extension_names()) names.push_back(name);
-  const std::string name = reader.choice(*scheme, names);
-  if (const auto kind = enum_from_name<SchemeKind>(name))
-    solver.scheme = *kind;
-  else
-    solver.extension_scheme = name;
+  if (const auto scheme = map.find("scheme")) solver.scheme = reader.choice(*scheme, scheme_names());
 }
 
 /// The keys of `solver:` a registered scheme owns are refused with any other scheme.
-void check_extension_keys(const YamlReader& reader, const YamlMap& map, const SolverDescription& solver) {
-  for (const auto& [key, owner] : scheme_extension_solver_keys())
-    if (const auto value = map.find(key); value && solver.extension_scheme != owner)
+void check_scheme_keys(const YamlReader& reader, const YamlMap& map, const SolverDescription& solver) {
+  for (const auto& [key, owner] : scheme_solver_keys())
+    if (const auto value = map.find(key); value && solver.scheme != owner)
       reader.fail(*value,
                   fmt::format("{} applies to scheme: {} only; the scheme is {}", key, owner, solver.scheme_name()));
 }
@@ -132,19 +125,19 @@ SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, 
       "scheme",        "shape_function",     "velocity_transfer", "flip_fraction",  "dt",
       "cfl",           "end_time",           "mass_cutoff",       "gravity",        "snapshot_interval",
       "sort_interval", "cpdi_domain_update", "energy_tolerance",  "on_energy_drift"};
-  for (const auto& [key, owner] : scheme_extension_solver_keys()) allowed.push_back(key);
+  for (const auto& [key, owner] : scheme_solver_keys()) allowed.push_back(key);
   map.allow(allowed);
   SolverDescription solver;
   read_scheme(reader, map, solver);
-  check_extension_keys(reader, map, solver);
+  check_scheme_keys(reader, map, solver);
   if (const auto shape_function = map.find("shape_function")) {
     solver.shape_function = reader.choice(*shape_function, shape_function_names());
     check_shape_function(reader, *shape_function, solver, scene);
   }
   read_cpdi_domain_update(reader, map, solver);
   read_velocity_transfer(reader, map, solver);
-  if (!solver.extension_scheme.empty())  // before the time step: the scheme may refuse cfl with its own message
-    solver.extension_options = find_scheme_extension(solver.extension_scheme)->parse(reader, map, solver, scene);
+  // before the time step: the scheme may refuse cfl with its own message
+  if (const auto parse = scheme_of(solver).parse) solver.scheme_options = parse(reader, map, solver, scene);
   read_time_step(reader, map, solver);
   solver.end_time = reader.number(map.required("end_time"), Range::above(0), "s");
   if (const auto cutoff = map.find("mass_cutoff")) solver.mass_cutoff = reader.number(*cutoff, Range::at_least(0), "");

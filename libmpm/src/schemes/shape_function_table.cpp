@@ -1,5 +1,5 @@
-// The shape-function table (names and grid requirements for the scene loader), derived from ShapeFunctions,
-// and the scheme names.
+// The shape-function table (names, grid requirements and traits for the scene loader and the modules), derived
+// from ShapeFunctions.
 
 #include "mpm/scheme.hpp"
 #include "mpm/shape/shape_functions.hpp"
@@ -17,6 +17,7 @@ ShapeFunctionInfo info() {
   i.tlmpm_only = shape_tlmpm_only<Shape>;
   i.dimension = shape_dimension<Shape>;
   i.axisymmetric = shape_axisymmetric<Shape>;
+  i.multilinear = shape_multilinear<Shape>;
   if constexpr (shape_corner_domain<Shape>) {
     i.domain_corners = Shape::element::corners;
     i.domain_follows_F = Shape::follows_F_by_default;
@@ -34,7 +35,6 @@ const std::vector<ShapeFunctionInfo>& shape_functions() {
 }
 }  // namespace
 
-std::vector<std::string> scheme_names() { return {"musl", "tlmpm", "usf", "usl"}; }
 std::vector<std::string> shape_function_names() {
   std::vector<std::string> names;
   for (const auto& s : shape_functions()) names.push_back(s.name);

@@ -42,7 +42,8 @@ MaterialModel hencky_j2_model() {
       .check = check_hencky_j2,
       .make_1d = &make_hencky_j2<1>,
       .make_2d = &make_hencky_j2<2>,
-      .make_3d = &make_hencky_j2<3>};
+      .make_3d = &make_hencky_j2<3>,
+      .implicit_stress = true};
 }
 
 template <int Dim>

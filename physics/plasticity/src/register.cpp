@@ -141,7 +141,8 @@ MaterialModel johnson_cook_model() {
           .check = check_johnson_cook,
           .make_1d = &make_johnson_cook<1>,
           .make_2d = &make_johnson_cook<2>,
-          .make_3d = &make_johnson_cook<3>};
+          .make_3d = &make_johnson_cook<3>,
+          .thermal_expansion = ThermalExpansion::in_update};
 }
 
 MaterialModel j2_model() {
@@ -160,7 +161,8 @@ MaterialModel j2_model() {
           .check = check_shared,
           .make_1d = &make_j2_plasticity<1>,
           .make_2d = &make_j2_plasticity<2>,
-          .make_3d = &make_j2_plasticity<3>};
+          .make_3d = &make_j2_plasticity<3>,
+          .thermal_expansion = ThermalExpansion::in_update};
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 #include <cmath>
 
 #include "mpm/expression.hpp"
+#include "mpm/material_registry.hpp"
 #include "mpm/scene_error.hpp"
+#include "mpm/scheme_registry.hpp"
 #include "mpm/shape/shape_functions.hpp"
 #include "mpm/thermal/heat_conduction.hpp"
 #include "mpm/thermal/thermal_description.hpp"
@@ -26,7 +28,11 @@ inline bool has_conductivity(const MaterialDescription& md) {
   return false;
 }
 
-inline bool is_plastic(const std::string& model) { return model == "johnson_cook" || model == "j2_plasticity"; }
+/// How the material's model takes thermal expansion (its trait, material_registry.hpp).
+inline ThermalExpansion thermal_expansion_of(const MaterialDescription& md) {
+  const MaterialModel* model = find_material_model(md.model);
+  return model ? model->thermal_expansion : ThermalExpansion::unsupported;
+}
 
 /// The thermal constants of one body's material; throws SceneError at the material.
 template <int Dim>
@@ -72,11 +78,14 @@ ThermalBody<Dim> thermal_body(const MaterialDescription& md, const std::string& 
   b.conductivity = k.template topLeftCorner<Dim, Dim>();
   // largest eigenvalue, bounded by the largest absolute row sum (Gershgorin; exact for k I)
   b.max_conductivity = b.conductivity.cwiseAbs().rowwise().sum().maxCoeff();
-  if (P.count("thermal_expansion") && P.at("thermal_expansion") != 0 && !is_plastic(md.model)) {
-    if (md.model != "linear_elastic")
+  const ThermalExpansion expansion = thermal_expansion_of(md);
+  if (P.count("thermal_expansion") && P.at("thermal_expansion") != 0 && expansion != ThermalExpansion::in_update) {
+    if (expansion != ThermalExpansion::by_heat_conduction)
       throw SceneError(md.where, key + ".thermal_expansion",
-                       fmt::format("thermal expansion (eq. 5.26) is implemented for linear_elastic, johnson_cook and "
-                                   "j2_plasticity, not for {}",
+                       fmt::format("thermal expansion (eq. 5.26) is implemented for {}, not for {}",
+                                   material_model_names_where([](const MaterialModel& m) {
+                                     return m.thermal_expansion != ThermalExpansion::unsupported;
+                                   }),
                                    md.model));
     const Real E = P.at("youngs_modulus"), nu = P.at("poisson_ratio");
     b.expansion = P.at("thermal_expansion");
@@ -92,7 +101,7 @@ inline void check_no_thermal_keys(const SceneDescription& scene) {
     if (has_conductivity(md))
       throw SceneError(md.where, "materials." + name + ".thermal_conductivity",
                        "thermal_conductivity is only used by heat conduction, which a thermal: section turns on");
-    if (md.parameters.count("thermal_expansion") && !is_plastic(md.model))
+    if (md.parameters.count("thermal_expansion") && thermal_expansion_of(md) != ThermalExpansion::in_update)
       throw SceneError(md.where, "materials." + name + ".thermal_expansion",
                        "thermal_expansion of " + md.model + " needs a temperature: add a thermal: section");
   }
@@ -116,7 +125,7 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene
   const auto& td = std::any_cast<const ThermalDescription&>(it->second);
   ConductionSetup<Dim> setup;
   setup.source = td.source;
-  setup.total_lagrangian = is_total_lagrangian(scene.solver.scheme);
+  setup.total_lagrangian = scheme_of(scene.solver).traits.total_lagrangian;
   for (int f = 0; f < 2 * Dim; ++f) {
     setup.face_temperature[f] = td.boundary[f].temperature;
     setup.face_flux[f] = td.boundary[f].flux;

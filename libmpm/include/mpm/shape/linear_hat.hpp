@@ -19,6 +19,7 @@ struct LinearHat {
   static constexpr int slab_reach_below = 0, slab_reach_above = 1;
   static constexpr int min_cells = 1;         ///< cells an axis needs
   static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)
+  static constexpr bool multilinear = true;   ///< the multilinear functions of one cell (shape_multilinear)
 
   /// Weights and derivatives (per unit of the normalised coordinate) of the `support` nodes starting at
   /// `base` on one axis. `xi` = (x - origin)/h; `nodes` = node count on this axis. A particle exactly on

@@ -93,6 +93,13 @@ inline constexpr bool shape_axisymmetric = requires {
   Shape::axisymmetric;
 };
 
+/// The weights are the multilinear functions of the particle's cell (linear hats): the 2^d nodes of one cell, the
+/// Q1 cells of the implicit scheme and the modes of PolyPIC (docs/theory.md §2, velocity transfers).
+template <class Shape>
+inline constexpr bool shape_multilinear = requires {
+  Shape::multilinear;
+};
+
 // ---- walking the list ----
 
 namespace detail {
