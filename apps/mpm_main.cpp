@@ -103,6 +103,29 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--restart", restart,
                       "continue the checkpoint FILE, or the newest valid one in DIR; the scene may differ only in "
                       "run-control keys (end_time, cfl, output, prescribed boundary velocities): a fork");
+  // Test seams of the run path (apps/README.md, "Test seams"), not shown by --help.
+  std::string test_signal, test_failure;
+  int test_kill_in_checkpoint = 0;
+  run_cmd
+      ->add_option("--test-signal-at", test_signal,
+                   "test only: send this process the signals NAME (INT, TERM, USR1, KILL; NAME+NAME+...) during step "
+                   "STEP")
+      ->check(CLI::Validator(
+          [](const std::string& s) { return parse_test_signal(s) ? "" : "expected STEP:NAME[+NAME...], got '" + s + "'"; },
+          "STEP:NAME", "test signal"))
+      ->group("");
+  run_cmd
+      ->add_option("--test-fail-at", test_failure,
+                   "test only: rank RANK throws an internal error after step STEP")
+      ->check(CLI::Validator(
+          [](const std::string& s) { return parse_test_failure(s) ? "" : "expected RANK:STEP, got '" + s + "'"; },
+          "RANK:STEP", "test failure"))
+      ->group("");
+  run_cmd
+      ->add_option("--test-kill-in-checkpoint", test_kill_in_checkpoint,
+                   "test only: SIGKILL halfway through writing the N-th checkpoint")
+      ->check(CLI::PositiveNumber)
+      ->group("");
   run_cmd->footer(
       "Signals: SIGINT (Ctrl-C), SIGTERM and SIGUSR1 finish the current step, write a checkpoint and the last frame, "
       "print the command that resumes the run, and exit with 128 + the signal number (130, 143, 138); a second "
@@ -247,6 +270,9 @@ int main(int argc, char** argv) {
     if (steps_opt->count() > 0) options.steps = steps;
     if (end_time_opt->count() > 0) options.end_time = end_time;
     if (!restart.empty()) options.restart = restart;
+    if (!test_signal.empty()) options.test.signal = parse_test_signal(test_signal);
+    if (!test_failure.empty()) options.test.failure = parse_test_failure(test_failure);
+    options.test.kill_in_checkpoint = test_kill_in_checkpoint;
     const RunSummary summary = run_scene(scene, options, log);
     return summary.stopped_by_signal != 0 ? 128 + summary.stopped_by_signal : exit_ok;
   } catch (const mpm::SceneError& e) {  // every rank reads the same scene: one message
