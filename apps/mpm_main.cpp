@@ -111,12 +111,12 @@ int main(int argc, char** argv) {
                    "test only: send this process the signals NAME (INT, TERM, USR1, KILL; NAME+NAME+...) during step "
                    "STEP")
       ->check(CLI::Validator(
-          [](const std::string& s) { return parse_test_signal(s) ? "" : "expected STEP:NAME[+NAME...], got '" + s + "'"; },
+          [](const std::string& s) {
+            return parse_test_signal(s) ? "" : "expected STEP:NAME[+NAME...], got '" + s + "'";
+          },
           "STEP:NAME", "test signal"))
       ->group("");
-  run_cmd
-      ->add_option("--test-fail-at", test_failure,
-                   "test only: rank RANK throws an internal error after step STEP")
+  run_cmd->add_option("--test-fail-at", test_failure, "test only: rank RANK throws an internal error after step STEP")
       ->check(CLI::Validator(
           [](const std::string& s) { return parse_test_failure(s) ? "" : "expected RANK:STEP, got '" + s + "'"; },
           "RANK:STEP", "test failure"))

@@ -63,8 +63,8 @@ bool RunConsole<Dim>::after_step(const Simulation<Dim>& s) {
   const double rate = static_cast<double>(s.particle_count()) * static_cast<double>(s.step() - first_step_) / wall;
   double eta = wall * (s.settings().end_time - s.time()) / std::max(s.time(), 1e-300);
   if (options_.steps)
-    eta = std::min(eta, wall * static_cast<double>(*options_.steps - s.step()) /
-                            static_cast<double>(s.step() - first_step_));
+    eta = std::min(
+        eta, wall * static_cast<double>(*options_.steps - s.step()) / static_cast<double>(s.step() - first_step_));
   fmt::print(log_, "\rstep {:>8}  t = {:<12.6g} s  {:9.3g} particle-updates/s  ETA {:7.1f} s ", s.step(), s.time(),
              rate, eta);
   log_.flush();

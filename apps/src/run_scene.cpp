@@ -236,7 +236,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   const StopSignals stop_signals;  // SIGINT, SIGTERM, SIGUSR1: stop after the current step
   Communicator* const comm =
       options.communicator && options.communicator->size() > 1 ? options.communicator.get() : nullptr;
-  RunConsole<Dim> console(log, scene, options);                // the log, the progress line, signals, failure/
+  RunConsole<Dim> console(log, scene, options);                         // the log, the progress line, signals, failure/
   const std::unique_ptr<Run<Dim>> job = make_run<Dim>(scene, console);  // the simulation and its histories
   Simulation<Dim>& sim = job->simulation();
   if (comm) prepare_ranks(scene, options, sim);

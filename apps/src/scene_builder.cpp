@@ -317,9 +317,9 @@ void add_energy_sentinel(const SceneDescription& scene, Simulation<Dim>& sim) {
       partners.push_back({provider, k, body});
     }
   }
-  sim.add_energy_sentinel(std::make_shared<EnergySentinel<Dim>>(scene.solver.energy_tolerance, scene.solver.on_energy_drift,
-                                                       context, sim.energy(), sim.boundary().does_work(),
-                                                       std::move(partners)));
+  sim.add_energy_sentinel(std::make_shared<EnergySentinel<Dim>>(scene.solver.energy_tolerance,
+                                                                scene.solver.on_energy_drift, context, sim.energy(),
+                                                                sim.boundary().does_work(), std::move(partners)));
 }
 
 }  // namespace

@@ -47,9 +47,9 @@ void check_interrupted_run_reaches_the_same_bits(const Case& c) {
   EXPECT_NE(term.err.find("stopped by SIGTERM at step " + std::to_string(term_at)), std::string::npos) << term.err;
   EXPECT_NE(term.err.find("resume with: mpm run " + scene + " --restart"), std::string::npos) << term.err;
 
-  const Result kill = cli::mpm(args + " --restart " + (run / "checkpoints").string() + " --test-signal-at " +
-                                   std::to_string(kill_at) + ":KILL",
-                               dir);
+  const Result kill = cli::mpm(
+      args + " --restart " + (run / "checkpoints").string() + " --test-signal-at " + std::to_string(kill_at) + ":KILL",
+      dir);
   EXPECT_TRUE(killed(kill)) << kill.status << "\n" << kill.err;
   EXPECT_NE(kill.err.find("at step " + std::to_string(term_at)), std::string::npos) << kill.err;
 

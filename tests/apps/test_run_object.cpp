@@ -107,8 +107,7 @@ TEST(RunObject, CheckpointsWhenTheSinkSaysAndAtTheEnd) {
   EXPECT_TRUE(f.sink.last.contains("run/initial_energy"));
   EXPECT_EQ(f.frames(), 6);
   ASSERT_EQ(f.log.lines.size(), 5u);
-  EXPECT_EQ(f.log.lines[0].rfind("checkpoint: " + (f.dir / "checkpoint_50").string() + " (step 50, t = 0.1 s; ", 0),
-            0u)
+  EXPECT_EQ(f.log.lines[0].rfind("checkpoint: " + (f.dir / "checkpoint_50").string() + " (step 50, t = 0.1 s; ", 0), 0u)
       << f.log.lines[0];
   EXPECT_EQ(f.run->last_checkpoint(), f.dir / "checkpoint_250");
 }

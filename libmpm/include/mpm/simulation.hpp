@@ -58,7 +58,9 @@ class Simulation {
   const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
   /// Adds the energy sentinel (energy_sentinel.hpp; the builder adds one to every scene, last) as a module and keeps
   /// it, for the run object (run/run.hpp), which logs its drift or stops on it, and the flight recorder's diagnosis.
-  void add_energy_sentinel(std::shared_ptr<EnergySentinel<Dim>> sentinel) {
+  /// (A template only so that this header needs no definition of EnergySentinel: `Sentinel` is EnergySentinel<Dim>.)
+  template <class Sentinel>
+  void add_energy_sentinel(std::shared_ptr<Sentinel> sentinel) {
     energy_sentinel_ = sentinel.get();
     add_module(std::move(sentinel));
   }

@@ -50,8 +50,8 @@ void Run<Dim>::start(RunOutput output) {
                                                       output_.restart, rank_zero);
     // The scheme's own per-step table (the implicit scheme's solver.csv), one row per step; a restart starts it anew.
     if (const std::string_view file = sim_->scheme().step_log_file(); !file.empty())
-      step_log_ = std::make_unique<io::CsvLog>(writer_->directory() / std::string(file),
-                                               sim_->scheme().step_log_columns());
+      step_log_ =
+          std::make_unique<io::CsvLog>(writer_->directory() / std::string(file), sim_->scheme().step_log_columns());
     if (rank_zero) io::write_view_script(writer_->directory() / "view.py", output_.view_script);
   } else {
     output_.checkpoints = nullptr;  // a checkpoint holds the output's state

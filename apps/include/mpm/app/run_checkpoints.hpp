@@ -34,7 +34,8 @@ std::string read_scene_text(const SceneDescription& scene);
 
 /// Where the checkpoints of a run writing to `output_directory` go: output.checkpoint.directory, or
 /// OUTPUT/checkpoints.
-std::filesystem::path checkpoint_directory(const SceneDescription& scene, const std::filesystem::path& output_directory);
+std::filesystem::path checkpoint_directory(const SceneDescription& scene,
+                                           const std::filesystem::path& output_directory);
 
 /// The program's checkpoint sink (checkpoint_sink.hpp): HDF5 files through checkpoint/.
 class RunCheckpoints final : public CheckpointSink {

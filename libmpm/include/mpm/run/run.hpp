@@ -147,8 +147,8 @@ class Run {
   std::optional<std::filesystem::path> last_checkpoint_;
   Index last_checkpoint_step_ = -1;
   double stepping_seconds_ = 0;
-  bool started_ = false;        ///< the first stepping call wrote the first frame
-  bool changed_ = false;        ///< particle data changed through views since the last step
+  bool started_ = false;  ///< the first stepping call wrote the first frame
+  bool changed_ = false;  ///< particle data changed through views since the last step
 };
 
 }  // namespace mpm

@@ -13,9 +13,9 @@
 namespace mpm {
 
 struct RunRecord {
-  Real initial_energy = 0;             ///< J
-  std::vector<bool> warned;            ///< per body: its material's state warning was logged
-  std::vector<std::string> warnings;   ///< logged while stepping (state and energy), in order
+  Real initial_energy = 0;            ///< J
+  std::vector<bool> warned;           ///< per body: its material's state warning was logged
+  std::vector<std::string> warnings;  ///< logged while stepping (state and energy), in order
 
   void save(StateArchive& archive) const;
   /// Reads what save() wrote; the flags only when the body count matches.
