@@ -110,16 +110,8 @@ int main(int argc, char** argv) {
       ->add_option("--test-signal-at", test_signal,
                    "test only: send this process the signals NAME (INT, TERM, USR1, KILL; NAME+NAME+...) during step "
                    "STEP")
-      ->check(CLI::Validator(
-          [](const std::string& s) {
-            return parse_test_signal(s) ? "" : "expected STEP:NAME[+NAME...], got '" + s + "'";
-          },
-          "STEP:NAME", "test signal"))
       ->group("");
   run_cmd->add_option("--test-fail-at", test_failure, "test only: rank RANK throws an internal error after step STEP")
-      ->check(CLI::Validator(
-          [](const std::string& s) { return parse_test_failure(s) ? "" : "expected RANK:STEP, got '" + s + "'"; },
-          "RANK:STEP", "test failure"))
       ->group("");
   run_cmd
       ->add_option("--test-kill-in-checkpoint", test_kill_in_checkpoint,
@@ -201,6 +193,17 @@ int main(int argc, char** argv) {
     const int status = cli.exit(e);
     return status == 0 ? exit_ok : exit_bad_input;
   }
+  std::optional<TestSignal> test_signal_seam;
+  std::optional<TestFailure> test_failure_seam;
+  if (!test_signal.empty() && !(test_signal_seam = parse_test_signal(test_signal))) {
+    std::cerr << "--test-signal-at: expected STEP:NAME[+NAME...] (NAME: INT, TERM, USR1, KILL), got '" << test_signal
+              << "'\n";
+    return exit_bad_input;
+  }
+  if (!test_failure.empty() && !(test_failure_seam = parse_test_failure(test_failure))) {
+    std::cerr << "--test-fail-at: expected RANK:STEP, got '" << test_failure << "'\n";
+    return exit_bad_input;
+  }
 
   // Under mpirun/srun with more than one process: `mpm run` is a distributed run (issue 18) when MPI is built in;
   // anything else is refused on every process, explained by the first.
@@ -270,8 +273,8 @@ int main(int argc, char** argv) {
     if (steps_opt->count() > 0) options.steps = steps;
     if (end_time_opt->count() > 0) options.end_time = end_time;
     if (!restart.empty()) options.restart = restart;
-    if (!test_signal.empty()) options.test.signal = parse_test_signal(test_signal);
-    if (!test_failure.empty()) options.test.failure = parse_test_failure(test_failure);
+    options.test.signal = test_signal_seam;
+    options.test.failure = test_failure_seam;
     options.test.kill_in_checkpoint = test_kill_in_checkpoint;
     const RunSummary summary = run_scene(scene, options, log);
     return summary.stopped_by_signal != 0 ? 128 + summary.stopped_by_signal : exit_ok;

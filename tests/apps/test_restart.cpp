@@ -337,10 +337,20 @@ TEST(Restart, SignalsStopWithTheirExitStatus) {
   EXPECT_EQ(twice.status, 130) << twice.err;
   EXPECT_EQ(twice.err.find("stopped by"), std::string::npos) << twice.err;
   EXPECT_TRUE(checkpoint_steps(dir / "out" / "checkpoints").empty());
-  // `mpm run --help` says so.
+  // `mpm run --help` says so, and does not list the test seams.
   const Result help = cli::mpm("run --help", dir);
   EXPECT_NE(help.out.find("SIGINT (Ctrl-C), SIGTERM and SIGUSR1"), std::string::npos) << help.out;
   EXPECT_NE(help.out.find("128 + N stopped by signal N"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("--test-"), std::string::npos) << help.out;
+  // A seam that cannot be read is bad input, before anything is run.
+  const Result bad = cli::mpm(run + " --test-signal-at 10:HUP", dir);
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--test-signal-at: expected STEP:NAME[+NAME...] (NAME: INT, TERM, USR1, KILL), got '10:HUP'"),
+            std::string::npos)
+      << bad.err;
+  const Result bad_rank = cli::mpm(run + " --test-fail-at 1", dir);
+  EXPECT_EQ(bad_rank.status, 2) << bad_rank.err;
+  EXPECT_NE(bad_rank.err.find("--test-fail-at: expected RANK:STEP, got '1'"), std::string::npos) << bad_rank.err;
   if (!HasFailure()) fs::remove_all(dir);
 }
 
