@@ -105,6 +105,21 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--restart", restart,
                       "continue the checkpoint FILE, or the newest valid one in DIR; the scene may differ only in "
                       "run-control keys (end_time, cfl, output, prescribed boundary velocities): a fork");
+  // Test seams of the run path (apps/README.md, "Test seams"), not shown by --help.
+  std::string test_signal, test_failure;
+  int test_kill_in_checkpoint = 0;
+  run_cmd
+      ->add_option("--test-signal-at", test_signal,
+                   "test only: send this process the signals NAME (INT, TERM, USR1, KILL; NAME+NAME+...) during step "
+                   "STEP")
+      ->group("");
+  run_cmd->add_option("--test-fail-at", test_failure, "test only: rank RANK throws an internal error after step STEP")
+      ->group("");
+  run_cmd
+      ->add_option("--test-kill-in-checkpoint", test_kill_in_checkpoint,
+                   "test only: SIGKILL halfway through writing the N-th checkpoint")
+      ->check(CLI::PositiveNumber)
+      ->group("");
   run_cmd->footer(
       "Signals: SIGINT (Ctrl-C), SIGTERM and SIGUSR1 finish the current step, write a checkpoint and the last frame, "
       "print the command that resumes the run, and exit with 128 + the signal number (130, 143, 138); a second "
@@ -187,6 +202,17 @@ int main(int argc, char** argv) {
     const int status = cli.exit(e);
     return status == 0 ? exit_ok : exit_bad_input;
   }
+  std::optional<TestSignal> test_signal_seam;
+  std::optional<TestFailure> test_failure_seam;
+  if (!test_signal.empty() && !(test_signal_seam = parse_test_signal(test_signal))) {
+    std::cerr << "--test-signal-at: expected STEP:NAME[+NAME...] (NAME: INT, TERM, USR1, KILL), got '" << test_signal
+              << "'\n";
+    return exit_bad_input;
+  }
+  if (!test_failure.empty() && !(test_failure_seam = parse_test_failure(test_failure))) {
+    std::cerr << "--test-fail-at: expected RANK:STEP, got '" << test_failure << "'\n";
+    return exit_bad_input;
+  }
 
   // Under mpirun/srun with more than one process: `mpm run` is a distributed run (issue 18) when MPI is built in;
   // anything else is refused on every process, explained by the first.
@@ -255,6 +281,9 @@ int main(int argc, char** argv) {
     if (steps_opt->count() > 0) options.steps = steps;
     if (end_time_opt->count() > 0) options.end_time = end_time;
     if (!restart.empty()) options.restart = restart;
+    options.test.signal = test_signal_seam;
+    options.test.failure = test_failure_seam;
+    options.test.kill_in_checkpoint = test_kill_in_checkpoint;
     const RunSummary summary = run_scene(scene, options, log);
     return summary.stopped_by_signal != 0 ? 128 + summary.stopped_by_signal : exit_ok;
   } catch (const mpm::SceneError& e) {  // every rank reads the same scene: one message

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <csignal>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "mpm/checkpoint/checkpoint_file.hpp"
@@ -47,6 +49,11 @@ std::string read_scene_text(const SceneDescription& scene) {
   return text.str();
 }
 
+fs::path checkpoint_directory(const SceneDescription& scene, const fs::path& output_directory) {
+  const std::string& directory = scene.output.checkpoint.directory;
+  return directory.empty() ? output_directory / "checkpoints" : fs::path(directory);
+}
+
 RunCheckpoints::RunCheckpoints(const SceneDescription& scene, std::string scene_text, fs::path directory,
                                bool writes_files)
     : settings_(scene.output.checkpoint),
@@ -65,7 +72,7 @@ bool RunCheckpoints::due(double time) const {
          std::chrono::duration<double>(Clock::now() - last_wall_).count() >= *settings_.wall_interval;
 }
 
-fs::path RunCheckpoints::write(StateArchive& archive, long long step, double time) {
+fs::path RunCheckpoints::write(StateArchive& archive, Index step, double time) {
   if (settings_.interval) next_time_ = next_due_time(next_time_, *settings_.interval, time * (1 + 1e-12));
   last_wall_ = Clock::now();
   archive.put_integer("run/format", checkpoint_format);
@@ -77,7 +84,8 @@ fs::path RunCheckpoints::write(StateArchive& archive, long long step, double tim
   if (!writes_files_) return {};
   fs::create_directories(directory_);
   const fs::path file = directory_ / checkpoint::checkpoint_name(step);
-  checkpoint::write_checkpoint(file, archive);
+  const bool kill = ++written_ == kill_in_checkpoint_;
+  checkpoint::write_checkpoint(file, archive, kill ? [] { std::raise(SIGKILL); } : std::function<void()>());
   // Keep the newest `keep` of those up to this one (later ones were removed by restore()).
   int kept = 0;
   for (const auto& older : checkpoint::checkpoint_files(directory_))

@@ -318,9 +318,9 @@ void add_energy_sentinel(const SceneDescription& scene, Simulation<Dim>& sim) {
       partners.push_back({provider, k, body});
     }
   }
-  sim.add_module(std::make_shared<EnergySentinel<Dim>>(scene.solver.energy_tolerance, scene.solver.on_energy_drift,
-                                                       context, sim.energy(), sim.boundary().does_work(),
-                                                       std::move(partners)));
+  sim.add_energy_sentinel(std::make_shared<EnergySentinel<Dim>>(scene.solver.energy_tolerance,
+                                                                scene.solver.on_energy_drift, context, sim.energy(),
+                                                                sim.boundary().does_work(), std::move(partners)));
 }
 
 }  // namespace

@@ -9,8 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <csignal>
-#include <cstdlib>
+#include <functional>
 #include <utility>
 
 #include "mpm/checkpoint/checksum.hpp"
@@ -89,16 +88,6 @@ std::optional<ScalarType> scalar_type(hid_t type) {
   }
 }
 
-/// MPM_DEBUG_KILL_IN_CHECKPOINT=N: true for the N-th checkpoint this process writes.
-bool kill_in_this_checkpoint() {
-  static int written = 0;
-  static const int target = [] {
-    const char* v = std::getenv("MPM_DEBUG_KILL_IN_CHECKPOINT");
-    return v ? std::atoi(v) : 0;
-  }();
-  return ++written == target;
-}
-
 void write_entry(hid_t file, const std::string& name, const ArchivedArray& a, hid_t link_properties) {
   const std::string where = "'" + name + "'";
   std::optional<Handle> type;
@@ -128,18 +117,17 @@ void write_entry(hid_t file, const std::string& name, const ArchivedArray& a, hi
     throw std::runtime_error("cannot write the checksum of " + where);
 }
 
-void write_file(const fs::path& path, const StateArchive& archive) {
+void write_file(const fs::path& path, const StateArchive& archive, const std::function<void()>& halfway) {
   const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) throw std::runtime_error("cannot create the file");
   const Handle links(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
   H5Pset_create_intermediate_group(links.get(), 1);
-  const bool kill = kill_in_this_checkpoint();
   std::size_t written = 0;
   for (const auto& [name, array] : archive.entries()) {
     write_entry(file.get(), name, array, links.get());
-    if (kill && ++written == archive.entries().size() / 2) {  // the test of a run killed while writing
+    if (halfway && ++written == archive.entries().size() / 2) {  // a test kills the process here
       H5Fflush(file.get(), H5F_SCOPE_GLOBAL);
-      std::raise(SIGKILL);
+      halfway();
     }
   }
   if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("cannot flush the file");
@@ -215,11 +203,11 @@ herr_t read_entry(hid_t group, const char* name, const H5L_info_t*, void* data) 
 
 std::string checkpoint_name(long long step) { return fmt::format("checkpoint_{:09d}.h5", step); }
 
-void write_checkpoint(const fs::path& path, const StateArchive& archive) {
+void write_checkpoint(const fs::path& path, const StateArchive& archive, const std::function<void()>& halfway) {
   silence_hdf5();
   try {
     io::write_atomically(path, [&](const fs::path& tmp) {
-      write_file(tmp, archive);
+      write_file(tmp, archive, halfway);
       sync_to_disk(tmp);
     });
   } catch (const std::exception& e) {

@@ -16,10 +16,12 @@ class SceneError(ValueError):
 
 
 class StabilityError(RuntimeError):
-    """The stability guard stopped the run (non-finite values, det F <= 0, a particle leaving the grid). The
-    simulation was rolled back to the last good step (and, with output, that state was written). Attributes:
-    step (the step that failed), time (s, at its start), body, particle (id: index at creation), field,
-    detail; str() is the program's message."""
+    """The stability guard stopped the run (non-finite values, det F <= 0, a particle leaving the grid): the
+    simulation was rolled back to the last good step (and, with output, that state was written). Or the energy
+    sentinel did (``solver.on_energy_drift: stop``; field "energy_balance", particle -1): the state is that of the
+    step it found the drift on. Where ``mpm run`` exits with status 3. Attributes: step (the step that failed),
+    time (s, at its start), body, particle (id: index at creation), field, detail; str() is the program's
+    message."""
 
     def __init__(self, text, step=None, time=None, body=None, particle=None, field=None, detail=None):
         super().__init__(text)

@@ -3,22 +3,17 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
-#include <filesystem>
 #include <iostream>
-#include <map>
 #include <stdexcept>
 
+#include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_description.hpp"
-#include "mpm/app/scene_builder.hpp"
-#include "mpm/history/history_writer.hpp"
+#include "mpm/app/run_scene.hpp"
 #include "mpm/output_fields.hpp"
-#include "mpm/output_writer.hpp"
+#include "mpm/run/run.hpp"
 
 namespace mpm::python {
 namespace {
-
-/// Thrown by run()'s step callback to leave Simulation::run() when the Python callback asks to stop.
-struct StopRequested {};
 
 /// Calls `poll` when `seconds` of wall time have passed since the last call (a clock read per step).
 class Poller {
@@ -79,129 +74,111 @@ void add_value_axes(FieldArray& a, std::vector<Index> shape, std::vector<Index> 
   a.strides = std::move(strides);
 }
 
+/// The package's log: the run's lines on stderr, as `mpm run` prints them.
+class StderrLog final : public RunLog {
+ public:
+  void line(const std::string& text) override { std::cerr << text << '\n'; }
+};
+
+/// What the package watches while the run steps: the callback after every `every`-th step (true stops the run),
+/// then the poll when it is due.
+template <int Dim>
+class Control final : public RunObserver<Dim> {
+ public:
+  explicit Control(const RunControl& control) : control_(control), poller_(control.poll, control.poll_seconds) {}
+  bool after_step(const Simulation<Dim>& s) override {
+    if (control_.callback && s.step() % control_.every == 0 && control_.callback()) return true;
+    poller_.poll_if_due();
+    return false;
+  }
+
+ private:
+  const RunControl& control_;
+  Poller poller_;
+};
+
 template <int Dim>
 class SimulationFor final : public SimulationHandle {
  public:
   SimulationFor(const SceneDescription& scene_in, int threads, const std::string& output_directory)
-      : arena_(threads > 0 ? threads : tbb::task_arena::automatic), output_description_(scene_in.output) {
+      : arena_(threads > 0 ? threads : tbb::task_arena::automatic) {
     SceneDescription scene = scene_in;  // modules writing their own files (contact forces) follow the directory
     if (!output_directory.empty()) scene.output.directory = output_directory;
-    output_description_ = scene.output;
-    field_data_ = app::run_field_data(scene, {});  // self-describing frames, as `mpm run` writes them
-    view_script_ = app::view_script_for(scene);
-    std::vector<BuiltHistory<Dim>> histories;
+    // output.checkpoint: the program's checkpoint files (a YAML scene's run continues with `mpm run --restart`)
+    if (!output_directory.empty() && scene.output.checkpoint.enabled)
+      checkpoints_ = std::make_unique<app::RunCheckpoints>(scene, scene.source,
+                                                           app::checkpoint_directory(scene, output_directory));
     arena_.execute([&] {
-      sim_ = app::build_simulation<Dim>(scene);
-      histories = build_histories<Dim>(scene, *sim_, history_warnings_);  // throws SceneError as the program
+      run_ = app::make_run<Dim>(scene, log_);  // throws SceneError as the program
+      run_->log_warnings();
+      run_->start({output_directory, app::run_field_data(scene, {}), app::view_script_for(scene), nullptr, nullptr,
+                   checkpoints_.get()});
     });
-    for (const auto& w : history_warnings_) std::cerr << "warning: " << w << '\n';  // as `mpm run` logs them
-    if (!output_directory.empty()) {
-      output_ = make_writer(output_directory);
-      histories_ = std::make_unique<HistoryWriter<Dim>>(output_->directory(), std::move(histories));
-      // the scheme's own per-step table (the implicit scheme's solver.csv), as `mpm run` writes it
-      if (const std::string_view file = sim_->scheme().step_log_file(); !file.empty())
-        step_log_ =
-            std::make_unique<io::CsvLog>(output_->directory() / std::string(file), sim_->scheme().step_log_columns());
-    }
-    logged_step_ = sim_->step();
   }
 
   int dimension() const override { return Dim; }
 
   void step() override {
-    stepping([&] {
-      const bool was_finished = sim_->finished();
-      sim_->advance(was_finished ? sim_->next_time_step() : sim_->time_step_toward(sim_->settings().end_time));
-      after_step();
-      if (!was_finished && sim_->finished()) write_final_frame();
-    });
+    arena_.execute([&] { run_->step(); });
   }
 
   void advance_to(double t, const std::function<void()>& poll, double poll_seconds) override {
-    Poller poller(poll, poll_seconds);
-    stepping([&] {
-      const bool was_finished = sim_->finished();
-      while (!sim_->reached(t)) {
-        sim_->advance(sim_->time_step_toward(t));
-        after_step();
-        poller.poll_if_due();
-        apply_changes();
-      }
-      if (!was_finished && sim_->finished()) write_final_frame();
-    });
+    RunControl control;
+    control.poll = poll;
+    control.poll_seconds = poll_seconds;
+    Control<Dim> observer(control);
+    arena_.execute([&] { run_->advance_to(t, &observer); });
   }
 
   bool run(const RunControl& control) override {
-    bool stopped = false;
-    Poller poller(control.poll, control.poll_seconds);
-    stepping([&] {
+    Control<Dim> observer(control);
+    RunEnd end = RunEnd::end_time;
+    arena_.execute([&] {
       std::optional<Index> last_step;
-      if (control.steps) last_step = sim_->step() + *control.steps;
-      try {
-        sim_->run(
-            [&](const Simulation<Dim>& s) {
-              after_step();
-              if (control.callback && s.step() % control.every == 0 && control.callback()) throw StopRequested{};
-              poller.poll_if_due();
-              apply_changes();  // made by the callback through views, before the next step
-            },
-            last_step);
-      } catch (const StopRequested&) {
-        stopped = true;
-        apply_changes();
-      }
-      write_final_frame();
+      if (control.steps) last_step = sim().step() + *control.steps;
+      end = run_->run(last_step, &observer);
     });
     if (control.poll) control.poll();
-    return stopped;
+    return end == RunEnd::stopped;
   }
 
-  double time() const override { return sim_->time(); }
-  Index step_count() const override { return sim_->step(); }
+  double time() const override { return sim().time(); }
+  Index step_count() const override { return sim().step(); }
   double dt() override {
-    apply_changes();
-    return sim_->finished() ? sim_->next_time_step() : sim_->time_step_toward(sim_->settings().end_time);
+    run_->apply_particle_changes();
+    return sim().finished() ? sim().next_time_step() : sim().time_step_toward(sim().settings().end_time);
   }
-  double end_time() const override { return sim_->settings().end_time; }
-  bool finished() const override { return sim_->finished(); }
+  double end_time() const override { return sim().settings().end_time; }
+  bool finished() const override { return sim().finished(); }
   double stable_time_step() override {
-    apply_changes();
-    return sim_->stable_time_step();
+    run_->apply_particle_changes();
+    return sim().stable_time_step();
   }
-  Index particle_count() const override { return sim_->particle_count(); }
-  EnergyBalance energy() const override { return sim_->energy(); }
+  Index particle_count() const override { return sim().particle_count(); }
+  EnergyBalance energy() const override { return sim().energy(); }
 
   void write_frame(const std::string& directory) override {
-    apply_changes();
-    // One writer per directory (its .pvd series and energy.csv), the scene's own output included.
-    const std::string key = std::filesystem::weakly_canonical(directory).string();
-    if (output_ && key == std::filesystem::weakly_canonical(output_->directory()).string()) {
-      output_->write(*sim_);
-      return;
-    }
-    auto& writer = frames_[key];
-    if (!writer) writer = make_writer(directory);
-    writer->write(*sim_);
+    arena_.execute([&] { run_->write_frame(directory); });
   }
-  std::string output_directory() const override { return output_ ? output_->directory().string() : std::string(); }
+  std::string output_directory() const override { return run_->output_directory().string(); }
 
   std::vector<std::string> body_names() const override {
     std::vector<std::string> names;
-    for (const auto& b : sim_->bodies()) names.push_back(b.name);
+    for (const auto& b : sim().bodies()) names.push_back(b.name);
     return names;
   }
-  Index body_size(int body) const override { return sim_->bodies().at(body).particles.size(); }
+  Index body_size(int body) const override { return sim().bodies().at(body).particles.size(); }
 
   std::vector<std::string> particle_fields(int body) override {
     std::vector<std::string> names = core_field_names;
-    auto& p = sim_->bodies().at(body).particles;
+    auto& p = sim().bodies().at(body).particles;
     for (const auto& name : p.field_names())
       if (p.storage(name).layout.scalar != 0) names.push_back(name);
     return names;
   }
 
   FieldArray particle_field(int body, const std::string& name) override {
-    auto& p = sim_->bodies().at(body).particles;
+    auto& p = sim().bodies().at(body).particles;
     std::optional<FieldArray> a = core_field(p, name);
     if (!a) {
       if (!p.has_field(name)) throw std::out_of_range("no particle field '" + name + "'");
@@ -215,21 +192,21 @@ class SimulationFor final : public SimulationHandle {
     return *a;
   }
 
-  std::uint64_t generation(int body) const override { return sim_->bodies().at(body).particles.generation(); }
+  std::uint64_t generation(int body) const override { return sim().bodies().at(body).particles.generation(); }
 
   std::vector<double> output_values(int body, const std::string& name, int& components) const override {
     const OutputField* field = find_output_field(name);
     if (!field) throw std::out_of_range("no output field '" + name + "'");
     components = field->components;
     std::vector<double> values;
-    append_output_field<Dim>(name, sim_->bodies().at(body), values);
+    append_output_field<Dim>(name, sim().bodies().at(body), values);
     return values;
   }
 
-  void mark_changed() override { changed_ = true; }
+  void mark_changed() override { run_->mark_particles_changed(); }
 
   GridInfo grid_info() const override {
-    const auto& g = sim_->grid().geometry;
+    const auto& g = sim().grid().geometry;
     GridInfo info;
     for (int d = 0; d < Dim; ++d) {
       info.origin.push_back(g.origin[d]);
@@ -241,14 +218,14 @@ class SimulationFor final : public SimulationHandle {
 
   std::vector<std::string> grid_fields() const override {
     std::vector<std::string> names{"mass", "momentum", "force", "velocity", "updated_velocity"};
-    for (const auto& [name, values] : sim_->grid().node_fields)
-      if (static_cast<Index>(values.size()) == sim_->grid().size()) names.push_back(name);
+    for (const auto& [name, values] : sim().grid().node_fields)
+      if (static_cast<Index>(values.size()) == sim().grid().size()) names.push_back(name);
     return names;
   }
 
   FieldArray grid_field(const std::string& name) override {
     // The grid is const outside the step; the view is read-only.
-    auto& g = const_cast<Grid<Dim>&>(sim_->grid());
+    auto& g = const_cast<Grid<Dim>&>(sim().grid());
     FieldArray a;
     auto member = [&](auto& records, auto& first_value) {
       using Value = std::remove_reference_t<decltype(first_value)>;
@@ -284,56 +261,13 @@ class SimulationFor final : public SimulationHandle {
   }
 
  private:
-  std::unique_ptr<OutputWriter<Dim>> make_writer(const std::string& directory) const {
-    const auto& o = output_description_;
-    auto writer = std::make_unique<OutputWriter<Dim>>(directory, o.prefix, o.fields, o.grid, o.interval);
-    writer->set_field_data(field_data_);
-    io::write_view_script(writer->directory() / "view.py", view_script_);
-    return writer;
-  }
-  void apply_changes() {
-    if (!changed_) return;
-    sim_->particles_changed();
-    changed_ = false;
-  }
-  void after_step() {
-    if (step_log_ && sim_->step() > logged_step_) step_log_->append(sim_->scheme().step_log_row());
-    logged_step_ = sim_->step();
-    if (output_) output_->write_if_due(*sim_);
-    if (histories_) histories_->write_if_due(*sim_);
-  }
-  void write_final_frame() {
-    if (output_) output_->write(*sim_);
-    if (histories_) histories_->write(*sim_);
-  }
-  /// Runs `f` in the arena after applying the views' changes and writing the frames that are due; when the
-  /// stability guard trips, writes the last good state (the simulation was rolled back) before rethrowing.
-  template <class F>
-  void stepping(F&& f) {
-    arena_.execute([&] {
-      apply_changes();
-      after_step();
-      try {
-        f();
-      } catch (const StabilityError&) {
-        write_final_frame();
-        throw;
-      }
-    });
-  }
+  Simulation<Dim>& sim() { return run_->simulation(); }
+  const Simulation<Dim>& sim() const { return run_->simulation(); }
 
   tbb::task_arena arena_;
-  OutputDescription output_description_;
-  std::unique_ptr<Simulation<Dim>> sim_;
-  std::unique_ptr<OutputWriter<Dim>> output_;                         ///< the scene's output section
-  std::map<std::string, std::unique_ptr<OutputWriter<Dim>>> frames_;  ///< write_frame(), by directory
-  std::unique_ptr<HistoryWriter<Dim>> histories_;                     ///< output.histories, beside output_
-  std::vector<std::string> history_warnings_;
-  std::unique_ptr<io::CsvLog> step_log_;  ///< the scheme's per-step table (solver.csv), one row per step
-  Index logged_step_ = 0;                 ///< the last step with a row (after_step also runs before a step)
-  io::FieldData field_data_;
-  io::ViewScript view_script_;
-  bool changed_ = false;
+  StderrLog log_;
+  std::unique_ptr<app::RunCheckpoints> checkpoints_;  ///< output.checkpoint, with an output directory
+  std::unique_ptr<Run<Dim>> run_;                     ///< the simulation, its output and checks, as `mpm run`'s
 };
 
 }  // namespace

@@ -1,10 +1,9 @@
 #pragma once
 /// \file simulation_handle.hpp
-/// A built simulation of any dimension behind one interface, for the Python bindings: the same
-/// build_simulation() and Simulation as the `mpm` program, the scene's output section written by the same
-/// OutputWriter at the same moments as `mpm run`, stepping inside a task arena of the requested number of
-/// threads. Nothing here knows Python: the bindings release the interpreter lock around the stepping calls
-/// and wrap the callbacks.
+/// The run of a scene of any dimension behind one interface, for the Python bindings: the run object of the `mpm`
+/// program (mpm/run/run.hpp, made by app::make_run), so that the output, the warnings, the energy sentinel's stop and
+/// the checkpoints are those of `mpm run`; stepping inside a task arena of the requested number of threads. Nothing
+/// here knows Python: the bindings release the interpreter lock around the stepping calls and wrap the callbacks.
 
 #include <cstdint>
 #include <functional>
@@ -49,8 +48,9 @@ class SimulationHandle {
   virtual ~SimulationHandle() = default;
   virtual int dimension() const = 0;
 
-  // Stepping. Each call first applies changes made through writable views (particles_changed()) and writes
-  // the frames of the scene's output that are due, as `mpm run` does before its first step.
+  // Stepping (Run::step, advance_to, run). Each call first applies changes made through writable views
+  // (particles_changed()); the first writes the first frame of the scene's output, as `mpm run` does. Throws
+  // StabilityError when the guard or the energy sentinel (`solver.on_energy_drift: stop`) stops the run.
   /// One step toward the end time (landing on it); past the end time, a step of the stable size.
   virtual void step() = 0;
   /// Steps until time t, the last step landing on t; `poll` (if set) as in RunControl, every `poll_seconds`.
@@ -96,9 +96,9 @@ class SimulationHandle {
   virtual FieldArray grid_field(const std::string& name) = 0;
 };
 
-/// Builds the simulation of `scene` with build_simulation() inside an arena of `threads` threads (0: all
-/// cores). `output_directory`: the scene's output section is written there (empty: no output written).
-/// Throws SceneError like the program.
+/// Builds the run of `scene` (app::make_run) inside an arena of `threads` threads (0: all cores) and logs its
+/// warnings to stderr. `output_directory`: the scene's output section (and its checkpoints) is written there (empty:
+/// nothing is written). Throws SceneError like the program.
 std::unique_ptr<SimulationHandle> make_simulation(const SceneDescription& scene, int threads,
                                                   const std::string& output_directory);
 

@@ -243,12 +243,12 @@ TEST(ParallelLaunch, UnderMpirunTheGuardStopsEveryRankWithOneReport) {
   fs::remove_all(dir);
 }
 
-/// An internal error on one rank (the hidden MPM_DEBUG_FAIL_AT_STEP=R:S) ends the whole job, never a hang.
+/// An internal error on one rank (the hidden test seam --test-fail-at R:S) ends the whole job, never a hang.
 TEST(ParallelLaunch, UnderMpirunAnErrorOnOneRankEndsTheJob) {
   if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
   const auto dir = scratch("parallel_launch_abort");
   const int status =
-      mpirun(3, "run " + scene + " --threads 1 -o " + (dir / "out").string(), dir, "MPM_DEBUG_FAIL_AT_STEP=1:5");
+      mpirun(3, "run " + scene + " --threads 1 -o " + (dir / "out").string() + " --test-fail-at 1:5", dir);
   EXPECT_NE(status, 0);
   EXPECT_NE(status, 124) << "the job hung";
   const std::string err = cli::slurp(dir / "stderr");

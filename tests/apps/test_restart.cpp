@@ -6,8 +6,8 @@
 // checkpoint are lost work). The last restart runs at one thread (the others at two) from the checkpoint
 // directory, so it continues the checkpoint at T/2. Its output must be the reference's, byte for byte: every
 // .vtu frame, every CSV (energy.csv, the contact forces), the .pvd, and every particle field of every body in
-// the final checkpoint. The stop points come from the test hook MPM_DEBUG_RAISE_AT_STEP (stop_signals.hpp),
-// which sends the process a real signal after a given step.
+// the final checkpoint. The stop points come from the test seam `--test-signal-at STEP:NAME` (stop_signals.hpp),
+// which makes the process send itself a real signal during a given step.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,13 +42,14 @@ void check_interrupted_run_reaches_the_same_bits(const Case& c) {
   ASSERT_LT(kill_at, total);
 
   const std::string args = "run " + scene + " --threads 2 -o " + run.string();
-  const Result term = cli::mpm(args, dir, "MPM_DEBUG_RAISE_AT_STEP=" + std::to_string(term_at) + ":TERM");
+  const Result term = cli::mpm(args + " --test-signal-at " + std::to_string(term_at) + ":TERM", dir);
   EXPECT_EQ(term.status, 128 + 15) << term.err;
   EXPECT_NE(term.err.find("stopped by SIGTERM at step " + std::to_string(term_at)), std::string::npos) << term.err;
   EXPECT_NE(term.err.find("resume with: mpm run " + scene + " --restart"), std::string::npos) << term.err;
 
-  const Result kill = cli::mpm(args + " --restart " + (run / "checkpoints").string(), dir,
-                               "MPM_DEBUG_RAISE_AT_STEP=" + std::to_string(kill_at) + ":KILL");
+  const Result kill = cli::mpm(
+      args + " --restart " + (run / "checkpoints").string() + " --test-signal-at " + std::to_string(kill_at) + ":KILL",
+      dir);
   EXPECT_TRUE(killed(kill)) << kill.status << "\n" << kill.err;
   EXPECT_NE(kill.err.find("at step " + std::to_string(term_at)), std::string::npos) << kill.err;
 
@@ -308,7 +309,7 @@ TEST(Restart, KilledWhileWritingACheckpointContinuesThePreviousOne) {
   ASSERT_EQ(steps.size(), 3u);
   // The second checkpoint (T/2) is killed halfway through its datasets: the first (T/4) stays valid.
   const Result killed_run =
-      cli::mpm("run " + scene + " -o " + (dir / "run").string(), dir, "MPM_DEBUG_KILL_IN_CHECKPOINT=2");
+      cli::mpm("run " + scene + " -o " + (dir / "run").string() + " --test-kill-in-checkpoint 2", dir);
   EXPECT_TRUE(killed(killed_run)) << killed_run.status << "\n" << killed_run.err;
   const auto left = checkpoint_steps(dir / "run" / "checkpoints");
   ASSERT_EQ(left.size(), 1u);
@@ -341,7 +342,7 @@ TEST(Restart, SignalsStopWithTheirExitStatus) {
   const std::string run = "run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string();
   for (const auto& [name, status] : {std::pair{"INT", 130}, std::pair{"USR1", 138}, std::pair{"TERM", 143}}) {
     fs::remove_all(dir / "out");
-    const Result r = cli::mpm(run, dir, std::string("MPM_DEBUG_RAISE_AT_STEP=10:") + name);
+    const Result r = cli::mpm(run + " --test-signal-at 10:" + name, dir);
     EXPECT_EQ(r.status, status) << name << "\n" << r.err;
     EXPECT_NE(r.err.find(std::string("stopped by SIG") + name + " at step 10 (t = 0.02 s)"), std::string::npos)
         << r.err;
@@ -349,14 +350,24 @@ TEST(Restart, SignalsStopWithTheirExitStatus) {
   }
   // A second SIGINT stops at once: no checkpoint, no message.
   fs::remove_all(dir / "out");
-  const Result twice = cli::mpm(run, dir, "MPM_DEBUG_RAISE_AT_STEP=10:INT+INT");
+  const Result twice = cli::mpm(run + " --test-signal-at 10:INT+INT", dir);
   EXPECT_EQ(twice.status, 130) << twice.err;
   EXPECT_EQ(twice.err.find("stopped by"), std::string::npos) << twice.err;
   EXPECT_TRUE(checkpoint_steps(dir / "out" / "checkpoints").empty());
-  // `mpm run --help` says so.
+  // `mpm run --help` says so, and does not list the test seams.
   const Result help = cli::mpm("run --help", dir);
   EXPECT_NE(help.out.find("SIGINT (Ctrl-C), SIGTERM and SIGUSR1"), std::string::npos) << help.out;
   EXPECT_NE(help.out.find("128 + N stopped by signal N"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("--test-"), std::string::npos) << help.out;
+  // A seam that cannot be read is bad input, before anything is run.
+  const Result bad = cli::mpm(run + " --test-signal-at 10:HUP", dir);
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--test-signal-at: expected STEP:NAME[+NAME...] (NAME: INT, TERM, USR1, KILL), got '10:HUP'"),
+            std::string::npos)
+      << bad.err;
+  const Result bad_rank = cli::mpm(run + " --test-fail-at 1", dir);
+  EXPECT_EQ(bad_rank.status, 2) << bad_rank.err;
+  EXPECT_NE(bad_rank.err.find("--test-fail-at: expected RANK:STEP, got '1'"), std::string::npos) << bad_rank.err;
   if (!HasFailure()) fs::remove_all(dir);
 }
 
@@ -382,7 +393,7 @@ TEST(Restart, TheGuardStopsTheRestartedRunWhereItStoppedTheOriginal) {
   const std::string run = "run " + (dir / "scene.yaml").string() + " -o ";
   const Result ref = cli::mpm(run + (dir / "reference").string(), dir);
   ASSERT_EQ(ref.status, 3) << ref.err;
-  const Result stopped = cli::mpm(run + (dir / "run").string(), dir, "MPM_DEBUG_RAISE_AT_STEP=7:TERM");
+  const Result stopped = cli::mpm(run + (dir / "run").string() + " --test-signal-at 7:TERM", dir);
   ASSERT_EQ(stopped.status, 143) << stopped.err;
   const Result resumed =
       cli::mpm(run + (dir / "run").string() + " --restart " + (dir / "run" / "checkpoints").string(), dir);

@@ -27,6 +27,9 @@
 namespace mpm {
 
 template <int Dim>
+class EnergySentinel;
+
+template <int Dim>
 struct SimulationSettings {
   TransferSettings<Dim> transfer;
   std::optional<Real> fixed_dt;  ///< s; when empty the time step is cfl * stable time step
@@ -56,6 +59,16 @@ class Simulation {
     hooks_.add(std::move(module));
   }
   const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
+  /// Adds the energy sentinel (energy_sentinel.hpp; the builder adds one to every scene, last) as a module and keeps
+  /// it, for the run object (run/run.hpp), which logs its drift or stops on it, and the flight recorder's diagnosis.
+  /// (A template only so that this header needs no definition of EnergySentinel: `Sentinel` is EnergySentinel<Dim>.)
+  template <class Sentinel>
+  void add_energy_sentinel(std::shared_ptr<Sentinel> sentinel) {
+    energy_sentinel_ = sentinel.get();
+    add_module(std::move(sentinel));
+  }
+  /// The energy sentinel, or null when none was added.
+  const EnergySentinel<Dim>* energy_sentinel() const { return energy_sentinel_; }
 
   /// Makes this process one rank of a distributed run (issue 18, docs/distributed.md §4): every rank built the
   /// same simulation from the scene; each keeps the particles of its tiles (a box of them), and from now on its
@@ -241,6 +254,7 @@ class Simulation {
   std::unique_ptr<TileHalo> halo_;
   ActiveTiles active_tiles_;
   std::function<unsigned(Index, Real)> step_flags_fn_;
+  const EnergySentinel<Dim>* energy_sentinel_ = nullptr;  ///< one of the modules
   unsigned step_flags_ = 0;            ///< one process, sparse_grid: the occupied tiles of the last step
   std::size_t halo_bytes_before_ = 0;  ///< sent by the halos of earlier tile assignments
   /// Distributed run: per body, whether its particles reached a tile that writes shared nodes at the end of the last

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "mpm/app/scene_diff.hpp"
+#include "mpm/run/checkpoint_sink.hpp"
 #include "mpm/scene.hpp"
 #include "mpm/state_archive.hpp"
 
@@ -31,7 +32,13 @@ class RestartError : public std::runtime_error {
 /// The scene file's text (what a checkpoint stores and a restart compares).
 std::string read_scene_text(const SceneDescription& scene);
 
-class RunCheckpoints {
+/// Where the checkpoints of a run writing to `output_directory` go: output.checkpoint.directory, or
+/// OUTPUT/checkpoints.
+std::filesystem::path checkpoint_directory(const SceneDescription& scene,
+                                           const std::filesystem::path& output_directory);
+
+/// The program's checkpoint sink (checkpoint_sink.hpp): HDF5 files through checkpoint/.
+class RunCheckpoints final : public CheckpointSink {
  public:
   using Clock = std::chrono::steady_clock;
   /// `directory`: where checkpoints go (output.checkpoint.directory, or OUTPUT/checkpoints). With
@@ -43,16 +50,20 @@ class RunCheckpoints {
                  bool writes_files = true);
 
   /// A checkpoint is due after a step that reached `time` (s): its interval or its wall interval has passed.
-  bool due(double time) const;
+  bool due(double time) const override;
+  /// With output.checkpoint in the scene.
+  bool at_end() const override { return settings_.enabled; }
   /// Adds the run's metadata and schedule to `archive` and writes it as checkpoint_STEP.h5; then removes
   /// the older checkpoints beyond `keep`. Returns the file (empty without writes_files).
-  std::filesystem::path write(StateArchive& archive, long long step, double time);
+  std::filesystem::path write(StateArchive& archive, Index step, double time) override;
   /// Continues the schedule of the checkpoint a restart read; removes the checkpoints of this directory
   /// that are later than it (the interrupted run's, which this run writes again). Returns their count.
   int restore(const StateArchive& archive);
 
-  bool enabled() const { return settings_.enabled; }
   const std::filesystem::path& directory() const { return directory_; }
+  /// Test seam (`mpm run --test-kill-in-checkpoint N`): the process kills itself (SIGKILL) halfway through writing
+  /// its N-th checkpoint; 0: never.
+  void kill_in_checkpoint(int n) { kill_in_checkpoint_ = n; }
 
  private:
   CheckpointDescription settings_;
@@ -61,6 +72,8 @@ class RunCheckpoints {
   double next_time_ = 0;
   Clock::time_point last_wall_;
   bool writes_files_ = true;
+  int written_ = 0;             ///< checkpoints written
+  int kill_in_checkpoint_ = 0;  ///< the test seam's
 };
 
 /// The checkpoint `mpm run SCENE --restart FILE|DIR` continues: FILE, or the newest valid checkpoint of DIR (or of

@@ -9,9 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "mpm/app/stop_signals.hpp"
 #include "mpm/communicator.hpp"
 #include "mpm/scene.hpp"
 #include "mpm/step_profile.hpp"
+
+namespace mpm {
+template <int Dim>
+class Run;
+class RunLog;
+}  // namespace mpm
 
 namespace mpm::app {
 
@@ -34,12 +41,18 @@ struct RunOptions {
   std::vector<std::string> overrides;
   /// Continue this checkpoint, or the newest valid one of this directory (`--restart`; run_checkpoints.hpp).
   std::optional<std::filesystem::path> restart;
-  /// The ranks of a distributed run (`mpirun -np N mpm run`, issue 18), null in one process: the simulation is
+  /// The ranks of a distributed run (`mpirun -np N mpm run`), null in one process: the simulation is
   /// distributed over them (Simulation::distribute), and what cannot run on several ranks yet is refused
   /// (RankCountError, exit status 2, on every rank alike).
   std::shared_ptr<Communicator> communicator;
   /// Distributed run: steps between balance checks (`--rebalance-every`; SimulationSettings::rebalance_interval).
   int rebalance_every = 50;
+  /// The test seams of the run path, hidden options of `mpm run` (apps/README.md, "Test seams"; stop_signals.hpp).
+  struct TestSeams {
+    std::optional<TestSignal> signal;    ///< `--test-signal-at STEP:NAME`
+    std::optional<TestFailure> failure;  ///< `--test-fail-at RANK:STEP`
+    int kill_in_checkpoint = 0;          ///< `--test-kill-in-checkpoint N` (RunCheckpoints::kill_in_checkpoint)
+  } test;
 };
 
 struct RunSummary {
@@ -62,6 +75,13 @@ struct RunSummary {
   /// the program then exits with 128 + it.
   int stopped_by_signal = 0;
 };
+
+/// The run of `scene` as both front ends (`mpm run`, the Python package) begin it (mpm/run/run.hpp): the simulation
+/// built (build_simulation; throws SceneError), the warnings about it (a time step collapsed by a typo,
+/// step_estimate.hpp) and the scene's histories. Its warnings are logged by Run::log_warnings(), its output opened by
+/// Run::start().
+template <int Dim>
+std::unique_ptr<Run<Dim>> make_run(const SceneDescription& scene, RunLog& log);
 
 /// Builds the scene's simulation without running it (throws SceneError like load_scene). `ranks` > 0 adds what a
 /// distributed run on that many ranks would hold (rank_report.hpp; throws RankCountError above the tile count).

@@ -4,6 +4,12 @@
 /// the wall time) only set a flag: the run finishes its current step, writes a checkpoint and the last
 /// frame, says how to resume, and exits with 128 + the signal number (130, 143, 138). A second SIGINT exits
 /// at once (130; the previous checkpoint stays valid).
+/// And the test seams of the run path, hidden options of `mpm run` (apps/README.md, "Test seams"): a signal the
+/// process sends itself after a step, an internal error of one rank after a step.
+
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace mpm::app {
 
@@ -18,14 +24,28 @@ class StopSignals {
   static int requested();
 };
 
-/// Test hook: with MPM_DEBUG_RAISE_AT_STEP=N:NAME (NAME one of INT, TERM, USR1, KILL; or NAME+NAME+... for
-/// several in a row) the process sends itself that signal after step N, as if it came from outside
+/// `mpm run --test-signal-at STEP:NAME` (NAME one of INT, TERM, USR1, KILL; or NAME+NAME+... for several in a
+/// row): the process sends itself those signals during step STEP, as if they came from outside
 /// (tests/apps/test_restart.cpp).
-void debug_raise_at_step(long long step);
+struct TestSignal {
+  long long step = 0;
+  std::vector<int> signals;
+};
+/// The seam of `spec`, or nullopt when it is not STEP:NAME[+NAME...].
+std::optional<TestSignal> parse_test_signal(const std::string& spec);
+/// Sends the seam's signals when `step` is its step (each handled before this returns).
+void raise_test_signal(const TestSignal& seam, long long step);
 
-/// Hidden debug option of distributed runs (issue 18 §4): with MPM_DEBUG_FAIL_AT_STEP=R:S in the environment, rank R
-/// throws an internal error after step S, which must end the whole job (MPI_Abort), never leave it hanging.
-void debug_fail_at_step(int rank, long long step);
+/// `mpm run --test-fail-at RANK:STEP`: rank RANK of a distributed run throws an internal error after step STEP,
+/// which must end the whole job (MPI_Abort), never leave it hanging (tests/apps/test_parallel_launch.cpp).
+struct TestFailure {
+  int rank = 0;
+  long long step = 0;
+};
+/// The seam of `spec`, or nullopt when it is not RANK:STEP.
+std::optional<TestFailure> parse_test_failure(const std::string& spec);
+/// Throws std::runtime_error when `rank` and `step` are the seam's.
+void fail_for_test(const TestFailure& seam, int rank, long long step);
 
 /// "SIGTERM" for 15, ...
 const char* signal_name(int signal);

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -27,9 +28,10 @@ class CheckpointError : public std::runtime_error {
 /// Writes `archive` to `path` atomically: into a hidden temporary file beside it, flushed to the disk
 /// (fsync), then renamed onto `path`, so that a run killed while writing leaves `path` as it was (the
 /// previous checkpoint stays valid). Throws std::runtime_error naming the file when it cannot be written.
-/// Test hook: with the environment variable MPM_DEBUG_KILL_IN_CHECKPOINT=N, the process kills itself
-/// (SIGKILL) halfway through writing its N-th checkpoint (tests/apps/test_restart.cpp).
-void write_checkpoint(const std::filesystem::path& path, const StateArchive& archive);
+/// `halfway`, when set, is called once half the datasets are written and flushed: the test seam of a run killed
+/// while writing (`mpm run --test-kill-in-checkpoint N`, tests/apps/test_restart.cpp).
+void write_checkpoint(const std::filesystem::path& path, const StateArchive& archive,
+                      const std::function<void()>& halfway = {});
 
 /// Reads a checkpoint and checks every dataset against its checksum. Throws CheckpointError.
 StateArchive read_checkpoint(const std::filesystem::path& path);
