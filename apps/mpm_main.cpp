@@ -29,9 +29,9 @@
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/verify_command.hpp"
 #include "mpm/checkpoint/checkpoint_file.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scene_loader.hpp"
-#include "mpm/stability_error.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/scene_loader.hpp"
+#include "mpm/core/stability_error.hpp"
 #ifdef MPM_WITH_MPI
 #include "mpm/distributed/mpi_communicator.hpp"
 #endif
@@ -214,7 +214,7 @@ int main(int argc, char** argv) {
     return exit_bad_input;
   }
 
-  // Under mpirun/srun with more than one process: `mpm run` is a distributed run (issue 18) when MPI is built in;
+  // Under mpirun/srun with more than one process: `mpm run` is a distributed run when MPI is built in;
   // anything else is refused on every process, explained by the first.
   std::shared_ptr<mpm::Communicator> world;
   if (const auto launch = parallel_launch([](const char* name) { return std::getenv(name); })) {

@@ -1,6 +1,6 @@
 // Cost of multi-velocity contact (contact/): two elastic blocks pressed against each other (contact on
 // the whole shared face at every step), run with the `contact:` section and without it (one shared velocity
-// field, the same scene otherwise). Prints the wall time per step of both and their ratio (issue 5 target:
+// field, the same scene otherwise). Prints the wall time per step of both and their ratio (target:
 // <= 1.6). The runs alternate, round by round, so that a change of machine load hits both.
 //   bench_contact [--cells N] [--steps N] [--rounds N] [--scheme musl] [--shape linear] [--threads T]
 #include <fmt/format.h>
@@ -16,7 +16,7 @@
 
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace {
 

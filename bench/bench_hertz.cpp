@@ -1,4 +1,4 @@
-// An elastic sphere dropped on a rigid plane, axisymmetric (issue 16; the runner tests/verification/hertz_sphere.hpp):
+// An elastic sphere dropped on a rigid plane, axisymmetric (the runner tests/verification/hertz_sphere.hpp):
 // the window-averaged contact force's peak and duration against Hertz, with the wall time.
 //
 //   bench_hertz [--cells 160] [--scheme musl|usl|usf] [--shape linear|quadratic_bspline|cubic_bspline|cpgimp]

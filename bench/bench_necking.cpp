@@ -1,4 +1,4 @@
-// Tensile test to failure (review §6.3.2, Weldox 460E; issue 4): runs the TLMPM cylinder until it breaks,
+// Tensile test to failure (review §6.3.2, Weldox 460E): runs the TLMPM cylinder until it breaks,
 // writes the engineering stress-strain curve as CSV and prints the neck, the damage, the wall time and
 // the particle-updates per second. The case is the runner tests/verification/tensile_necking.hpp.
 //

@@ -1,5 +1,5 @@
 /// \file bench_sparse_grid.cpp
-/// Sparse tiles against the dense grid in one process (issue 18, active_tiles.hpp): the same scene built twice,
+/// Sparse tiles against the dense grid in one process (active_tiles.hpp): the same scene built twice,
 /// one simulation visiting only the nodes its particles reach (the default) and one every node
 /// (SimulationSettings::sparse_grid = false), stepped in alternating rounds on the same machine so that the
 /// machine's drift hits both alike. Prints per case: particles, grid nodes, the nodes the sparse run visited at its
@@ -26,7 +26,7 @@
 #include "bench_options.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace {
 

@@ -1,11 +1,11 @@
-// Taylor anvil benchmark (review §6.3.1; issue 4): runs the OFHC copper cylinder at 190 m/s to the time its
+// Taylor anvil benchmark (review §6.3.1): runs the OFHC copper cylinder at 190 m/s to the time its
 // kinetic energy falls below 1%, measures L_f, D_f, W_f and the error of eq. 6.19, and prints the wall time
 // and particle-updates per second (particles x steps / stepping seconds). The case is the verification
 // runner tests/verification/taylor_anvil.hpp, so the numbers are those the test and the example use.
 //
 //   bench_taylor [--scheme tlmpm|musl|usl] [--shape linear|cubic_bspline] [--h 0.25e-3] [--ppc N]
 //                [--cfl 0.5] [--C 0.013] [--axisymmetric] [--threads 1] [--output DIR] [--csv FILE] [--print-scene]
-// --axisymmetric: the same rod as a 2D axisymmetric run (issue 16; examples/16_axisymmetric_taylor).
+// --axisymmetric: the same rod as a 2D axisymmetric run (examples/16_axisymmetric_taylor).
 // --print-scene writes the scene file of that configuration (for `mpm run`) instead of running.
 // Defaults: the full case of the review, TLMPM with hats, h = 0.25 mm (74,052 particles), one thread.
 #include <tbb/global_control.h>

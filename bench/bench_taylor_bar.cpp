@@ -1,4 +1,4 @@
-// Love & Sulsky's copper Taylor bar, axisymmetric (reference 003 §4.1; issues 16 and 17): runs the bar to 80 us
+// Love & Sulsky's copper Taylor bar, axisymmetric (reference 003 §4.1): runs the bar to 80 us
 // with an explicit scheme or the implicit one and prints L_f and R_f against the converged finite-element results
 // (L_f 21.42-21.48 mm, R_f 7.12-7.22 mm), the kinetic energy left, the energy error, the wall time and, for the
 // implicit scheme, the solver's work: Newton iterations per step, GMRES per Newton iteration, residual

@@ -31,10 +31,10 @@
 
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/grid.hpp"
-#include "mpm/scene_loader.hpp"
-#include "mpm/simulation.hpp"
-#include "mpm/step_profile.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/scene/scene_loader.hpp"
+#include "mpm/simulation/simulation.hpp"
+#include "mpm/simulation/step_profile.hpp"
 
 namespace {
 
@@ -92,7 +92,7 @@ std::vector<Case> all_cases() {
     for (const char* shape : {"linear", "cubic_bspline"})
       for (const char* scheme : {"usl", "musl"})
         out.push_back({fmt::format("{}d_{}_{}", dim, shape, scheme), dim, shape, scheme});
-  // The 2D cases again in axisymmetric coordinates: the cost of the hoop terms against plane strain (issue 16).
+  // The 2D cases again in axisymmetric coordinates: the cost of the hoop terms against plane strain.
   for (const char* shape : {"linear", "cubic_bspline"})
     for (const char* scheme : {"usl", "musl"})
       out.push_back({fmt::format("2d_{}_{}_axisymmetric", shape, scheme), 2, shape, scheme, true});

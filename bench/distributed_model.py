@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The cost model of a distributed run (issue 18 §6, docs/distributed.md "Cost model"), fitted to the measurements
+"""The cost model of a distributed run (docs/distributed.md "Cost model"), fitted to the measurements
 of bench/run_distributed_scaling.sh, and its projection to a 256^3 cubic B-spline USL case on 16, 128 and 1000 cores.
 
     /usr/bin/python3 bench/distributed_model.py build/distributed_scaling.csv [--latency-us A --bandwidth-gbs B]

@@ -33,10 +33,10 @@ SCHEME_NAMES = {"usl": "USL", "musl": "MUSL", "usf": "USF", "tlmpm": "TLMPM"}
 
 # The measurements the hint table's FLIP row rests on (tests/slow/test_energy_sentinel_disks.cpp asserts them;
 # `mpm run` of the scene printed by that test gives the numbers), and what the table is.
-# The stiff and extreme cases of issue 21, part 4 (tests/stability/extended_stability_cases.cpp): what their
+# The extended stiff and extreme cases (tests/stability/extended_stability_cases.cpp): what their
 # measures are and how "what the user is told" is read, printed under the stability table when they ran.
 STABILITY_EXTENDED_TEXT = (
-    "The cases `locking_*`, `impact_10km_s_*`, `density_ratio_*` and `cfl_bound_*` (issue 21, part 4; setups in "
+    "The cases `locking_*`, `impact_10km_s_*`, `density_ratio_*` and `cfl_bound_*` (setups in "
     "`extended_stability_cases.cpp`, asserted by `test_locking.cpp`, `test_hypervelocity_eos.cpp`, "
     "`test_density_ratio_contact.cpp`, `test_cfl_bound_long_run.cpp`) end their summary with what the user was "
     "told: the stability guard's message (the program exits with status 3), the energy sentinel's warning with "
@@ -60,9 +60,9 @@ ENERGY_SENTINEL_TEXT = (
     "Every 50 steps the energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8) "
     "compares the balance E(t) − E(0) − W with 0.05 of the largest energy of the run so far; the stability "
     "guard's stops are recorded by the flight recorder (`failure/`, docs/scene-reference.md). Both quote the "
-    "one hint table below (`libmpm/src/energy_hints.cpp`, printed here by `verification_report`): the first row "
+    "one hint table below (`libmpm/src/diagnostics/energy_hints.cpp`, printed here by `verification_report`): the first row "
     "whose condition holds for the run's method, with the measurement it rests on.\n\n"
-    "The case of issue 21, the two disks of `examples/02_two_disks` at 200 cells per side, dt = 0.002 s "
+    "The reference case, the two disks of `examples/02_two_disks` at 200 cells per side, dt = 0.002 s "
     "(40,216 particles, MUSL, 1,750 steps to 3.5 s; `tests/slow/test_energy_sentinel_disks.cpp`), total energy "
     "change at 3.5 s (largest over frames every 0.05 s):\n\n"
     "| transfer, shape function | energy change at 3.5 s | largest | sentinel |\n|---|---|---|---|\n"

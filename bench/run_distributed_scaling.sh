@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Strong and weak scaling of distributed runs, per-phase times and the link figures (issue 18 §6), then the cost
+# Strong and weak scaling of distributed runs, per-phase times and the link figures, then the cost
 # model fitted to them (bench/distributed_model.py). One command, one table:
 #
 #   bash bench/run_distributed_scaling.sh [--repeat N] [--steps N] [--quick] [--only CASES] [--csv FILE] [--baseline]

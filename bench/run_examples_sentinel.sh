@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every example scene to its end time with the energy sentinel (issue 21: no false alarm): prints, per example,
+# Every example scene to its end time with the energy sentinel (no false alarm): prints, per example,
 # the exit status, whether the sentinel warned, its largest balance / tolerance (1 = the warning threshold) and
 # the relative energy change of the run, as the program's last lines report them. Not a test: the whole
 # sweep takes about 30-60 min of one core; docs/VERIFICATION.md, "Energy sentinel", holds the last result.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The cost of output.histories (issue 22): examples/09_ring_crush (15,400 particles, MUSL, contact with two
+# The cost of output.histories: examples/09_ring_crush (15,400 particles, MUSL, contact with two
 # rigid platens, J2 plasticity) for N steps on one thread, in three variants run in alternation, ROUNDS times:
 #   none        the scene without histories (what any scene without them builds: nothing)
 #   example     the scene as committed: two platen reactions every 10 us (accumulated every step)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# "Leave out what a scene does not need", measured (issue 9, part 5): a scene that uses no optional module
+# "Leave out what a scene does not need", measured: a scene that uses no optional module
 # must run as fast, and hold as much memory per particle, in a build with every optional module compiled in
 # as in a build with none. This builds bench_throughput twice (Release), with every MPM_WITH_* option of the
 # project switched off and on, then compares them with bench/compare_builds.sh (alternating rounds; best and

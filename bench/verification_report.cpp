@@ -23,7 +23,7 @@
 
 #include "catalogue.hpp"
 #include "cfl_limit.hpp"
-#include "mpm/energy_hints.hpp"
+#include "mpm/diagnostics/energy_hints.hpp"
 #include "stability_cases.hpp"
 
 namespace {

@@ -2,14 +2,14 @@
 # (lib/), their public headers (include/mpm/) and a CMake package (lib/cmake/mpm/), so that another project's
 # find_package(mpm) and target_link_libraries(app mpm::core) work (the Python package installs itself:
 # python/CMakeLists.txt). Everything is here, after the targets are made, so that the folders' CMakeLists.txt
-# only define their targets. Installed targets: mpm::core, mpm::geometry (also mpm::primitives), mpm::app (scene
+# only define their targets. Installed targets: mpm::engine (the engine layer), mpm::core (scenes and output), mpm::geometry (also mpm::primitives), mpm::app (scene
 # -> simulation, the run loop, the modules' registration), mpm::checkpoint (HDF5 checkpoints) and one per optional module compiled in
 # (mpm::plasticity, mpm::fluids, mpm::thermal, mpm::contact).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 get_property(mpm_modules GLOBAL PROPERTY MPM_MODULES)
-set(mpm_libraries mpm_core mpm_geometry mpm_checkpoint mpm_app)
+set(mpm_libraries mpm_engine mpm_core mpm_geometry mpm_checkpoint mpm_app)
 foreach(module ${mpm_modules})
   list(APPEND mpm_libraries mpm_${module})
 endforeach()
@@ -29,7 +29,7 @@ foreach(target ${mpm_libraries})
 endforeach()
 # Code that includes the headers must see Eigen's types with the alignment the libraries were compiled with.
 if(MPM_NATIVE)
-  target_compile_options(mpm_core INTERFACE $<INSTALL_INTERFACE:-march=native>)
+  target_compile_options(mpm_engine INTERFACE $<INSTALL_INTERFACE:-march=native>)
 endif()
 
 install(TARGETS mpm ${mpm_libraries} EXPORT mpmTargets

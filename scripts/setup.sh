@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.."
 
 # Every Debian package the project needs: build tools, libraries, the Python used for plots, and the Python
 # package's bindings (pybind11, Python's headers), tests (pytest) and notebook execution (nbconvert, a kernel),
-# MPI (OpenMPI's headers and mpirun: distributed runs, issue 18; libvtk9-dev already pulls in the library), and
+# MPI (OpenMPI's headers and mpirun: distributed runs; libvtk9-dev already pulls in the library), and
 # valgrind (bench/count_instructions.sh: instruction counts where the wall time is too noisy).
 packages=(cmake g++ make pkg-config git clang-format clang-tidy
           libeigen3-dev libtbb-dev libyaml-cpp-dev libvtk9-dev libcgal-dev libgtest-dev libgmock-dev

@@ -13,7 +13,7 @@
 
 #include "mpm/io/pvd_collection.hpp"
 #include "mpm/io/vtk_writer.hpp"
-#include "mpm/output_fields.hpp"
+#include "mpm/output/output_fields.hpp"
 
 namespace mpm::app {
 namespace {

@@ -8,8 +8,8 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/particle_count.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scheme_registry.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 #include "mpm/shape/shape_functions.hpp"
 
 namespace mpm::app {

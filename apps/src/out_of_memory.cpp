@@ -7,7 +7,7 @@
 #include <new>
 #include <stdexcept>
 
-#include "mpm/memory_budget.hpp"
+#include "mpm/app/memory_budget.hpp"
 
 namespace mpm::app {
 namespace {

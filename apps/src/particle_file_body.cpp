@@ -6,7 +6,7 @@
 #include <set>
 
 #include "mpm/io/particle_file.hpp"
-#include "mpm/scene_error.hpp"
+#include "mpm/scene/scene_error.hpp"
 
 namespace mpm::app {
 namespace {

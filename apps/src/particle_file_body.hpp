@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include "mpm/body.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/particles/body.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::app {
 

@@ -19,11 +19,11 @@
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/io/vtk_writer.hpp"
-#include "mpm/memory_budget.hpp"
-#include "mpm/particle_domain_mesh.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scene_limits.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/app/memory_budget.hpp"
+#include "mpm/output/particle_domain_mesh.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/scene_limits.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm::app {
 namespace {

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "mpm/memory_budget.hpp"
-#include "mpm/scheme_registry.hpp"
-#include "mpm/tile_halo.hpp"
+#include "mpm/app/memory_budget.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
+#include "mpm/parallel/tile_halo.hpp"
 
 namespace mpm::app {
 

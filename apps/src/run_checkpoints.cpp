@@ -10,8 +10,8 @@
 
 #include "mpm/checkpoint/checkpoint_file.hpp"
 #include "mpm/checkpoint/checksum.hpp"
-#include "mpm/due_time.hpp"
-#include "mpm/scene_error.hpp"
+#include "mpm/core/due_time.hpp"
+#include "mpm/scene/scene_error.hpp"
 
 namespace mpm::app {
 namespace fs = std::filesystem;

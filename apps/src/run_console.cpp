@@ -7,7 +7,7 @@
 #include <ostream>
 
 #include "mpm/app/flight_recorder.hpp"
-#include "mpm/energy_sentinel.hpp"
+#include "mpm/diagnostics/energy_sentinel.hpp"
 
 namespace mpm::app {
 

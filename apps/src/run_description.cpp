@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "mpm/app/commit_id.hpp"
-#include "mpm/output_fields.hpp"
+#include "mpm/output/output_fields.hpp"
 
 namespace mpm::app {
 

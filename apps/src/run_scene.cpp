@@ -18,9 +18,9 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/app/stop_signals.hpp"
-#include "mpm/energy_sentinel.hpp"
+#include "mpm/diagnostics/energy_sentinel.hpp"
 #include "mpm/history/history_kind.hpp"
-#include "mpm/memory_budget.hpp"
+#include "mpm/app/memory_budget.hpp"
 #include "mpm/run/run.hpp"
 
 namespace mpm::app {

@@ -7,8 +7,8 @@
 #include <limits>
 
 #include "mpm/app/key_location.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scene_limits.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/scene_limits.hpp"
 
 namespace mpm::app {
 namespace {

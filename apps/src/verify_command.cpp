@@ -13,9 +13,9 @@
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/history/history_writer.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scene_loader.hpp"
-#include "mpm/stability_error.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/scene_loader.hpp"
+#include "mpm/core/stability_error.hpp"
 
 namespace mpm::app {
 namespace {

@@ -1,4 +1,4 @@
-// Latency and bandwidth between two ranks (issue 18 §6: the link figures of the cost model, docs/distributed.md).
+// Latency and bandwidth between two ranks (the link figures of the cost model, docs/distributed.md).
 // Rank 0 sends a message of n bytes to rank 1, which sends it back; half the mean round trip is the one-way time.
 //   mpirun --oversubscribe -np 2 build/bench/bench_pingpong [--repeat N]
 // Prints, per size, the one-way time and the bandwidth, then the model's t(n) = latency + n / bandwidth: the

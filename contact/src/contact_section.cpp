@@ -11,11 +11,11 @@
 
 #include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/contact/multi_velocity_contact.hpp"
-#include "mpm/expression.hpp"
-#include "mpm/io/spec_map.hpp"
-#include "mpm/io/yaml_reader.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scheme_registry.hpp"
+#include "mpm/core/expression.hpp"
+#include "mpm/scene/spec_map.hpp"
+#include "mpm/scene/yaml_reader.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 
 namespace mpm::contact {
 namespace {

@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "mpm/contact/contact_description.hpp"
-#include "mpm/io/key_spec.hpp"
-#include "mpm/io/yaml_reader.hpp"
-#include "mpm/simulation.hpp"
+#include "mpm/scene/key_spec.hpp"
+#include "mpm/scene/yaml_reader.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm::contact {
 

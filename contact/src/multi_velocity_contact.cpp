@@ -13,7 +13,7 @@
 
 #include "mpm/contact/contact_law.hpp"
 #include "mpm/io/continued_file.hpp"
-#include "mpm/state_archive.hpp"
+#include "mpm/core/state_archive.hpp"
 #include "shape_passes.hpp"
 
 namespace mpm::contact {
@@ -117,10 +117,10 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
                                                 const std::string& shape_function, ContactSettings<Dim> settings)
     : bodies_(bodies), settings_(std::move(settings)), body_count_(static_cast<int>(bodies.size())) {
   passes_ = make_shape_passes<Dim>(shape_function, grid.coordinates);
-  body_grids_.reserve(body_count_);  // Body::own_grid points into body_grids_: no reallocation after this
+  body_grids_.reserve(body_count_);  // Body::separate_grid points into body_grids_: no reallocation after this
   for (int k = 0; k < body_count_; ++k) {
     body_grids_.emplace_back(grid);
-    bodies_[k].own_grid = &body_grids_[k];
+    bodies_[k].separate_grid = &body_grids_[k];
   }
   if (settings_.friction.size() != static_cast<std::size_t>(body_count_ * body_count_))
     settings_.friction.assign(body_count_ * body_count_, 0);
@@ -156,7 +156,7 @@ MultiVelocityContact<Dim>::MultiVelocityContact(const GridGeometry<Dim>& grid, s
 
 template <int Dim>
 MultiVelocityContact<Dim>::~MultiVelocityContact() {
-  for (auto& b : bodies_) b.own_grid = nullptr;
+  for (auto& b : bodies_) b.separate_grid = nullptr;
 }
 
 template <int Dim>

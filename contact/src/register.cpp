@@ -4,8 +4,8 @@
 
 #include "contact_section.hpp"
 #include "mpm/contact/rigid_material.hpp"
-#include "mpm/material_registry.hpp"
-#include "mpm/scene_extension.hpp"
+#include "mpm/materials/material_registry.hpp"
+#include "mpm/scene/scene_extension.hpp"
 
 namespace mpm::contact {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/body.hpp"
+#include "mpm/particles/body.hpp"
 
 namespace mpm::contact {
 

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "mpm/app/modules.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/scene_loader.hpp"
 #include "yaml_python.hpp"
 
 namespace py = pybind11;

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "mpm/scene.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::python {
 

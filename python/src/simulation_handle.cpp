@@ -9,7 +9,7 @@
 #include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_description.hpp"
 #include "mpm/app/run_scene.hpp"
-#include "mpm/output_fields.hpp"
+#include "mpm/output/output_fields.hpp"
 #include "mpm/run/run.hpp"
 
 namespace mpm::python {

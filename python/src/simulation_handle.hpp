@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "mpm/energy.hpp"
-#include "mpm/field_storage.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/simulation/energy.hpp"
+#include "mpm/particles/field_storage.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::python {
 

@@ -3,7 +3,7 @@
 #include <cctype>
 #include <string_view>
 
-#include "mpm/io/yaml_reader.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace py = pybind11;
 

@@ -1,4 +1,4 @@
-// `mpm check SCENE --ranks N` (issue 18): what a distributed run would hold, printed by any build; more ranks than
+// `mpm check SCENE --ranks N`: what a distributed run would hold, printed by any build; more ranks than
 // the grid has tiles, or a rank count below 1, is refused with exit status 2 and a message naming the option.
 #include <gtest/gtest.h>
 

@@ -73,7 +73,7 @@ TEST(Cli, CheckValidScene) {
   fs::remove_all(dir);
 }
 
-// `mpm check` names the axisymmetric mode and says what its numbers are per (issue 16).
+// `mpm check` names the axisymmetric mode and says what its numbers are per.
 TEST(Cli, CheckNamesTheAxisymmetricMode) {
   const auto dir = scratch("check_axisymmetric");
   std::ofstream(dir / "scene.yaml")

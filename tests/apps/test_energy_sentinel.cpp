@@ -12,10 +12,10 @@
 
 #include "mpm/app/flight_recorder.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/energy_hints.hpp"
-#include "mpm/energy_sentinel.hpp"
-#include "mpm/scene_loader.hpp"
-#include "mpm/scheme_registry.hpp"
+#include "mpm/diagnostics/energy_hints.hpp"
+#include "mpm/diagnostics/energy_sentinel.hpp"
+#include "mpm/scene/scene_loader.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 #include "run_mpm.hpp"
 
 namespace mpm {
@@ -112,7 +112,7 @@ TEST(EnergySentinel, TheExampleOfTwoDisksRaisesNoAlarm) {
   fs::remove_all(dir);
 }
 
-// The hint for the case of issue 21 (FLIP, hats, MUSL) is the FLIP row; contact and APIC with hats have their own;
+// The hint for the reference case (FLIP, hats, MUSL) is the FLIP row; contact and APIC with hats have their own;
 // every row says what it rests on and where that is documented; the last row answers everything.
 TEST(EnergyHints, RowsAndTheirMeasurements) {
   HintContext disks;

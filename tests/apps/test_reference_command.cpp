@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "mpm/energy_hints.hpp"
+#include "mpm/diagnostics/energy_hints.hpp"
 #include "run_mpm.hpp"
 
 namespace {

@@ -12,7 +12,7 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/run/run.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 #include "run_mpm.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-// The scene-parser fuzz test (issue 21): mutations of the example scenes and the bad-scene fixtures (deleted,
+// The scene-parser fuzz test: mutations of the example scenes and the bad-scene fixtures (deleted,
 // duplicated and swapped lines, extreme numbers, values of the wrong type, truncation, flipped bits;
 // scene_fuzz.hpp), each run through `mpm check` and every fourth also through a 2-step `mpm run`, under a timeout.
 // A mutated scene is valid or refused: the program must end within the timeout with exit 0 (valid) or 2 (refused,

@@ -1,4 +1,4 @@
-// Scenes too big for the machine, and time steps collapsed by a typo (issue 21, part 5), as a new user meets them:
+// Scenes too big for the machine, and time steps collapsed by a typo, as a new user meets them:
 // the examples with one number changed. A scene whose memory estimate exceeds the memory available is refused before
 // anything is allocated (exit 2, file:line:column, the estimate and the memory available); `mpm check` and the start
 // of `mpm run` warn when the step count or the wall time is absurd, naming the key that sets the time step.

@@ -1,5 +1,5 @@
 // Two coaxial elastic bars collide along the axis, axisymmetric, with the multi-velocity contact between the two
-// bodies (issue 16: contact of bodies in axisymmetric scenes; the sphere on a rigid plane is
+// bodies (contact of bodies in axisymmetric scenes; the sphere on a rigid plane is
 // test_hertz_axisymmetric.cpp). With nu = 0 the one-dimensional bar theory is exact for the continuum (no
 // lateral inertia: sigma_rr = sigma_tt = 0, no radial motion): a striker of length L at v0 hits an identical bar at
 // rest, the two stay in contact for 2L/c (c = sqrt(E/rho)), then the striker is at rest and the target moves at v0

@@ -53,7 +53,7 @@ TEST(CollidingCylinders, MomentumConservedEnergyNeverIncreases) {
     EXPECT_LT(p_drift, 1e-12 * 30);            // round-off on momenta of order 28 (kg m/s per unit thickness)
     EXPECT_LT(L_drift, 0.012 * std::abs(L0));  // measured 1.00% (node onset), 0.71% (particle gap)
     EXPECT_GT(e.plastic_work, 0);              // the cylinders yield at the contact
-    // Issue 21: with the paper's corrections the node criterion gained +5.6% (test_contact_energy.cpp shows why);
+    // with the paper's corrections the node criterion gained +5.6% (test_contact_energy.cpp shows why);
     // now measured never above E0 with either onset, final -13.6% (node) and -4.6% (particle gap).
     EXPECT_LE(e_max, e0 * (1 + 1e-9));
   }

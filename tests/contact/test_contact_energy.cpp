@@ -1,4 +1,4 @@
-// Energy of frictionless collisions with multi-velocity contact (issue 21): the total energy (kinetic + strain
+// Energy of frictionless collisions with multi-velocity contact: the total energy (kinetic + strain
 // + plastic work) of two bodies colliding without friction must never rise by more than 0.5% of E0, with either
 // onset criterion, USL, MUSL and USF, 2D and 3D. The cylinders of Love & Sulsky (reference 003 §4.2; 0.1 apart,
 // sharing nodes from the first step) show the two causes the corrections measure themselves (CorrectionWork):

@@ -7,7 +7,7 @@
 // Reference: the energy audit (kinetic + stored + gravity), which the continuum conserves (nearly inviscid water,
 // frictionless walls and contact, an elastic obstacle) except where the water's own flow dissipates (a bore, a jet
 // falling onto the free surface: an inviscid flow loses energy there too), so the losses are compared between set-ups
-// that differ in one thing (issue 21; physics/fluids/README.md, Limits; examples/14_fsi_obstacle/README.md). The
+// that differ in one thing (physics/fluids/README.md, Limits; examples/14_fsi_obstacle/README.md). The
 // contact's own share is the first-order work of its corrections on the particles, sum J.v^t
 // (MultiVelocityContact::correction_work().start_velocity; docs/theory.md §11, "Energy"): negative where the bodies
 // approach at the start of the step.

@@ -1,4 +1,4 @@
-// Elastic sphere on a rigid plane, axisymmetric (issue 16; the runner and Hertz's reference in
+// Elastic sphere on a rigid plane, axisymmetric (the runner and Hertz's reference in
 // tests/verification/hertz_sphere.hpp): contact duration and peak force against Hertz. The grid contact acts over
 // about a cell around the true contact patch, which stiffens the small indentations: the errors fall with the cell
 // size, and come within 10% at 160 cells per radius (bench/bench_hertz: peak +3.6%, duration -0.5%, MUSL, hats;

@@ -77,7 +77,7 @@ TEST(InclineBlock, SlidesWithTheCoulombAcceleration) {
 
 // The same block with APIC transfers (MUSL and USF, hats): with the former MUSL re-map of APIC (the previous
 // step's C_p) a particle of the block left the grid at 0.084 s, which is why contact refused APIC until
-// issue 21 (docs/theory.md §2, velocity transfers). Measured 3.2054 (MUSL) and 3.2052 m/s^2 (USF), exact 3.2059.
+// (docs/theory.md §2, velocity transfers). Measured 3.2054 (MUSL) and 3.2052 m/s^2 (USF), exact 3.2059.
 TEST(InclineBlock, SlidesWithApic) {
   const double expected = g * (std::sin(M_PI / 6) - 0.2 * std::cos(M_PI / 6));
   std::string scene = incline;

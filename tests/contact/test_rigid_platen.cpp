@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "contact_scene_support.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm::test {
 namespace {

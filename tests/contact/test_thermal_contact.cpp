@@ -17,7 +17,7 @@
 #include <numbers>
 
 #include "contact_scene_support.hpp"
-#include "mpm/field_keys.hpp"
+#include "mpm/particles/field_keys.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/thermal/heat_conduction.hpp"
 

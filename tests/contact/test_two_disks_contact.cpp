@@ -42,7 +42,7 @@ DiskRun run_disks(const std::string& scheme, const std::string& shape, const std
   // Relative velocity along the line of centres, positive when the disks move apart.
   const Vec<2> dv = body_velocity(sim->bodies()[1]) - body_velocity(sim->bodies()[0]);
   r.separation_speed = dv.dot(Vec<2>(1, 1).normalized());
-  // issue 21: a collision without friction never gains energy, with either onset (here also with friction)
+  // a collision without friction never gains energy, with either onset (here also with friction)
   EXPECT_LT(r.rise, 0.005) << scheme << "/" << shape << " onset " << onset;
   std::printf(
       "[ measured ] two disks %s/%s onset %s mu %.1f: contact at t = %.4f s (exact 1.5858 s); total energy worst "
@@ -60,7 +60,7 @@ TEST(TwoDisksContact, GridCriterionMusl) {
   EXPECT_GT(r.separation_speed, 0.2);    // measured 0.25: clean rebound
   EXPECT_LT(r.momentum, 1e-12);          // zero initially; equal and opposite normals keep it zero
   // Measured -9.5% (worst -14.4% at the deepest point of the impact): the release of nodes separating at v^t
-  // (issue 21; with the paper's corrections -1.2%, worst -10.6%) dissipates more.
+  // (with the paper's corrections -1.2%, worst -10.6%) dissipates more.
   EXPECT_LT(std::abs(r.final_change), 0.11);
   EXPECT_LT(r.worst, 0.16);
 }
@@ -114,7 +114,7 @@ TEST(TwoDisksContact, OtherSchemesAndShapes) {
 // Measured (both functions alike): grid criterion at 1.002 s (the CPDI stencil reaches two cells, earlier than the
 // hat's 1.127 s), final energy -19.2% (R4), -19.1% (Q4); particle gap at 1.502 s (the square domains' corners along
 // the diagonal normal reach half a diagonal, 0.018 m, beyond the centre), final energy -5.1% (R4), -4.3% (Q4);
-// rebound 0.210-0.226 m/s; never above E0. (With the paper's corrections before issue 21 part 3: -10%, -3.7%, -3.1%.)
+// rebound 0.210-0.226 m/s; never above E0. (With the paper's corrections alone: -10%, -3.7%, -3.1%.)
 // With the Q4 corners moved by the shared field (the velocity of both bodies, as before contact was allowed with
 // CPDI): particle gap at 1.658 s, final energy -18.8%, the disks stuck (8 contact nodes, separation -0.013 m/s).
 TEST(TwoDisksContact, Cpdi) {
@@ -138,7 +138,7 @@ TEST(TwoDisksContact, Cpdi) {
 // checks as the FLIP runs on onset, release, momentum and rebound. The energy is not held to FLIP's bound:
 // APIC dissipates the disks' vibration after the impact whether or not there is contact (MUSL, hats, no
 // contact section, the disks then stick: -26.7% by 3.5 s); measured with contact, with the release of nodes
-// separating at v^t under the grid criterion (issue 21): -41.8% / -28.7% (MUSL, grid / particle gap) and
+// separating at v^t under the grid criterion: -41.8% / -28.7% (MUSL, grid / particle gap) and
 // -40.6% / -27.7% (USF); before that release -24.3% / -25.4% and -36.6% / -27.7%. Asserted: the energy only
 // decreases (the contact correction adds none) and by less than 45%.
 TEST(TwoDisksContact, Apic) {

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Compares a distributed run of `mpm run` with a one-process run of the same scene, bit for bit (issue 18):
+"""Compares a distributed run of `mpm run` with a one-process run of the same scene, bit for bit:
 
   compare_runs.py SERIAL_DIR DISTRIBUTED_DIR
 

@@ -1,4 +1,4 @@
-// An internal error on one rank ends the whole job (issue 18 §4): rank 1 aborts while the others wait in a
+// An internal error on one rank ends the whole job: rank 1 aborts while the others wait in a
 // barrier; mpirun must end with a non-zero status instead of hanging (ctest's timeout catches a hang).
 #include <cstdio>
 

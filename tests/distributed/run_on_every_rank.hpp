@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-#include "mpm/communicator.hpp"
+#include "mpm/parallel/communicator.hpp"
 
 namespace mpm::test {
 

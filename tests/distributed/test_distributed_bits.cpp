@@ -1,4 +1,4 @@
-// Distributed runs give the bits of one process (issue 18, docs/distributed.md §5). Started by ctest under
+// Distributed runs give the bits of one process (docs/distributed.md §5). Started by ctest under
 // `mpirun -np K` (K = 2..4) with `--threads T`: every rank builds the same scene, the ranks run it distributed
 // (Simulation::distribute), rank 0 also runs it alone; after every step the energy audit (the values energy.csv
 // prints) and the time must be byte-equal, and at the end every particle of every body (all its fields, found by
@@ -25,9 +25,9 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/distributed/mpi_communicator.hpp"
-#include "mpm/energy_sentinel.hpp"
-#include "mpm/scene_loader.hpp"
-#include "mpm/scheme_registry.hpp"
+#include "mpm/diagnostics/energy_sentinel.hpp"
+#include "mpm/scene/scene_loader.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 
 namespace {
 
@@ -262,7 +262,7 @@ bool run_case(const Case& c, const std::shared_ptr<mpm::distributed::MpiCommunic
 
 }  // namespace
 
-/// Counts the collectives a run calls (the messages of the halo pass through uncounted): issue 18 asks for one
+/// Counts the collectives a run calls (the messages of the halo pass through uncounted): the engine promises one
 /// reduction per step.
 class CountingCommunicator final : public mpm::Communicator {
  public:
@@ -338,7 +338,7 @@ int main(int argc, char** argv) {
   tbb::global_control threads_control(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   using mpm::VelocityTransfer;
   // Love & Sulsky's colliding cylinders, explicit, with frictionless contact and a floor with friction the left
-  // one reaches (issue 18 §5: contact and its force CSV).
+  // one reaches (docs/distributed.md §5: contact and its force CSV).
   const auto cylinders_with_contact = [](std::string text) {
     text = replaced(text, "scheme: implicit", "scheme: musl");
     text = replaced(text, "  implicit: {newton_rtol: 1.0e-13}\n", "");

@@ -19,7 +19,7 @@
 
 #include "mpm/distributed/mpi_communicator.hpp"
 #include "mpm/io/pvtu_writer.hpp"
-#include "mpm/output_writer.hpp"
+#include "mpm/output/output_writer.hpp"
 #include "run_on_every_rank.hpp"
 #include "scene_fixture.hpp"
 

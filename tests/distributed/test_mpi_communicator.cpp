@@ -1,4 +1,4 @@
-// The MPI communicator (distributed/, issue 18): started by ctest under `mpirun -np K` (K = 1..4). Every rank
+// The MPI communicator (distributed/): started by ctest under `mpirun -np K` (K = 1..4). Every rank
 // takes its share of one list of terms (term i on rank i % K); the reductions must give, on every rank, the bits
 // of the serial result over the whole list. The main below initialises MPI and fails the process when any rank
 // failed, so that mpirun's exit status is the verdict of all ranks.

@@ -10,7 +10,7 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/geometry/shape_filler.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpm;

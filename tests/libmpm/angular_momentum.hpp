@@ -1,7 +1,7 @@
 #pragma once
 // The particles' orbital angular momentum sum m (x - c) x v about the centre c of a 2D scene (the spinning-disk
 // tests of APIC and PolyPIC; the affine parts C_p carry an O(h^2) share more, not counted here).
-#include "mpm/simulation.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm::test {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "angular_momentum.hpp"
-#include "mpm/scene_error.hpp"
+#include "mpm/scene/scene_error.hpp"
 #include "mpm/schemes/transfer_kernels.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "scene_fixture.hpp"
@@ -56,7 +56,7 @@ Real angular_momentum(const Simulation<2>& sim) { return test::orbital_angular_m
 // A spinning disk (rigid rotation at 1 rad/s): APIC keeps its angular momentum, PIC dissipates it.
 // Only the particles' orbital part sum m x (x) v is measured here; APIC also carries angular momentum in
 // C_p (the term m (C_p D_p)^T : epsilon of Jiang et al.), an O(h^2) share: measured 0.975 after 1 s (0.979 before the
-// MUSL re-map fix of issue 21).
+// MUSL re-map fix).
 TEST(Apic, SpinningDiskKeepsAngularMomentum) {
   const std::string spin = "[\"-(y-0.5)\", \"x-0.5\"]";
   auto apic = test::simulation_from_yaml<2>(disk("scheme: musl, velocity_transfer: apic, cfl: 0.4, end_time: 1", spin));

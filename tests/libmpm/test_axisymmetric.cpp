@@ -1,4 +1,4 @@
-// The axisymmetric mode (libmpm/include/mpm/axisymmetric.hpp, docs/theory.md §14) against exact values: the ring
+// The axisymmetric mode (libmpm/include/mpm/schemes/axisymmetric.hpp, docs/theory.md §14) against exact values: the ring
 // volumes and masses of a filled cylinder, the hoop kinematics of every scheme and axisymmetric shape function, the
 // r-weighted GIMP weights, the revolved face areas and the cylindrical names of the output.
 #include <fmt/format.h>
@@ -10,8 +10,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "mpm/axisymmetric.hpp"
-#include "mpm/output_writer.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
+#include "mpm/output/output_writer.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "scene_fixture.hpp"
 
@@ -35,7 +35,7 @@ output: {{fields: [velocity, stress]}}
                      ppc, velocity, scheme, shape, extra_solver);
 }
 
-// Issue 16: a filled box r <= R, 0 <= z - z0 <= L weighs rho pi R^2 L to 1e-12 (V_p = 2 pi r_p A_p with r_p the
+// a filled box r <= R, 0 <= z - z0 <= L weighs rho pi R^2 L to 1e-12 (V_p = 2 pi r_p A_p with r_p the
 // sub-cell centroid: Pappus, exact for each ring).
 TEST(Axisymmetric, FilledCylinderHasTheMassOfTheCylinder) {
   const Real R = 0.6, L = 1.0, rho = 1000;
@@ -54,7 +54,7 @@ TEST(Axisymmetric, FilledCylinderHasTheMassOfTheCylinder) {
     }
 }
 
-// Issue 16: a uniform radial velocity v_r = a r gives F_tt = F_rr and sigma_tt = sigma_rr after a step. APIC with
+// a uniform radial velocity v_r = a r gives F_tt = F_rr and sigma_tt = sigma_rr after a step. APIC with
 // C_p = diag(a, 0) maps the affine field exactly (every node gets v_I = a r_I), so L_rr = a (linear reproduction
 // of the gradients) and L_tt = sum T_I a r_I = a for every scheme and axisymmetric shape function, to round-off.
 // Not MUSL with cpGIMP: its second mapping starts from v_p = sum S_I v_I, the r-weighted domain average of a r,
@@ -88,7 +88,7 @@ TEST(Axisymmetric, UniformRadialVelocityStretchesTheHoopLikeTheRadius) {
     }
 }
 
-// Issue 16: F_tt = r / R (current over reference radius) for any motion when the particles move with the velocity
+// F_tt = r / R (current over reference radius) for any motion when the particles move with the velocity
 // of the hoop rate: USL (x += dt sum phi v, L_tt = sum phi v_r / r) and the TLMPM's reference-radius form.
 TEST(Axisymmetric, HoopStretchIsTheRatioOfCurrentToReferenceRadius) {
   for (const char* scheme : {"usl", "tlmpm"})
@@ -171,7 +171,7 @@ TEST(Axisymmetric, FaceNodeAreasAddUpToTheRevolvedFaces) {
   EXPECT_EQ(axis, 0);
 }
 
-// Face tractions act per unit area of the revolved face (issue 16): on a body filling the grid, a radial traction
+// Face tractions act per unit area of the revolved face: on a body filling the grid, a radial traction
 // t_r on the face r = R and an axial t_z on the face z = H push with 2 pi R H t_r and pi R^2 t_z, so one step from
 // rest (zero stress: the internal forces add to nothing) gives the particles exactly that momentum times dt.
 TEST(Axisymmetric, TractionsActOnTheRevolvedFaceAreas) {

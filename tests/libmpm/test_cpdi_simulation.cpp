@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-#include "mpm/output_writer.hpp"
+#include "mpm/output/output_writer.hpp"
 #include "mpm/shape/cpdi.hpp"
 #include "scene_fixture.hpp"
 

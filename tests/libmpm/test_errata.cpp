@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "mpm/output_writer.hpp"
+#include "mpm/output/output_writer.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "scene_fixture.hpp"
 

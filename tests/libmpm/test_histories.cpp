@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "history_fixture.hpp"
-#include "mpm/exact_sum.hpp"
+#include "mpm/core/exact_sum.hpp"
 #include "two_disks_scene.hpp"
 
 namespace mpm::test {

@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "mpm/scheme.hpp"
+#include "mpm/schemes/scheme.hpp"
 #include "mpm/shape/lagrange_quadratic.hpp"
 #include "mpm/shape/stencil.hpp"
 

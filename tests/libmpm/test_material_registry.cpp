@@ -8,10 +8,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "mpm/material_reference.hpp"
-#include "mpm/material_registry.hpp"
-#include "mpm/scene_loader.hpp"
-#include "mpm/scene_reference.hpp"
+#include "mpm/app/material_reference.hpp"
+#include "mpm/materials/material_registry.hpp"
+#include "mpm/scene/scene_loader.hpp"
+#include "mpm/app/scene_reference.hpp"
 
 namespace {
 

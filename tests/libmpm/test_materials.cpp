@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "mpm/material_batch.hpp"
+#include "mpm/materials/material_batch.hpp"
 #include "mpm/materials/linear_elastic.hpp"
 #include "mpm/materials/neo_hookean.hpp"
 

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "mpm/output_fields.hpp"
-#include "mpm/output_writer.hpp"
-#include "mpm/scene_error.hpp"
+#include "mpm/output/output_fields.hpp"
+#include "mpm/output/output_writer.hpp"
+#include "mpm/scene/scene_error.hpp"
 #include "scene_fixture.hpp"
 
 namespace mpm {

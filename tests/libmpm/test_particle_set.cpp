@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "mpm/particle_set.hpp"
+#include "mpm/particles/particle_set.hpp"
 
 namespace mpm {
 namespace {

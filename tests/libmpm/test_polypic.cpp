@@ -7,7 +7,7 @@
 #include <random>
 
 #include "angular_momentum.hpp"
-#include "mpm/scene_error.hpp"
+#include "mpm/scene/scene_error.hpp"
 #include "mpm/schemes/transfer_kernels.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "scene_fixture.hpp"

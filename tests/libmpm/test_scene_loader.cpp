@@ -16,8 +16,8 @@
 
 #include "mpm/app/modules.hpp"
 #include "mpm/boundary/velocity_face.hpp"
-#include "mpm/expression.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/core/expression.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace {
 

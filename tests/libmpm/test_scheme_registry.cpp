@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/scheme_registry.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 #include "scene_fixture.hpp"
 #include "two_disks_scene.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "mpm/scene_error.hpp"
+#include "mpm/scene/scene_error.hpp"
 #include "scene_fixture.hpp"
 
 namespace mpm {
@@ -133,7 +133,7 @@ TEST(Simulation, GuardCatchesParticleLeavingTheGrid) {
 }  // namespace
 }  // namespace mpm
 
-#include "mpm/output_writer.hpp"
+#include "mpm/output/output_writer.hpp"
 
 namespace mpm {
 namespace {

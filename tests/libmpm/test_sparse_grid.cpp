@@ -1,4 +1,4 @@
-// Sparse tiles in one process (issue 18, active_tiles.hpp): the grid kernels visit only the nodes the particles of
+// Sparse tiles in one process (active_tiles.hpp): the grid kernels visit only the nodes the particles of
 // this step's and the previous step's occupied tiles reach. The claim is that nothing else changes: every case runs
 // the same scene twice, sparse (the default) and dense (SimulationSettings::sparse_grid = false), and after every
 // step the energy audit, and at the end every particle field of every body and the whole grid (the nodal records
@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "mpm/active_tiles.hpp"
+#include "mpm/grid/active_tiles.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/reserved_pages.hpp"
-#include "mpm/scene_loader.hpp"
-#include "mpm/state_archive.hpp"
+#include "mpm/grid/reserved_pages.hpp"
+#include "mpm/scene/scene_loader.hpp"
+#include "mpm/core/state_archive.hpp"
 
 namespace {
 
@@ -200,8 +200,8 @@ void expect_sparse_equals_dense(const Case& c) {
   const NodeRuns visited = sparse->active_tiles().nodes();
   EXPECT_EQ(first_different_node(sparse->grid().velocity, dense->grid().velocity, visited), -1) << "nodal velocities";
   for (std::size_t b = 0; b < dense->bodies().size(); ++b)
-    if (const Grid<Dim>* own = dense->bodies()[b].own_grid) {
-      const Grid<Dim>* mine = sparse->bodies()[b].own_grid;
+    if (const Grid<Dim>* own = dense->bodies()[b].separate_grid) {
+      const Grid<Dim>* mine = sparse->bodies()[b].separate_grid;
       ASSERT_NE(mine, nullptr);
       EXPECT_EQ(first_different_node(mine->node, own->node), -1) << "body " << b << "'s own grid (contact)";
       EXPECT_EQ(first_different_node(mine->velocity, own->velocity, visited), -1)

@@ -11,8 +11,8 @@
 #include <numeric>
 #include <random>
 
-#include "mpm/exact_sum.hpp"
-#include "mpm/tile_binning.hpp"
+#include "mpm/core/exact_sum.hpp"
+#include "mpm/grid/tile_binning.hpp"
 #include "scene_fixture.hpp"
 
 namespace mpm {

@@ -16,7 +16,7 @@
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/quadratic_bspline.hpp"
 #include "mpm/shape/stencil.hpp"
-#include "mpm/tile_binning.hpp"
+#include "mpm/grid/tile_binning.hpp"
 
 namespace mpm {
 namespace {

@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "mpm/tile_halo.hpp"
+#include "mpm/parallel/tile_halo.hpp"
 
 namespace {
 

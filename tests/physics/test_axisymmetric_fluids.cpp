@@ -1,4 +1,4 @@
-// The fluids module on an axisymmetric body (issue 16): one step of a uniform radial expansion v_r = a r, mapped
+// The fluids module on an axisymmetric body: one step of a uniform radial expansion v_r = a r, mapped
 // exactly by APIC (C_p = diag(a, 0); tests/libmpm/test_axisymmetric.cpp) and differentiated by USF before any force
 // acts (the gas's initial pressure pushes its free faces), so that tr D = L_rr + L_tt = 2 a and
 // J = (1 + a dt)^2: the ideal gas's energy update (eq. 5.33 with D, docs/errata.md #11) and the Tait pressure
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "../libmpm/scene_fixture.hpp"
-#include "mpm/field_keys.hpp"
+#include "mpm/particles/field_keys.hpp"
 #include "mpm/fluids/field_keys.hpp"
 
 namespace mpm {

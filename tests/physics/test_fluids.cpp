@@ -16,9 +16,9 @@
 #include "dam_break.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/fluids/tait_fluid.hpp"
-#include "mpm/material_batch.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/tile_binning.hpp"
+#include "mpm/materials/material_batch.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/grid/tile_binning.hpp"
 #include "sod.hpp"
 #include "sod_exact.hpp"
 
@@ -308,7 +308,7 @@ TEST(NewtonianFluid, WarnsWhenTheDensityDeviatesTooMuch) {
   std::filesystem::remove_all(dir);
 }
 
-// APIC with hat functions on a weakly compressible fluid (issue 21 part 3; docs/theory.md §2, velocity transfers).
+// APIC with hat functions on a weakly compressible fluid (docs/theory.md §2, velocity transfers).
 // The review's water (K = 4.5e6 Pa, gamma = 7, rho0 = 1000) in its 6 m tank at dt = 0.1 h / sqrt(K/rho0); the
 // reference is the energy audit: kinetic + Tait stored + gravity potential is conserved by the continuum
 // (the walls are free-slip, the viscosity is that of water), and the density stays within weak
@@ -490,7 +490,7 @@ std::string fsi_water_in_tank(const std::string& side, const std::string& cell, 
          solver + "}\n";
 }
 
-// What the water alone in the FSI example's tank lost (issue 21; examples/14_fsi_obstacle/README.md, fix 6): with
+// What the water alone in the FSI example's tank lost (examples/14_fsi_obstacle/README.md, fix 6): with
 // hats, APIC and PolyPIC lose energy in the column's collapse and surge with 2 particles per cell per axis and little
 // with 3; FLIP loses nothing with either. The particles carry more grid-scale noise with 2 per axis (FLIP: J's rms
 // about its cell's mean twice as large; PolyPIC at the example's 40 cells: velocity noise 0.090 against 0.0136 m/s rms

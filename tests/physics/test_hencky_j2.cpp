@@ -24,7 +24,7 @@
 #include "mpm/plasticity/hencky_j2.hpp"
 #include "mpm/plasticity/hencky_j2_batch.hpp"
 #include "mpm/plasticity/log_volumetric_energy.hpp"
-#include "mpm/scene_error.hpp"
+#include "mpm/scene/scene_error.hpp"
 
 namespace mpm::plasticity {
 namespace {

@@ -183,7 +183,7 @@ TEST(PlasticityPoint, UniaxialTensionFollowsJohnsonCookCurve) {
 // Considere: in uniaxial tension the force sigma A = sigma A0 J / lambda peaks where d sigma / d eps =
 // sigma. For OFHC copper with the Johnson & Cook (1983, 1985) constants A = 90 MPa, B = 292 MPa,
 // n = 0.31 (rate and temperature terms inactive), B n eps^(n-1) = A + B eps^n at eps = 0.2063 ("about 0.21
-// true strain", issue 4). The point simulation must put the force peak at that plastic strain within 0.003.
+// true strain"). The point simulation must put the force peak at that plastic strain within 0.003.
 TEST(PlasticityPoint, ForcePeaksAtConsidereStrain) {
   const Real A = 90e6, B = 292e6, n = 0.31;
   Real lo = 0.05, hi = 0.6;  // bisection on g(eps) = B n eps^(n-1) - A - B eps^n (decreasing)

@@ -13,8 +13,8 @@
 
 #include "../libmpm/scene_fixture.hpp"
 #include "mpm/app/modules.hpp"
-#include "mpm/material_registry.hpp"
-#include "mpm/output_writer.hpp"
+#include "mpm/materials/material_registry.hpp"
+#include "mpm/output/output_writer.hpp"
 #include "mpm/plasticity/elastoplastic.hpp"
 
 namespace mpm {
@@ -193,7 +193,7 @@ TEST(PlasticityScene, DiskImpactExampleFirstTenMicroseconds) {
   EXPECT_NEAR(e.total(), e0, 0.005 * e0);
 }
 
-// Thread-count bit identity with a Johnson-Cook body of a million particles (issue 18, docs/distributed.md §1):
+// Thread-count bit identity with a Johnson-Cook body of a million particles (docs/distributed.md §1):
 // TBB cuts the particles into blocks of different sizes for one and two threads (and from run to run), and
 // every particle goes through the vector law in a padded pack whatever its block, pack or lane, with the
 // time-step bound taken per particle. 3D, MUSL with linear hats, copper with the Mie-Grueneisen EOS, damage

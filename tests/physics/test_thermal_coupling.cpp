@@ -14,7 +14,7 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/plasticity/elastoplastic.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm {
 namespace {

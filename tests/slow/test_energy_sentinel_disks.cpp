@@ -1,4 +1,4 @@
-// The energy sentinel on the case of issue 21: the two disks of examples/02_two_disks at 200 cells per side with
+// The energy sentinel on its reference case: the two disks of examples/02_two_disks at 200 cells per side with
 // dt = 0.002 s (40,216 particles, MUSL, 1,750 steps to 3.5 s). With FLIP and linear hats the total energy grows
 // by 37% and the sentinel warns, quoting the hint table's FLIP row; with each remedy that row names (a PIC
 // fraction, quadratic B-splines, cpGIMP) the balance stays below the tolerance (0.05 of the largest energy).
@@ -16,7 +16,7 @@
 #include <string>
 
 #include "mpm/app/run_scene.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm {
 namespace {

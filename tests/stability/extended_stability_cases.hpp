@@ -1,6 +1,6 @@
 #pragma once
 /// \file extended_stability_cases.hpp
-/// The stiff and extreme cases of issue 21 (part 4), added to stability_cases(): a nu = 0.49999 block under its
+/// The extended stiff and extreme cases, added to stability_cases(): a nu = 0.49999 block under its
 /// own weight with every scheme (volumetric locking: the pressure checkerboard), a steel disk at 10 km/s with the
 /// Johnson-Cook / Mie-Gruneisen material (does the EOS hold it or the guard stop it), two disks of density ratio
 /// 1e4 in multi-velocity contact, and 1e5 steps at the CFL bound (cfl 1) with every explicit scheme. Each outcome

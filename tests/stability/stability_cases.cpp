@@ -14,9 +14,9 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scene_loader.hpp"
-#include "mpm/stability_error.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/scene_loader.hpp"
+#include "mpm/core/stability_error.hpp"
 
 namespace mpm::verification {
 namespace {
@@ -277,7 +277,7 @@ std::vector<StabilityCase> stability_cases() {
        [](const fs::path& d) { return fixed_dt(d, 1.1); }},
       {"long_run", "1D bar, 1e5 steps, MUSL: relative energy change", long_run},
   };
-  for (auto& c : extended_stability_cases()) cases.push_back(std::move(c));  // issue 21, part 4
+  for (auto& c : extended_stability_cases()) cases.push_back(std::move(c));  // the extended cases
   return cases;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 /// \file stability_cases.hpp
-/// Stiff and extreme cases (issue 9, part 3): what a run does when the material is very stiff or nearly
+/// Stiff and extreme cases: what a run does when the material is very stiff or nearly
 /// incompressible, at hypervelocity, under extreme compression, with a body thinner than a cell, with a
 /// fixed dt near the CFL bound, and over 1e5 steps. Each case runs through the same path as `mpm run`
 /// (app::run_scene, or the MMS runner with an OutputWriter) into a directory, then reads back every file it
@@ -48,7 +48,7 @@ struct StabilityCase {
   std::function<StabilityOutcome(const std::filesystem::path& output_directory)> run;
 };
 
-/// Every case, in the order of issue 9, then those of issue 21 part 4 (extended_stability_cases.hpp).
+/// Every case, the first set, then the extended ones (extended_stability_cases.hpp).
 std::vector<StabilityCase> stability_cases();
 /// The case called `name` (throws std::invalid_argument).
 StabilityOutcome run_stability_case(const std::string& name, const std::filesystem::path& output_directory);

@@ -1,5 +1,5 @@
 // 1e5 steps exactly at the CFL bound (cfl 1: every step is h / (c + max|v|) of its state, eq. 2.73) on a 2D
-// elastic block of 256 particles in its first axial mode, per explicit scheme (issue 21, part 4; the implicit
+// elastic block of 256 particles in its first axial mode, per explicit scheme (the implicit
 // scheme has no CFL bound: test_implicit_large_step.cpp). What it does and what the user is told:
 // - USL: the energy sentinel warns at step 50 (USL hint) and the guard stops the run at step 68 (inverted particle);
 // - MUSL: runs, loses 51.7% of the energy (its double mapping damps), no warning;

@@ -1,12 +1,12 @@
 // Two disks of density ratio 1e4 (impedance ratio 1e4, the same wave speed) in frictionless multi-velocity
-// contact (onset particle_gap) (issue 21, part 4). What it does, MUSL and USF at cfl 0.5: the light disk leaves at
+// contact (onset particle_gap). What it does, MUSL and USF at cfl 0.5: the light disk leaves at
 // 0.279 / 0.279 m/s per axis (rigid elastic limit 0.29996: restitution 0.895 / 0.896, the rest stays as
 // vibration), the heavy one slows by 3.8e-5 m/s, the total momentum is kept to 1e-12 of the momentum handed over,
 // and no particle of one body comes closer than 0.98 particle spacings to one of the other (no interpenetration).
 // What the user is told: nothing, and the sentinel cannot tell: its tolerance is a fraction of the total energy,
 // of which the light disk holds 1e-4. USL at its documented limit (cfl 0.2) is stopped by the guard during the
 // contact (the light disk inverts a particle at t = 0.749 s). Setups: extended_stability_cases.cpp. (MUSL gave
-// 0.283 m/s, restitution 0.915, while its re-mapped velocity was corrected again, Remark 33: issue 21 part 3.)
+// 0.283 m/s, restitution 0.915, while its re-mapped velocity was corrected again, Remark 33.)
 #include <gtest/gtest.h>
 
 #include <cstdio>

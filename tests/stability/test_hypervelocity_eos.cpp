@@ -1,4 +1,4 @@
-// A 4340 steel disk (Johnson-Cook, Mie-Gruneisen) at 10 km/s onto a fixed wall (issue 21, part 4). MUSL: the EOS
+// A 4340 steel disk (Johnson-Cook, Mie-Gruneisen) at 10 km/s onto a fixed wall. MUSL: the EOS
 // holds it: det F stops at 0.335, just above the Mie-Gruneisen limit 1 - 1/S = 0.329 where its pressure diverges
 // (1D Hugoniot of the impact: J_H = 0.486, p_H = 1.52e12 Pa; the largest particle pressure is 3.6e14 Pa, at the
 // particles closest to that limit); the run completes with every value finite, and the energy sentinel warns at

@@ -1,4 +1,4 @@
-// The implicit scheme at a time step far above the explicit bound (issue 17): the Love & Sulsky copper bar
+// The implicit scheme at a time step far above the explicit bound: the Love & Sulsky copper bar
 // (ref. 003 §4.1: R0 = 3.2 mm, L0 = 32.4 mm, K = 130 GPa, G = 43.3 GPa, sigma_Y = 0.4 GPa, H = 0.1 GPa,
 // rho_0 = 8930 kg/m^3; 9 x 50 cells on [0, 7.2] x [0, 32.4] mm; dt = 1 us, 80 steps), axisymmetric, onto the slip
 // wall z = 0. The explicit schemes refuse dt = 1 us at load (the bound h / (c + |v|) is 0.14 us); the implicit run
@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "../physics/implicit_test_support.hpp"
-#include "mpm/scene_error.hpp"
+#include "mpm/scene/scene_error.hpp"
 #include "taylor_bar.hpp"
 
 namespace mpm::test {

@@ -1,4 +1,4 @@
-// Volumetric locking (issue 21, part 4): a Neo-Hookean block with nu = 0.49999 (K / G = 5e4) under its own
+// Volumetric locking: a Neo-Hookean block with nu = 0.49999 (K / G = 5e4) under its own
 // weight on a slip floor, with every scheme. What it does: the explicit schemes (linear hats, one stress per
 // particle) carry a pressure checkerboard between neighbouring particles, 2.1 to 2.2 times rho g H, on top of a
 // hydrostatic profile whose fitted value at the floor is 0.55 to 0.66 rho g H (small-strain static value 0.5;

@@ -1,6 +1,6 @@
 #pragma once
 /// \file axisymmetric_cases.hpp
-/// Runners of the axisymmetric verification cases (issue 16; docs/verification-notes.md), through scenes as a user
+/// Runners of the axisymmetric verification cases (docs/verification-notes.md), through scenes as a user
 /// writes them (`grid.coordinates: axisymmetric`, x = r, y = z):
 /// - radial vibration of a long elastic cylinder: R = 1 m, E = 100 Pa, nu = 0.3, rho = 1 kg/m^3, slip faces at
 ///   both ends of a slice 4 cells high (plane strain along z), free lateral surface; initial velocity the

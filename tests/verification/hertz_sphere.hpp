@@ -1,6 +1,6 @@
 #pragma once
 /// \file hertz_sphere.hpp
-/// An elastic sphere dropped on a rigid plane, axisymmetric (issue 16; contact module): a sphere R = 0.1 m (a disk
+/// An elastic sphere dropped on a rigid plane, axisymmetric (contact module): a sphere R = 0.1 m (a disk
 /// centred on the axis of an axisymmetric grid; rho = 1000 kg/m^3, E = 10 MPa, nu = 0.3) falls at v0 = 1 m/s onto a
 /// contact plane at z = 0, a quarter cell below it at the start. Hertz's quasi-static impact (Johnson, Contact
 /// Mechanics, 1985, §11.4), E* = E / (1 - nu^2) for a rigid plane, m the sphere's mass:

@@ -38,7 +38,7 @@ struct TaylorSpec {
   double max_time = 80e-6;                 ///< s, the run stops here at the latest (the scene's end_time)
   std::string output_directory;            ///< non-empty: write the final state there (ParaView)
   /// The same rod as a 2D axisymmetric run (`grid.coordinates: axisymmetric`, x = r in [0, 4 or 8 mm], y = z):
-  /// the box r <= R0, 0 <= z <= L0 of the same cell size and particles per cell (issue 16).
+  /// the box r <= R0, 0 <= z <= L0 of the same cell size and particles per cell.
   bool axisymmetric = false;
 };
 

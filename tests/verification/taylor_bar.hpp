@@ -1,10 +1,10 @@
 #pragma once
 /// \file taylor_bar.hpp
-/// The Taylor bar of Love & Sulsky (reference 003 §4.1) with the explicit schemes, axisymmetric (issue 16): a
+/// The Taylor bar of Love & Sulsky (reference 003 §4.1) with the explicit schemes, axisymmetric: a
 /// copper bar, R0 = 3.2 mm, L0 = 32.4 mm, hits a rigid frictionless wall at 227 m/s; J2 plasticity with linear
 /// hardening, E = 116.9 GPa, nu = 0.35, sigma_Y = 0.4 GPa, H = 0.1 GPa, rho = 8930 kg/m^3; 80 us. Reference: the
 /// converged finite-element results for this bar, final length L_f = 21.42-21.48 mm and impact-face radius
-/// R_f = 7.12-7.22 mm (Simo 1992; Zienkiewicz et al. 1998), quoted by the issue; the implicit scheme (issue 17)
+/// R_f = 7.12-7.22 mm (Simo 1992; Zienkiewicz et al. 1998), quoted by the issue; the implicit scheme
 /// will be compared with the same numbers.
 ///
 /// The grid: r in [0, 8.8 mm] (the foot spreads to about 7.2 mm), z in [0, L0 + one cell], square cells of size h;

@@ -1,4 +1,4 @@
-// Axisymmetric verification (issue 16; runners and references in axisymmetric_cases.hpp): the radial vibration of
+// Axisymmetric verification (runners and references in axisymmetric_cases.hpp): the radial vibration of
 // a long elastic cylinder against its Bessel-root frequency, for every explicit scheme and axisymmetric shape
 // function, with the error falling on refinement; the cooling of a long cylinder (thermal module) against the
 // Bessel series, converging at order about 2.
@@ -10,7 +10,7 @@
 #include "axisymmetric_cases.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm::verification {
 namespace {
@@ -23,7 +23,7 @@ TEST(RadialVibration, ModeRootSolvesTheFrequencyEquation) {
   EXPECT_LT(x, 2.4048);
 }
 
-// Issue 16: the fundamental radial period within 1% at 16 cells across the radius, every scheme and shape function.
+// the fundamental radial period within 1% at 16 cells across the radius, every scheme and shape function.
 TEST(RadialVibration, PeriodWithinOnePercentAtSixteenCells) {
   for (const char* scheme : {"usl", "musl", "usf", "tlmpm"})
     for (const char* shape : {"linear", "quadratic_bspline", "cubic_bspline", "cpgimp"}) {
@@ -39,7 +39,7 @@ TEST(RadialVibration, PeriodWithinOnePercentAtSixteenCells) {
     }
 }
 
-// Issue 16: the error falls on refinement (8, 16, 32 cells; MUSL with hats and with cubic B-splines).
+// the error falls on refinement (8, 16, 32 cells; MUSL with hats and with cubic B-splines).
 TEST(RadialVibration, ErrorFallsOnRefinement) {
   for (const char* shape : {"linear", "cubic_bspline"}) {
     double previous = 1;
@@ -57,7 +57,7 @@ TEST(RadialVibration, ErrorFallsOnRefinement) {
 }
 
 #ifdef MPM_WITH_THERMAL
-// Issue 16: the centre temperature of a cooling cylinder within 1% of the Bessel series, converging at order 2.
+// the centre temperature of a cooling cylinder within 1% of the Bessel series, converging at order 2.
 TEST(CylinderCooling, CentreTemperatureAgainstBesselSeries) {
   // The series itself, against scipy (jn_zeros(0, 200), j1): 0.5014868606073982 at tau = 0.2.
   EXPECT_NEAR(cylinder_cooling_centre(0.2), 0.5014868606073982, 1e-12);
@@ -84,7 +84,7 @@ TEST(CylinderCooling, CentreTemperatureAgainstBesselSeries) {
   }
 }
 
-// Heat fluxes act per unit area of the revolved face (issue 16): a flux q into the mantle r = R of a cylinder whose
+// Heat fluxes act per unit area of the revolved face: a flux q into the mantle r = R of a cylinder whose
 // other faces are insulated raises its heat content sum m c (T - T0) by q 2 pi R H t exactly (conduction only
 // moves heat inside, review §5.3.2).
 TEST(CylinderCooling, FaceFluxEntersThroughTheRevolvedArea) {

@@ -1,4 +1,4 @@
-// Axisymmetric impact runs (issue 16): the review's Taylor anvil (taylor_anvil.hpp) as a 2D axisymmetric run against
+// Axisymmetric impact runs: the review's Taylor anvil (taylor_anvil.hpp) as a 2D axisymmetric run against
 // the 3D runs of the same method and cell size, and Love & Sulsky's copper Taylor bar (taylor_bar.hpp) with the
 // explicit schemes against the converged finite-element results. The fine and the 3D runs are in bench/
 // (bench_taylor --axisymmetric, bench_taylor_bar; numbers in examples/16_axisymmetric_taylor and
@@ -22,7 +22,7 @@ struct Shape3d {
   double length, diameter, bulge;
 };
 
-// Issue 16: the axisymmetric Taylor anvil within 2% of the 3D run of the same method and cell size (h = 0.5 mm;
+// the axisymmetric Taylor anvil within 2% of the 3D run of the same method and cell size (h = 0.5 mm;
 // TLMPM 1 particle per cell, MUSL 2 x 2). Measured: TLMPM L 16.86 D 14.11 W 9.96 mm (Delta 0.033), MUSL L 16.83
 // D 13.75 W 9.69 mm (Delta 0.033), against 3D 16.80/14.03/10.00 and 16.85/13.97/9.75.
 TEST(AxisymmetricTaylorAnvil, WithinTwoPercentOfThe3dRuns) {
@@ -46,7 +46,7 @@ TEST(AxisymmetricTaylorAnvil, WithinTwoPercentOfThe3dRuns) {
   }
 }
 
-// Issue 16: Love & Sulsky's copper bar, axisymmetric, h = 0.4 mm (8 cells across the radius), 2 x 2 particles per
+// Love & Sulsky's copper bar, axisymmetric, h = 0.4 mm (8 cells across the radius), 2 x 2 particles per
 // cell: final length and impact-face radius within 2% of the converged FE results (L_f 21.42-21.48 mm, R_f
 // 7.12-7.22 mm; the midpoints 21.45 and 7.17 are the references). Measured: MUSL with hencky_j2 L 21.46 R 7.11,
 // with j2_plasticity L 21.44 R 7.12; USF with j2_plasticity L 21.47 R 7.13.

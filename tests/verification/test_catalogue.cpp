@@ -8,7 +8,7 @@
 #include <set>
 
 #include "catalogue.hpp"
-#include "mpm/scheme.hpp"
+#include "mpm/schemes/scheme.hpp"
 
 namespace mpm::verification {
 namespace {

@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm {
 namespace {

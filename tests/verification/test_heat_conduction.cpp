@@ -16,7 +16,7 @@
 #include "heat_conduction.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 #include "mpm/shape/shape_functions.hpp"
 
 namespace mpm::verification {

@@ -16,7 +16,7 @@
 
 #include "mpm/app/modules.hpp"
 #include "mpm/app/verify_command.hpp"
-#include "mpm/solution_verification.hpp"
+#include "mpm/app/solution_verification.hpp"
 #ifdef MPM_WITH_THERMAL
 #include "heat_conduction.hpp"
 #endif

@@ -9,9 +9,9 @@
 #include <mutex>
 
 #include "kinds.hpp"
-#include "mpm/io/yaml_reader.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scheme.hpp"
+#include "mpm/scene/yaml_reader.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/schemes/scheme.hpp"
 
 namespace mpm {
 namespace {

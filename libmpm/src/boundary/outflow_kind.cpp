@@ -6,7 +6,7 @@
 
 #include "kinds.hpp"
 #include "mpm/boundary/face.hpp"
-#include "mpm/io/yaml_reader.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm::boundary {
 namespace {

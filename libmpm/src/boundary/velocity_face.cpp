@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
-#include "mpm/axisymmetric.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/boundary/face.hpp"
-#include "mpm/expression.hpp"
+#include "mpm/core/expression.hpp"
 
 namespace mpm {
 

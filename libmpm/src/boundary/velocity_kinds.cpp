@@ -7,8 +7,8 @@
 #include "kinds.hpp"
 #include "mpm/boundary/face.hpp"
 #include "mpm/boundary/velocity_face.hpp"
-#include "mpm/expression.hpp"
-#include "mpm/io/yaml_reader.hpp"
+#include "mpm/core/expression.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm::boundary {
 namespace {

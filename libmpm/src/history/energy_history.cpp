@@ -5,7 +5,7 @@
 #include <array>
 
 #include "history_support.hpp"
-#include "mpm/exact_sum.hpp"
+#include "mpm/core/exact_sum.hpp"
 
 namespace mpm::history {
 namespace {

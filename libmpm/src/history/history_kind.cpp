@@ -6,7 +6,7 @@
 #include <mutex>
 
 #include "history_support.hpp"
-#include "mpm/output_fields.hpp"
+#include "mpm/output/output_fields.hpp"
 
 namespace mpm {
 namespace {

@@ -4,7 +4,7 @@
 #include <optional>
 #include <span>
 
-#include "mpm/due_time.hpp"
+#include "mpm/core/due_time.hpp"
 
 namespace mpm {
 

@@ -9,8 +9,8 @@
 #include <limits>
 
 #include "history_support.hpp"
-#include "mpm/axisymmetric.hpp"
-#include "mpm/exact_sum.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
+#include "mpm/core/exact_sum.hpp"
 
 namespace mpm::history {
 namespace {

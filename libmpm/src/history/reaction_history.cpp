@@ -10,8 +10,8 @@
 
 #include "history_support.hpp"
 #include "mpm/boundary/face_condition_kind.hpp"
-#include "mpm/exact_sum.hpp"
-#include "mpm/reaction_provider.hpp"
+#include "mpm/core/exact_sum.hpp"
+#include "mpm/simulation/reaction_provider.hpp"
 
 namespace mpm::history {
 namespace {

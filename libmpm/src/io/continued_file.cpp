@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "mpm/io/atomic_file.hpp"
-#include "mpm/state_archive.hpp"
+#include "mpm/core/state_archive.hpp"
 
 namespace mpm::io {
 namespace fs = std::filesystem;

@@ -1,6 +1,6 @@
 #include "elastic_models.hpp"
 
-#include "mpm/material_batch.hpp"
+#include "mpm/materials/material_batch.hpp"
 #include "mpm/materials/linear_elastic.hpp"
 #include "mpm/materials/neo_hookean.hpp"
 

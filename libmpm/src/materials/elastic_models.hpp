@@ -2,7 +2,7 @@
 // The core's material models, registered like a module's (material_registry.cpp registers them first).
 #include <vector>
 
-#include "mpm/material_registry.hpp"
+#include "mpm/materials/material_registry.hpp"
 
 namespace mpm {
 

@@ -4,9 +4,9 @@
 
 #include <chrono>
 
-#include "mpm/energy_sentinel.hpp"
+#include "mpm/diagnostics/energy_sentinel.hpp"
 #include "mpm/history/history_kind.hpp"
-#include "mpm/step_profile.hpp"
+#include "mpm/simulation/step_profile.hpp"
 
 namespace mpm {
 namespace {

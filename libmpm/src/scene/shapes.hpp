@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "mpm/io/yaml_reader.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/scene/yaml_reader.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::sections {
 

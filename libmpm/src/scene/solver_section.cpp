@@ -2,8 +2,8 @@
 // transfer, CPDI domain update, time step, the intervals of the guard and the sorting, and the energy sentinel.
 #include <fmt/format.h>
 
-#include "mpm/scheme.hpp"
-#include "mpm/scheme_registry.hpp"
+#include "mpm/schemes/scheme.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 #include "sections.hpp"
 
 namespace mpm::sections {

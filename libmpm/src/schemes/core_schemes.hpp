@@ -3,7 +3,7 @@
 // (scheme_registry.cpp).
 #include <vector>
 
-#include "mpm/scheme_registry.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 
 namespace mpm {
 

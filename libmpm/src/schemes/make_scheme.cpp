@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "make_scheme_for.hpp"
-#include "mpm/scheme_registry.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 #include "mpm/shape/shape_functions.hpp"
 
 namespace mpm {

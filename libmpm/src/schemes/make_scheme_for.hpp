@@ -7,8 +7,11 @@
 #include <memory>
 #include <string>
 
-#include "mpm/scene.hpp"
-#include "mpm/scheme.hpp"
+#include "mpm/schemes/scheme.hpp"
+
+namespace mpm {
+struct SceneDescription;
+}  // namespace mpm
 
 namespace mpm::detail {
 

@@ -1,7 +1,7 @@
 // The shape-function table (names, grid requirements and traits for the scene loader and the modules), derived
 // from ShapeFunctions.
 
-#include "mpm/scheme.hpp"
+#include "mpm/schemes/scheme.hpp"
 #include "mpm/shape/shape_functions.hpp"
 
 namespace mpm {

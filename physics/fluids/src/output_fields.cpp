@@ -1,7 +1,7 @@
 #include "mpm/fluids/output_fields.hpp"
 
 #include "mpm/fluids/field_keys.hpp"
-#include "mpm/output_fields.hpp"
+#include "mpm/output/output_fields.hpp"
 
 namespace mpm::fluids {
 

@@ -6,8 +6,8 @@
 #include "mpm/fluids/ideal_gas.hpp"
 #include "mpm/fluids/output_fields.hpp"
 #include "mpm/fluids/tait_fluid.hpp"
-#include "mpm/material_batch.hpp"
-#include "mpm/material_registry.hpp"
+#include "mpm/materials/material_batch.hpp"
+#include "mpm/materials/material_registry.hpp"
 
 namespace mpm::fluids {
 namespace {

@@ -1,14 +1,14 @@
 // `solver.scheme: implicit` (docs/scene-reference.md, solver.implicit): the options of the Newton-Krylov solve
-// and the refusals of issue 17, each at its key (file:line:column, exit 2).
+// and what the implicit scheme refuses, each at its key (file:line:column, exit 2).
 #include "implicit_section.hpp"
 
 #include <fmt/format.h>
 
 #include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/implicit/implicit_options.hpp"
-#include "mpm/material_registry.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scheme.hpp"
+#include "mpm/materials/material_registry.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/schemes/scheme.hpp"
 
 namespace mpm::implicit {
 namespace {

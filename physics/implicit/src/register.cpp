@@ -4,7 +4,7 @@
 
 #include "implicit_section.hpp"
 #include "mpm/implicit/implicit_scheme.hpp"
-#include "mpm/scheme_registry.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 
 namespace mpm::implicit {
 namespace {

@@ -1,6 +1,6 @@
 #include "hencky_j2_registration.hpp"
 
-#include "mpm/material_registry.hpp"
+#include "mpm/materials/material_registry.hpp"
 #include "mpm/plasticity/hencky_j2_batch.hpp"
 
 namespace mpm::plasticity::detail {

@@ -2,8 +2,8 @@
 // Registration of the material model hencky_j2 (hencky_j2_registration.cpp), called once by register_module().
 #include <memory>
 
-#include "mpm/material.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/materials/material.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::plasticity::detail {
 

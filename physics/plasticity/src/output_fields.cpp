@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "mpm/field_keys.hpp"
-#include "mpm/output_fields.hpp"
+#include "mpm/particles/field_keys.hpp"
+#include "mpm/output/output_fields.hpp"
 
 namespace mpm::plasticity {
 

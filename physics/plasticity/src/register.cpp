@@ -6,7 +6,7 @@
 
 #include <mutex>
 
-#include "mpm/material_registry.hpp"
+#include "mpm/materials/material_registry.hpp"
 #include "mpm/plasticity/output_fields.hpp"
 
 namespace mpm::plasticity {

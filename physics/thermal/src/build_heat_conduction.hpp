@@ -6,10 +6,10 @@
 #include <any>
 #include <cmath>
 
-#include "mpm/expression.hpp"
-#include "mpm/material_registry.hpp"
-#include "mpm/scene_error.hpp"
-#include "mpm/scheme_registry.hpp"
+#include "mpm/core/expression.hpp"
+#include "mpm/materials/material_registry.hpp"
+#include "mpm/scene/scene_error.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 #include "mpm/shape/shape_functions.hpp"
 #include "mpm/thermal/heat_conduction.hpp"
 #include "mpm/thermal/thermal_description.hpp"

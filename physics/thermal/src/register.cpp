@@ -2,8 +2,8 @@
 
 #include <mutex>
 
-#include "mpm/material_registry.hpp"
-#include "mpm/scene_extension.hpp"
+#include "mpm/materials/material_registry.hpp"
+#include "mpm/scene/scene_extension.hpp"
 #include "mpm/thermal/output_fields.hpp"
 #include "thermal_section.hpp"
 

@@ -1,6 +1,6 @@
 #include "thermal_section.hpp"
 
-#include "mpm/io/spec_map.hpp"
+#include "mpm/scene/spec_map.hpp"
 #include "mpm/thermal/thermal_description.hpp"
 
 namespace mpm::thermal {

@@ -3,9 +3,9 @@
 #include <any>
 #include <vector>
 
-#include "mpm/io/key_spec.hpp"
-#include "mpm/io/yaml_reader.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/scene/key_spec.hpp"
+#include "mpm/scene/yaml_reader.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::thermal {
 

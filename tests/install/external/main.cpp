@@ -4,7 +4,7 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/io/number_format.hpp"
-#include "mpm/scene_loader.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) return 2;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/scene.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::app {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "mpm/grid.hpp"
-#include "mpm/memory_budget.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/app/memory_budget.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::app {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/scene_error.hpp"
+#include "mpm/scene/scene_error.hpp"
 
 namespace mpm::app {
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file parallel_launch.hpp
 /// A start as one of several processes of a parallel launcher (mpirun, mpiexec, srun). A build with MPI runs
-/// `mpm run` distributed over them (issue 18); a build without would run N copies of the whole scene that overwrite
+/// `mpm run` distributed over them; a build without would run N copies of the whole scene that overwrite
 /// each other's output, so it refuses such a start (exit 2) before reading anything; the first process says why.
 
 #include <functional>

@@ -1,6 +1,6 @@
 #pragma once
 /// \file rank_report.hpp
-/// `mpm check SCENE --ranks N`: what a distributed run of the scene on N ranks would hold (issue 18): the tiles of
+/// `mpm check SCENE --ranks N`: what a distributed run of the scene on N ranks would hold: the tiles of
 /// the scatter, each rank's box of them as `mpirun` deals them (bisect_tiles, tile_halo.hpp, docs/distributed.md
 /// §5.1), its particles, cost and messages, the largest rank count that gives every rank particles, and the halo
 /// bytes per step (every rank's HaloPlan, the count the MPI tests check against the bytes sent).
@@ -9,8 +9,8 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "mpm/scene.hpp"
-#include "mpm/simulation.hpp"
+#include "mpm/scene/scene.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm::app {
 

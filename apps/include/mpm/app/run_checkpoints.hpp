@@ -17,8 +17,8 @@
 
 #include "mpm/app/scene_diff.hpp"
 #include "mpm/run/checkpoint_sink.hpp"
-#include "mpm/scene.hpp"
-#include "mpm/state_archive.hpp"
+#include "mpm/scene/scene.hpp"
+#include "mpm/core/state_archive.hpp"
 
 namespace mpm::app {
 

@@ -9,7 +9,7 @@
 
 #include "mpm/io/view_script.hpp"
 #include "mpm/io/vtk_writer.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::app {
 

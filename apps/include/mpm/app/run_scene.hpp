@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "mpm/app/stop_signals.hpp"
-#include "mpm/communicator.hpp"
-#include "mpm/scene.hpp"
-#include "mpm/step_profile.hpp"
+#include "mpm/parallel/communicator.hpp"
+#include "mpm/scene/scene.hpp"
+#include "mpm/simulation/step_profile.hpp"
 
 namespace mpm {
 template <int Dim>

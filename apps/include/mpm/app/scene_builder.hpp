@@ -6,8 +6,8 @@
 #include <memory>
 #include <vector>
 
-#include "mpm/scene.hpp"
-#include "mpm/simulation.hpp"
+#include "mpm/scene/scene.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm::app {
 

@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "mpm/scene.hpp"
-#include "mpm/simulation.hpp"
+#include "mpm/scene/scene.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm::app {
 

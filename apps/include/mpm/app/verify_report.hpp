@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/solution_verification.hpp"
+#include "mpm/app/solution_verification.hpp"
 
 namespace mpm::app {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/state_archive.hpp"
+#include "mpm/core/state_archive.hpp"
 
 namespace mpm::checkpoint {
 

@@ -2,7 +2,7 @@
 /// \file multi_velocity_contact.hpp
 /// Bardenhagen's multi-velocity-field contact (review §5.1, Alg. 6; Bardenhagen et al. 2000), rigid
 /// bodies (§4.2.4, Alg. 4) and rigid planes, as a module of the step (module.hpp):
-///  - every body gets its own nodal arrays (Body::own_grid), filled by the schemes' own P2G, so that a
+///  - every body gets its own nodal arrays (Body::separate_grid), filled by the schemes' own P2G, so that a
 ///    scene without contact runs the unchanged single-field path;
 ///  - after P2G: the contact candidates (nodes with mass of two bodies, or behind a rigid plane), the
 ///    bodies' normals there (eq. 5.12 or 5.9-5.11) and, with onset `particle_gap`, the particle gap;
@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "mpm/boundary/grid_boundary.hpp"
-#include "mpm/exact_sum.hpp"
-#include "mpm/expression.hpp"
-#include "mpm/interface_conductance.hpp"
-#include "mpm/module.hpp"
-#include "mpm/reaction_provider.hpp"
+#include "mpm/core/exact_sum.hpp"
+#include "mpm/core/expression.hpp"
+#include "mpm/simulation/interface_conductance.hpp"
+#include "mpm/simulation/module.hpp"
+#include "mpm/simulation/reaction_provider.hpp"
 
 namespace mpm::contact {
 
@@ -202,7 +202,7 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   std::vector<Body<Dim>>& bodies_;
   ContactSettings<Dim> settings_;
   int body_count_ = 0;
-  std::vector<Grid<Dim>> body_grids_;  ///< one per body (Body::own_grid points here)
+  std::vector<Grid<Dim>> body_grids_;  ///< one per body (Body::separate_grid points here)
   std::vector<int> rigid_of_;          ///< per body: index into settings_.rigid_bodies, or -1
   /// per body: its own face conditions (settings_.body_faces), or null: the scene's (StepContext::boundary)
   std::vector<std::shared_ptr<const GridBoundary<Dim>>> body_boundary_;

@@ -7,7 +7,7 @@
 
 #include <string_view>
 
-#include "mpm/material.hpp"
+#include "mpm/materials/material.hpp"
 
 namespace mpm::contact {
 

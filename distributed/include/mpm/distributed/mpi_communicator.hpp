@@ -1,11 +1,11 @@
 #pragma once
 /// \file mpi_communicator.hpp
-/// The Communicator of a distributed run over MPI (MPM_WITH_MPI; issue 18, docs/distributed.md §3). Only this
+/// The Communicator of a distributed run over MPI (MPM_WITH_MPI, docs/distributed.md §3). Only this
 /// library includes mpi.h: the engine and the physics modules call the Communicator interface.
 
 #include <mpi.h>
 
-#include "mpm/communicator.hpp"
+#include "mpm/parallel/communicator.hpp"
 
 namespace mpm::distributed {
 

@@ -10,7 +10,7 @@
 #include <cstddef>
 
 #include "mpm/geometry/region.hpp"
-#include "mpm/grid.hpp"
+#include "mpm/grid/grid.hpp"
 
 namespace mpm::geometry {
 

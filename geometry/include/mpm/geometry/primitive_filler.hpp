@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "mpm/geometry/region.hpp"
-#include "mpm/grid.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::geometry {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "mpm/grid.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::geometry {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "mpm/boundary/face_names.hpp"
-#include "mpm/grid.hpp"
+#include "mpm/grid/grid.hpp"
 
 namespace mpm {
 

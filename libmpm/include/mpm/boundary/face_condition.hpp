@@ -9,9 +9,9 @@
 #include <functional>
 #include <optional>
 
-#include "mpm/exact_sum.hpp"
-#include "mpm/grid.hpp"
-#include "mpm/node_runs.hpp"
+#include "mpm/core/exact_sum.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/grid/node_runs.hpp"
 
 namespace mpm {
 

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "mpm/boundary/grid_boundary.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm {
 

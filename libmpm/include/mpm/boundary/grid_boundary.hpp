@@ -17,7 +17,7 @@
 
 #include "mpm/boundary/face_condition.hpp"
 #include "mpm/boundary/outflow_books.hpp"
-#include "mpm/module.hpp"
+#include "mpm/simulation/module.hpp"
 
 namespace mpm {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "mpm/boundary/face.hpp"
-#include "mpm/energy.hpp"
+#include "mpm/simulation/energy.hpp"
 
 namespace mpm {
 

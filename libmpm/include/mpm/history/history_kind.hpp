@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "mpm/history/history.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm {
 

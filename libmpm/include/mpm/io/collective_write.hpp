@@ -1,12 +1,12 @@
 #pragma once
 /// \file collective_write.hpp
-/// A write that succeeds on every rank of a distributed run or fails on every rank: the output of issue 18 §4
+/// A write that succeeds on every rank of a distributed run or fails on every rank: the output of docs/distributed.md §4
 /// (an unwritable directory on any rank: every rank stops with status 1, within the frame).
 
 #include <functional>
 #include <string>
 
-#include "mpm/communicator.hpp"
+#include "mpm/parallel/communicator.hpp"
 
 namespace mpm::io {
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm {
 

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/material.hpp"
+#include "mpm/materials/material.hpp"
 #include "mpm/materials/elastic_constants.hpp"
 
 namespace mpm {

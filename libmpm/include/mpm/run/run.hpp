@@ -25,18 +25,18 @@
 #include <string>
 #include <vector>
 
-#include "mpm/communicator.hpp"
+#include "mpm/parallel/communicator.hpp"
 #include "mpm/history/history_writer.hpp"
 #include "mpm/io/csv_log.hpp"
 #include "mpm/io/view_script.hpp"
 #include "mpm/io/vtk_writer.hpp"
-#include "mpm/output_writer.hpp"
+#include "mpm/output/output_writer.hpp"
 #include "mpm/run/checkpoint_sink.hpp"
 #include "mpm/run/run_log.hpp"
 #include "mpm/run/run_observer.hpp"
 #include "mpm/run/run_record.hpp"
-#include "mpm/scene.hpp"
-#include "mpm/simulation.hpp"
+#include "mpm/scene/scene.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm {
 

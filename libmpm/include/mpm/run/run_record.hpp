@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "mpm/state_archive.hpp"
-#include "mpm/types.hpp"
+#include "mpm/core/state_archive.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm {
 

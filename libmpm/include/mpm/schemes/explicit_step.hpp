@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "mpm/field_keys.hpp"
+#include "mpm/particles/field_keys.hpp"
 #include "mpm/schemes/transfer_kernels.hpp"
 
 namespace mpm::kernels {

@@ -6,7 +6,7 @@
 /// The particle-velocity update and the second mapping are fused into one pass over the particles.
 /// Axisymmetric (Coords): L_tt = sum T_I v_rI^{t+dt} of the re-mapped velocity, like L (axisymmetric.hpp).
 
-#include "mpm/scheme.hpp"
+#include "mpm/schemes/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
 
 namespace mpm {
@@ -23,7 +23,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
       PhaseTimer timer(ctx.profile, StepPhase::p2g);  // the second mapping (with the particle velocity update)
       clear_momentum(ctx.grid, ctx.active_nodes);
       for (auto& body : ctx.bodies)
-        if (body.own_grid) clear_momentum(*body.own_grid, ctx.active_nodes);
+        if (body.separate_grid) clear_momentum(*body.separate_grid, ctx.active_nodes);
       for (auto& body : ctx.bodies) update_velocity_and_remap(body, ctx);
     }
     {

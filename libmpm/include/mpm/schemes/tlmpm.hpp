@@ -22,8 +22,8 @@
 
 #include <array>
 
-#include "mpm/field_keys.hpp"
-#include "mpm/scheme.hpp"
+#include "mpm/particles/field_keys.hpp"
+#include "mpm/schemes/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
 #include "mpm/shape/factored_stencil.hpp"
 

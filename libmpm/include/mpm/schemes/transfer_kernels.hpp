@@ -13,13 +13,13 @@
 #include <type_traits>
 #include <utility>
 
-#include "mpm/active_tiles.hpp"
-#include "mpm/axisymmetric.hpp"
+#include "mpm/grid/active_tiles.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/boundary/grid_boundary.hpp"
-#include "mpm/field_keys.hpp"
+#include "mpm/particles/field_keys.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/stencil.hpp"
-#include "mpm/step_context.hpp"
+#include "mpm/simulation/step_context.hpp"
 
 namespace mpm::kernels {
 
@@ -34,18 +34,18 @@ void reset_grid(Grid<Dim>& grid, NodeRuns nodes = {}) {
 /// The nodal arrays a body's transfers use: its own (multi-velocity contact) or the shared grid.
 template <int Dim>
 inline Grid<Dim>& grid_of(Body<Dim>& body, Grid<Dim>& shared) {
-  return body.own_grid ? *body.own_grid : shared;
+  return body.separate_grid ? *body.separate_grid : shared;
 }
 template <int Dim>
 inline const Grid<Dim>& grid_of(const Body<Dim>& body, const Grid<Dim>& shared) {
-  return body.own_grid ? *body.own_grid : shared;
+  return body.separate_grid ? *body.separate_grid : shared;
 }
 
 /// Zeroes the bodies' own nodal arrays (contact), when they have any.
 template <int Dim>
 void reset_own_grids(std::vector<Body<Dim>>& bodies, NodeRuns nodes = {}) {
   for (auto& body : bodies)
-    if (body.own_grid) reset_grid(*body.own_grid, nodes);
+    if (body.separate_grid) reset_grid(*body.separate_grid, nodes);
 }
 
 /// Bins every body's particles by tile (a particle outside the grid trips the guard) and, in one process with
@@ -72,7 +72,7 @@ void bin_bodies(StepContext<Dim>& ctx) {
   for (const auto& [first, end] : ctx.active_tiles->left()) {
     ctx.grid.release_nodes(first, end);
     for (auto& body : ctx.bodies)
-      if (body.own_grid) body.own_grid->release_nodes(first, end);
+      if (body.separate_grid) body.separate_grid->release_nodes(first, end);
   }
 }
 

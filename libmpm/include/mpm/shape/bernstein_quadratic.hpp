@@ -24,7 +24,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm {
 

@@ -18,7 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/field_keys.hpp"
+#include "mpm/particles/field_keys.hpp"
 #include "mpm/shape/cpdi_elements.hpp"
 #include "mpm/shape/stencil.hpp"
 

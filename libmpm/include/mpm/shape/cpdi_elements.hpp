@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-#include "mpm/grid.hpp"
+#include "mpm/grid/grid.hpp"
 
 namespace mpm {
 

@@ -15,8 +15,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/field_keys.hpp"
-#include "mpm/particle_set.hpp"
+#include "mpm/particles/field_keys.hpp"
+#include "mpm/particles/particle_set.hpp"
 
 namespace mpm {
 

@@ -27,7 +27,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm {
 

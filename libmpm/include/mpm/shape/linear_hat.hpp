@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm {
 

@@ -36,7 +36,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm {
 

@@ -4,7 +4,7 @@
 /// support (review eq. 3.17). `Shape` supplies the 1D functions; this file is the only place that
 /// combines axes, so a new shape function is one new header with an `evaluate` like LinearHat's.
 
-#include "mpm/particle_set.hpp"
+#include "mpm/particles/particle_set.hpp"
 
 namespace mpm {
 

@@ -5,8 +5,8 @@
 
 #include <memory>
 
-#include "mpm/material.hpp"
-#include "mpm/scene.hpp"
+#include "mpm/materials/material.hpp"
+#include "mpm/scene/scene.hpp"
 
 namespace mpm::fluids {
 

@@ -13,7 +13,7 @@
 
 #include <fmt/format.h>
 
-#include "mpm/material.hpp"
+#include "mpm/materials/material.hpp"
 
 namespace mpm::fluids {
 

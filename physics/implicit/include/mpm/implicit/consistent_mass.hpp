@@ -11,7 +11,7 @@
 #include <cmath>
 #include <vector>
 
-#include "mpm/grid.hpp"
+#include "mpm/grid/grid.hpp"
 #include "mpm/implicit/free_dofs.hpp"
 
 namespace mpm::implicit {

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "mpm/grid.hpp"
+#include "mpm/grid/grid.hpp"
 
 namespace mpm::implicit {
 

@@ -6,8 +6,8 @@
 #include <string_view>
 #include <utility>
 
-#include "mpm/enum_names.hpp"
-#include "mpm/types.hpp"
+#include "mpm/core/enum_names.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::implicit {
 

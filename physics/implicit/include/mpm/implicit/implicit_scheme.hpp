@@ -30,8 +30,8 @@
 #include "mpm/implicit/newton_krylov.hpp"
 #include "mpm/implicit/solver_log.hpp"
 #include "mpm/implicit/step_points.hpp"
-#include "mpm/scheme.hpp"
-#include "mpm/stability_error.hpp"
+#include "mpm/schemes/scheme.hpp"
+#include "mpm/core/stability_error.hpp"
 
 namespace mpm::implicit {
 

@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::implicit {
 

@@ -2,7 +2,7 @@
 /// \file solver_log.hpp
 /// One row of solver.csv: what a step's solves took.
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::implicit {
 

@@ -9,8 +9,8 @@
 #include <array>
 #include <vector>
 
-#include "mpm/axisymmetric.hpp"
-#include "mpm/body.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
+#include "mpm/particles/body.hpp"
 #include "mpm/plasticity/discrete_gradient.hpp"
 #include "mpm/plasticity/field_keys.hpp"
 #include "mpm/plasticity/hencky_j2_batch.hpp"

@@ -18,7 +18,7 @@
 #include <cmath>
 #include <limits>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::plasticity {
 

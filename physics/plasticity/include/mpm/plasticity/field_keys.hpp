@@ -2,7 +2,7 @@
 /// \file field_keys.hpp
 /// The particle fields of the plasticity module (the shared `temperature` is in mpm/field_keys.hpp).
 
-#include "mpm/field_key.hpp"
+#include "mpm/particles/field_key.hpp"
 #include "mpm/plasticity/elastoplastic.hpp"
 #include "mpm/plasticity/hencky_j2.hpp"
 

@@ -23,7 +23,7 @@
 #include <numbers>
 
 #include "mpm/plasticity/symmetric_eigen.hpp"
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::plasticity {
 

@@ -16,7 +16,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::plasticity {
 

@@ -17,7 +17,7 @@
 
 #include <cmath>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::plasticity {
 

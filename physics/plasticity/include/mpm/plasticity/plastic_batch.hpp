@@ -11,9 +11,9 @@
 #include <string>
 #include <utility>
 
-#include "mpm/axisymmetric.hpp"
-#include "mpm/field_keys.hpp"
-#include "mpm/material.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
+#include "mpm/particles/field_keys.hpp"
+#include "mpm/materials/material.hpp"
 #include "mpm/plasticity/elastoplastic.hpp"
 #include "mpm/plasticity/field_keys.hpp"
 #include "mpm/plasticity/output_fields.hpp"

@@ -13,7 +13,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::plasticity {
 

@@ -2,7 +2,7 @@
 /// \file thermal_body.hpp
 /// The thermal constants of one body, from its material's parameters (docs/scene-reference.md).
 
-#include "mpm/types.hpp"
+#include "mpm/core/types.hpp"
 
 namespace mpm::thermal {
 

@@ -1,0 +1,177 @@
+#pragma once
+/// \file scene.hpp
+/// Plain-data description of a simulation as read from a YAML scene file (see docs/scene-reference.md).
+/// The loader (scene_loader.hpp) fills it and validates every value; build_simulation() turns it into
+/// a running Simulation. Nothing here allocates particle or grid storage.
+
+#include <any>
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mpm/boundary/face_names.hpp"
+#include "mpm/core/coordinates.hpp"
+#include "mpm/simulation/solver_options.hpp"
+
+namespace mpm {
+
+/// Where a value came from in the scene file (1-based line and column; 0 when unknown).
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+/// A face's condition as the scene gives it (`grid.boundary.FACE`): the name of its kind (the registry of
+/// boundary/face_condition_kind.hpp, whose entry gives its traits and makes its grid condition) and what the
+/// kind's parser read.
+struct FaceDescription {
+  std::string kind = "free";  ///< no condition: a particle that leaves the grid stops the run
+  std::any spec;
+  SourceLocation where;
+};
+
+struct GridDescription {
+  std::array<double, 3> origin{0, 0, 0};     ///< m, lower corner
+  std::array<double, 3> extent{0, 0, 0};     ///< m, box lengths
+  std::array<double, 3> cell_size{0, 0, 0};  ///< m, per axis
+  std::array<int, 3> cells{1, 1, 1};         ///< derived: extent / cell_size (checked to divide evenly)
+  /// `grid.coordinates`: axisymmetric only in 2D, with origin x = 0 and the face x_min the axis (slip, set by
+  /// the loader).
+  Coordinates coordinates = Coordinates::cartesian;
+  /// Faces in the order of face_names.
+  std::array<FaceDescription, 6> boundary;
+
+  /// The scene's names of the box faces (`grid.boundary`, `thermal.boundary`), in the order of `boundary`.
+  static constexpr std::array<const char*, 6> face_names = mpm::face_names;
+};
+
+/// A named material: its model key (a registry name such as "linear_elastic") and its parameters, in SI
+/// units, already checked against the model's parameter specification.
+struct MaterialDescription {
+  std::string name;
+  std::string model;
+  std::map<std::string, double> parameters;
+  SourceLocation where;
+};
+
+/// The shape a body is filled from (docs/scene-reference.md, bodies[].shape): a primitive, a polygon, a CAD
+/// mesh, an image, or the union / intersection / difference of shapes (filled by geometry/).
+struct ShapeDescription {
+  /// "box", "disk" (2D), "sphere" (3D), "cylinder" (3D), "polygon" (2D), "mesh", "image", "particles" (a
+  /// particle file), "union", "intersection", "difference"
+  std::string type;
+  std::array<double, 3> min{0, 0, 0}, max{0, 0, 0};  ///< box corners, m
+  std::array<double, 3> center{0, 0, 0};             ///< disk/sphere centre, cylinder base centre, m
+  double radius = 0;                                 ///< m
+  int axis = 2;                                      ///< cylinder axis (0 = x, 1 = y, 2 = z; -1 = oblique)
+  double length = 0;                                 ///< cylinder length along its axis, m
+  std::array<double, 3> direction{0, 0, 1};          ///< cylinder axis as a unit vector (any direction)
+  std::vector<std::array<double, 2>> vertices;       ///< polygon corners, m (either orientation)
+  std::vector<ShapeDescription> parts;  ///< union/intersection/difference operands (difference: first minus the rest)
+  // CAD meshes and images
+  std::string file;                         ///< mesh, image or particle file (made relative to the working directory)
+  double scale = 1;                         ///< mesh: factor on the file's coordinates (1e-3 for mm), applied first
+  std::array<double, 3> rotation{0, 0, 0};  ///< mesh: rotation angles about x, then y, then z, degrees
+  std::array<double, 3> translation{0, 0, 0};         ///< mesh: added last, m
+  std::optional<double> section;                      ///< 2D scene: the mesh is cut by the plane z = section, m
+  std::array<double, 3> pixel_size{0, 0, 0};          ///< image: pixel/voxel size per axis, m (0: the .vti's spacing)
+  std::optional<std::array<double, 3>> image_origin;  ///< image: lower corner of the image, m
+  std::optional<double> threshold;                    ///< image: pixels with value >= threshold form the body
+  std::optional<double> label;                        ///< image: pixels with exactly this value form the body
+  bool pixel_particles = false;      ///< image: one particle per selected pixel instead of the grid lattice
+  std::optional<int> particle_body;  ///< particles: only the rows whose field `body` has this value
+  SourceLocation where;              ///< of the shape, for errors found while filling it
+};
+
+/// A body: a set of particles with one material.
+struct BodyDescription {
+  std::string name;
+  std::string material;  ///< key into SceneDescription::materials
+  ShapeDescription shape;
+  std::array<int, 3> particles_per_cell{2, 2, 2};  ///< per axis
+  /// Initial velocity per component: muparser expressions of x, y, z (constants are expressions too).
+  std::array<std::string, 3> velocity{"0", "0", "0"};
+  /// CPDI particle elements: "lattice" (every particle sub-cell split into elements) or "conforming" (a CGAL
+  /// triangle or tetrahedron mesh of the shape, cpdi_t3 / cpdi_tet4 only).
+  std::string domains = "lattice";
+  SourceLocation where;
+};
+
+struct SolverDescription {
+  /// The name of a registered scheme (scheme_registry.hpp: the core's musl, tlmpm, usf, usl, or a module's, e.g.
+  /// implicit); its traits say what it works with (scheme_of(solver).traits).
+  std::string scheme = "musl";
+  /// What that scheme's parser returned (its own `solver:` keys), empty when it has none.
+  std::any scheme_options;
+  std::string shape_function = "linear";  ///< a name of shape_function_names() (scheme.hpp)
+  VelocityTransfer velocity_transfer = VelocityTransfer::flip;
+  double flip_fraction = 1.0;  ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
+  /// CPDI shape functions only (empty otherwise): corners from F (eq. 3.27) or tracked (eq. 3.38)
+  std::optional<CpdiDomainUpdate> cpdi_domain_update;
+  std::optional<double> dt;                ///< s, fixed time step (exclusive with cfl)
+  std::optional<double> cfl;               ///< CFL factor of eq. 2.73, in (0, 1]
+  double end_time = 0;                     ///< s
+  double mass_cutoff = 1e-12;              ///< relative small-nodal-mass cut-off (x max nodal mass)
+  std::array<double, 3> gravity{0, 0, 0};  ///< m/s^2, body force per unit mass
+  int snapshot_interval = 20;              ///< steps between in-memory snapshots used by the stability guard
+  int sort_interval = 20;                  ///< steps between particle reorderings by cell
+  /// The energy sentinel's tolerance, a fraction of the largest energy of the run so far (energy_sentinel.hpp)
+  double energy_tolerance = 0.05;
+  EnergyDriftAction on_energy_drift = EnergyDriftAction::warn;
+  SourceLocation dt_where;
+
+  /// The scheme's scene name.
+  const std::string& scheme_name() const { return scheme; }
+};
+
+/// One entry of `output.histories` (docs/scene-reference.md#histories): a quantity written to its own CSV,
+/// one row per `interval`. `type` names a kind of the history registry (history/history_kind.hpp); `spec` is
+/// what that kind's parser returned.
+struct HistoryDescription {
+  std::string name;     ///< the CSV is NAME.csv in the output directory
+  std::string type;     ///< probe, reaction, energy, extent, ...
+  double interval = 0;  ///< s between rows (0: every output frame of `output.interval`, or only first and last)
+  std::any spec;
+  SourceLocation where;
+  std::string path;  ///< its key path for messages, e.g. "output.histories[2]"
+};
+
+/// `output.checkpoint`: when a run writes checkpoints (docs/scene-reference.md). Without it a run writes one
+/// only when a signal stops it.
+struct CheckpointDescription {
+  bool enabled = false;                 ///< the scene has the section
+  std::optional<double> interval;       ///< s of simulated time between checkpoints
+  std::optional<double> wall_interval;  ///< s of wall-clock time between checkpoints
+  int keep = 2;                         ///< newest checkpoints kept (older ones are removed)
+  std::string directory;                ///< empty: OUTPUT_DIRECTORY/checkpoints
+  SourceLocation where;
+};
+
+struct OutputDescription {
+  std::string directory = "output";
+  std::string prefix = "particles";
+  double interval = 0;  ///< s between output frames (0 = only first and last)
+  std::vector<std::string> fields{"velocity", "stress", "mass", "volume", "body"};
+  bool grid = false;                          ///< also write the grid (.vti) at each frame
+  std::vector<HistoryDescription> histories;  ///< probes, reactions, energies, extents (one CSV each)
+  CheckpointDescription checkpoint;
+  SourceLocation where;
+};
+
+struct SceneDescription {
+  std::string file;    ///< path of the scene file
+  std::string source;  ///< the file's YAML text as read (written into every output file's field data)
+  int dimension = 2;
+  GridDescription grid;
+  std::map<std::string, MaterialDescription> materials;
+  std::vector<BodyDescription> bodies;
+  SolverDescription solver;
+  OutputDescription output;
+  /// Sections of optional modules (scene_extension.hpp), by top-level key, as their parsers returned them.
+  std::map<std::string, std::any> extensions;
+};
+
+}  // namespace mpm

@@ -1,0 +1,27 @@
+#pragma once
+/// \file scene_keys.hpp
+/// The key specs (io/key_spec.hpp) of the scene's sections: what each section's reader accepts, with unit,
+/// range, default and description. The readers in src/scene/ read through them, `mpm reference` prints them,
+/// the tables of docs/scene-reference.md are generated from them (scene_reference.hpp) and `mpm run --restart`
+/// takes the keys a fork may change from them. A module's section declares its keys in its SceneExtension.
+
+#include <vector>
+
+#include "mpm/scene/key_spec.hpp"
+
+namespace mpm {
+
+/// `output:` (src/scene/output_section.cpp), with `checkpoint:` and the common keys of `histories:` entries.
+const std::vector<io::KeySpec>& output_keys();
+/// One entry of `output.histories` (src/scene/histories_section.cpp): the keys every history kind takes.
+const std::vector<io::KeySpec>& history_keys();
+/// One entry of `bodies:` (src/scene/bodies_section.cpp).
+const std::vector<io::KeySpec>& body_keys();
+/// One entry of `materials:` besides its model's parameters (src/scene/materials_section.cpp).
+const std::vector<io::KeySpec>& material_keys();
+
+/// The top level of a scene (src/scene_loader.cpp): the core's sections, then the registered modules' (sorted),
+/// each with the keys it declares (none for a section whose reader does not read through specs yet).
+std::vector<io::KeySpec> scene_keys();
+
+}  // namespace mpm
