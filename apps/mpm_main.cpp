@@ -29,9 +29,9 @@
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/verify_command.hpp"
 #include "mpm/checkpoint/checkpoint_file.hpp"
+#include "mpm/core/stability_error.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/scene_loader.hpp"
-#include "mpm/core/stability_error.hpp"
 #ifdef MPM_WITH_MPI
 #include "mpm/distributed/mpi_communicator.hpp"
 #endif

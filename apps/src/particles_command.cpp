@@ -10,6 +10,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "mpm/app/memory_budget.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
@@ -19,7 +20,6 @@
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/io/vtk_writer.hpp"
-#include "mpm/app/memory_budget.hpp"
 #include "mpm/output/particle_domain_mesh.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/scene_limits.hpp"

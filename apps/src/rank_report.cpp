@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "mpm/app/memory_budget.hpp"
-#include "mpm/schemes/scheme_registry.hpp"
 #include "mpm/parallel/tile_halo.hpp"
+#include "mpm/schemes/scheme_registry.hpp"
 
 namespace mpm::app {
 

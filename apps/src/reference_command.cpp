@@ -11,12 +11,12 @@
 #include <utility>
 #include <vector>
 
+#include "mpm/app/material_reference.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
+#include "mpm/app/scene_reference.hpp"
 #include "mpm/diagnostics/energy_hints.hpp"
 #include "mpm/io/atomic_file.hpp"
-#include "mpm/app/material_reference.hpp"
-#include "mpm/app/scene_reference.hpp"
 
 namespace mpm::app {
 namespace {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "mpm/app/memory_budget.hpp"
 #include "mpm/app/memory_estimate.hpp"
 #include "mpm/app/rank_report.hpp"
 #include "mpm/app/run_checkpoints.hpp"
@@ -20,7 +21,6 @@
 #include "mpm/app/stop_signals.hpp"
 #include "mpm/diagnostics/energy_sentinel.hpp"
 #include "mpm/history/history_kind.hpp"
-#include "mpm/app/memory_budget.hpp"
 #include "mpm/run/run.hpp"
 
 namespace mpm::app {

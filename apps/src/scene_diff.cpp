@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <optional>
 
-#include "mpm/scene/yaml_reader.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/scene_keys.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm::app {
 namespace {

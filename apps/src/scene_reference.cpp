@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "mpm/history/history_kind.hpp"
 #include "mpm/app/material_reference.hpp"
+#include "mpm/history/history_kind.hpp"
 #include "mpm/output/output_fields.hpp"
 #include "mpm/scene/scene_keys.hpp"
 

@@ -12,10 +12,10 @@
 
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/core/stability_error.hpp"
 #include "mpm/history/history_writer.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/scene_loader.hpp"
-#include "mpm/core/stability_error.hpp"
 
 namespace mpm::app {
 namespace {

@@ -12,9 +12,9 @@
 #include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/contact/multi_velocity_contact.hpp"
 #include "mpm/core/expression.hpp"
+#include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/spec_map.hpp"
 #include "mpm/scene/yaml_reader.hpp"
-#include "mpm/scene/scene_error.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
 
 namespace mpm::contact {

@@ -12,8 +12,8 @@
 #include <stdexcept>
 
 #include "mpm/contact/contact_law.hpp"
-#include "mpm/io/continued_file.hpp"
 #include "mpm/core/state_archive.hpp"
+#include "mpm/io/continued_file.hpp"
 #include "shape_passes.hpp"
 
 namespace mpm::contact {

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mpm/grid/tile_binning.hpp"
 #include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/shape/shape_functions.hpp"
 #include "mpm/shape/stencil.hpp"
-#include "mpm/grid/tile_binning.hpp"
 
 namespace mpm::contact {
 namespace {

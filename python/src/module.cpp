@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "mpm/app/modules.hpp"
+#include "mpm/core/stability_error.hpp"
 #include "mpm/output/output_fields.hpp"
 #include "mpm/scene/scene_error.hpp"
-#include "mpm/core/stability_error.hpp"
 #include "scene_binding.hpp"
 #include "simulation_handle.hpp"
 

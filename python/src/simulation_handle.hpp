@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "mpm/simulation/energy.hpp"
 #include "mpm/particles/field_storage.hpp"
 #include "mpm/scene/scene.hpp"
+#include "mpm/simulation/energy.hpp"
 
 namespace mpm::python {
 

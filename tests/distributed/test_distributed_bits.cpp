@@ -24,8 +24,8 @@
 
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/distributed/mpi_communicator.hpp"
 #include "mpm/diagnostics/energy_sentinel.hpp"
+#include "mpm/distributed/mpi_communicator.hpp"
 #include "mpm/scene/scene_loader.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
 

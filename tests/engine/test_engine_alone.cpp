@@ -33,8 +33,7 @@ std::unique_ptr<Simulation<2>> falling_block() {
   const Real spacing = 0.0125, volume = spacing * spacing;
   for (int i = 0; i < 16; ++i)
     for (int j = 0; j < 16; ++j)
-      block.particles.add(Vec<2>(0.4 + (i + 0.5) * spacing, 0.6 + (j + 0.5) * spacing), steel.density * volume,
-                          volume);
+      block.particles.add(Vec<2>(0.4 + (i + 0.5) * spacing, 0.6 + (j + 0.5) * spacing), steel.density * volume, volume);
   std::vector<Body<2>> bodies;
   bodies.push_back(std::move(block));
   SimulationSettings<2> settings;

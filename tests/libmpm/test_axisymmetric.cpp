@@ -1,6 +1,6 @@
-// The axisymmetric mode (libmpm/include/mpm/schemes/axisymmetric.hpp, docs/theory.md §14) against exact values: the ring
-// volumes and masses of a filled cylinder, the hoop kinematics of every scheme and axisymmetric shape function, the
-// r-weighted GIMP weights, the revolved face areas and the cylindrical names of the output.
+// The axisymmetric mode (libmpm/include/mpm/schemes/axisymmetric.hpp, docs/theory.md §14) against exact values: the
+// ring volumes and masses of a filled cylinder, the hoop kinematics of every scheme and axisymmetric shape function,
+// the r-weighted GIMP weights, the revolved face areas and the cylindrical names of the output.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/output/output_writer.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "scene_fixture.hpp"
 

@@ -7,12 +7,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "mpm/core/state_archive.hpp"
 #include "mpm/io/continued_file.hpp"
 #include "mpm/io/csv_log.hpp"
 #include "mpm/io/particle_file.hpp"
 #include "mpm/io/pvd_collection.hpp"
 #include "mpm/io/vtk_writer.hpp"
-#include "mpm/core/state_archive.hpp"
 
 namespace fs = std::filesystem;
 

@@ -18,10 +18,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "mpm/parallel/communicator.hpp"
 #include "mpm/io/collective_write.hpp"
 #include "mpm/io/pvtu_writer.hpp"
 #include "mpm/output/output_writer.hpp"
+#include "mpm/parallel/communicator.hpp"
 #include "scene_fixture.hpp"
 
 namespace mpm {

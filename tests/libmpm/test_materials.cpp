@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "mpm/materials/material_batch.hpp"
 #include "mpm/materials/linear_elastic.hpp"
+#include "mpm/materials/material_batch.hpp"
 #include "mpm/materials/neo_hookean.hpp"
 
 namespace mpm {

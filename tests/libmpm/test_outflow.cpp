@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "mpm/diagnostics/energy_sentinel.hpp"
 #include "mpm/core/exact_sum.hpp"
 #include "mpm/core/state_archive.hpp"
+#include "mpm/diagnostics/energy_sentinel.hpp"
 #include "scene_fixture.hpp"
 
 namespace mpm {

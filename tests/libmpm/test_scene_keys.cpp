@@ -13,12 +13,12 @@
 #include <vector>
 
 #include "mpm/app/modules.hpp"
-#include "mpm/scene/spec_map.hpp"
+#include "mpm/app/scene_reference.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/scene_extension.hpp"
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/scene_loader.hpp"
-#include "mpm/app/scene_reference.hpp"
+#include "mpm/scene/spec_map.hpp"
 #ifdef MPM_WITH_THERMAL
 #include "mpm/thermal/thermal_description.hpp"
 #endif

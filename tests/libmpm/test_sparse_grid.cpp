@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "mpm/grid/active_tiles.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/core/state_archive.hpp"
+#include "mpm/grid/active_tiles.hpp"
 #include "mpm/grid/reserved_pages.hpp"
 #include "mpm/scene/scene_loader.hpp"
-#include "mpm/core/state_archive.hpp"
 
 namespace {
 

@@ -11,12 +11,12 @@
 
 #include <tbb/global_control.h>
 
+#include "mpm/grid/tile_binning.hpp"
 #include "mpm/shape/cubic_bspline.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/quadratic_bspline.hpp"
 #include "mpm/shape/stencil.hpp"
-#include "mpm/grid/tile_binning.hpp"
 
 namespace mpm {
 namespace {

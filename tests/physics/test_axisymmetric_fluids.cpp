@@ -9,8 +9,8 @@
 #include <string>
 
 #include "../libmpm/scene_fixture.hpp"
-#include "mpm/particles/field_keys.hpp"
 #include "mpm/fluids/field_keys.hpp"
+#include "mpm/particles/field_keys.hpp"
 
 namespace mpm {
 namespace {

@@ -16,9 +16,9 @@
 #include "dam_break.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/fluids/tait_fluid.hpp"
+#include "mpm/grid/tile_binning.hpp"
 #include "mpm/materials/material_batch.hpp"
 #include "mpm/scene/scene_error.hpp"
-#include "mpm/grid/tile_binning.hpp"
 #include "sod.hpp"
 #include "sod_exact.hpp"
 

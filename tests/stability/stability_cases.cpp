@@ -14,9 +14,9 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/core/stability_error.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/scene_loader.hpp"
-#include "mpm/core/stability_error.hpp"
 
 namespace mpm::verification {
 namespace {

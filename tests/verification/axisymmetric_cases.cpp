@@ -10,8 +10,8 @@
 
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene/scene_loader.hpp"
 #include "mpm/core/stability_error.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm::verification {
 

@@ -12,9 +12,9 @@
 #include "mms.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/core/stability_error.hpp"
 #include "mpm/scene/scene_loader.hpp"
 #include "mpm/schemes/scheme.hpp"
-#include "mpm/core/stability_error.hpp"
 #include "tlmpm_paper.hpp"
 #include "vortex.hpp"
 #ifdef MPM_WITH_FLUIDS

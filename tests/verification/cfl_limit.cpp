@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene/scene_loader.hpp"
 #include "mpm/core/stability_error.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm::verification {
 namespace {

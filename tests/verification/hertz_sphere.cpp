@@ -11,8 +11,8 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/contact/multi_velocity_contact.hpp"
-#include "mpm/scene/scene_loader.hpp"
 #include "mpm/core/stability_error.hpp"
+#include "mpm/scene/scene_loader.hpp"
 
 namespace mpm::verification {
 namespace {

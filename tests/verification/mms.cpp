@@ -12,10 +12,10 @@
 
 #include "mpm/app/flight_recorder.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/core/stability_error.hpp"
 #include "mpm/output/output_writer.hpp"
 #include "mpm/scene/scene_loader.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
-#include "mpm/core/stability_error.hpp"
 #include "scene_number.hpp"
 
 namespace mpm {

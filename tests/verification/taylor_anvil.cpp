@@ -9,9 +9,9 @@
 
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/core/stability_error.hpp"
 #include "mpm/output/output_writer.hpp"
 #include "mpm/scene/scene_loader.hpp"
-#include "mpm/core/stability_error.hpp"
 
 namespace mpm {
 namespace {

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "mpm/app/modules.hpp"
-#include "mpm/app/verify_command.hpp"
 #include "mpm/app/solution_verification.hpp"
+#include "mpm/app/verify_command.hpp"
 #ifdef MPM_WITH_THERMAL
 #include "heat_conduction.hpp"
 #endif

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/scene/scene_loader.hpp"
 #include "mpm/core/stability_error.hpp"
+#include "mpm/scene/scene_loader.hpp"
 #include "scene_number.hpp"
 
 namespace mpm {

@@ -9,8 +9,8 @@
 #include <mutex>
 
 #include "kinds.hpp"
-#include "mpm/scene/yaml_reader.hpp"
 #include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 #include "mpm/schemes/scheme.hpp"
 
 namespace mpm {

@@ -7,8 +7,8 @@
 #include <cstdint>
 
 #include "mpm/boundary/grid_boundary.hpp"
-#include "mpm/simulation/energy_audit.hpp"
 #include "mpm/core/state_archive.hpp"
+#include "mpm/simulation/energy_audit.hpp"
 
 namespace mpm {
 

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/boundary/face.hpp"
 #include "mpm/core/expression.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm {
 

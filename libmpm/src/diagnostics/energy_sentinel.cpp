@@ -10,9 +10,9 @@
 #include <utility>
 
 #include "mpm/boundary/grid_boundary.hpp"
-#include "mpm/simulation/energy_audit.hpp"
-#include "mpm/particles/field_keys.hpp"
 #include "mpm/core/state_archive.hpp"
+#include "mpm/particles/field_keys.hpp"
+#include "mpm/simulation/energy_audit.hpp"
 
 namespace mpm {
 

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "mpm/history/history_kind.hpp"
-#include "mpm/scene/yaml_reader.hpp"
 #include "mpm/output/output_fields.hpp"
 #include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm::history {
 

@@ -9,8 +9,8 @@
 #include <limits>
 
 #include "history_support.hpp"
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/core/exact_sum.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm::history {
 namespace {

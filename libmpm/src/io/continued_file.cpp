@@ -5,8 +5,8 @@
 #include <system_error>
 #include <vector>
 
-#include "mpm/io/atomic_file.hpp"
 #include "mpm/core/state_archive.hpp"
+#include "mpm/io/atomic_file.hpp"
 
 namespace mpm::io {
 namespace fs = std::filesystem;

@@ -1,7 +1,7 @@
 #include "elastic_models.hpp"
 
-#include "mpm/materials/material_batch.hpp"
 #include "mpm/materials/linear_elastic.hpp"
+#include "mpm/materials/material_batch.hpp"
 #include "mpm/materials/neo_hookean.hpp"
 
 namespace mpm {

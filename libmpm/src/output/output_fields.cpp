@@ -9,8 +9,8 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/particles/field_keys.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm {
 namespace {

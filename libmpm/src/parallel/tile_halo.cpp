@@ -13,7 +13,6 @@
 
 namespace mpm {
 
-
 namespace {
 
 struct TileBox {

@@ -6,8 +6,8 @@
 #include <cctype>
 
 #include "mpm/history/history_kind.hpp"
-#include "mpm/scene/spec_map.hpp"
 #include "mpm/scene/scene_keys.hpp"
+#include "mpm/scene/spec_map.hpp"
 #include "sections.hpp"
 
 namespace mpm {

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "mpm/scene/spec_map.hpp"
 #include "mpm/materials/material_registry.hpp"
 #include "mpm/scene/scene_keys.hpp"
+#include "mpm/scene/spec_map.hpp"
 #include "sections.hpp"
 
 namespace mpm {

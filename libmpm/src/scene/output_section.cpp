@@ -1,9 +1,9 @@
 // `output:` (docs/scene-reference.md, output): where and how often the frames are written, and which fields.
 #include <fmt/format.h>
 
-#include "mpm/scene/spec_map.hpp"
 #include "mpm/output/output_writer.hpp"
 #include "mpm/scene/scene_keys.hpp"
+#include "mpm/scene/spec_map.hpp"
 #include "sections.hpp"
 
 namespace mpm {

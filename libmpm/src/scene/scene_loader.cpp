@@ -9,9 +9,9 @@
 #include <sstream>
 #include <system_error>
 
-#include "mpm/scene/spec_map.hpp"
 #include "mpm/scene/scene_extension.hpp"
 #include "mpm/scene/scene_keys.hpp"
+#include "mpm/scene/spec_map.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
 #include "scene/sections.hpp"
 

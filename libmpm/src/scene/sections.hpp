@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "mpm/scene/yaml_reader.hpp"
 #include "mpm/scene/scene.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm::sections {
 

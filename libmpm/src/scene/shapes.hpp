@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "mpm/scene/yaml_reader.hpp"
 #include "mpm/scene/scene.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm::sections {
 

@@ -7,8 +7,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "mpm/simulation/simulation.hpp"
 #include "mpm/grid/tile_binning.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm {
 

@@ -2,8 +2,8 @@
 // The scene side of the scheme `implicit`: its `solver.implicit:` keys and what it refuses.
 #include <any>
 
-#include "mpm/scene/yaml_reader.hpp"
 #include "mpm/scene/scene.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm::implicit {
 

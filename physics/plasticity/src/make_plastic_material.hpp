@@ -3,8 +3,8 @@
 // (make_plastic_material_{1,2,3}d.cpp, compiled in parallel).
 #include <memory>
 
-#include "mpm/materials/material_registry.hpp"
 #include "mpm/materials/elastic_constants.hpp"
+#include "mpm/materials/material_registry.hpp"
 #include "mpm/plasticity/plastic_batch.hpp"
 #include "mpm/plasticity/register.hpp"
 

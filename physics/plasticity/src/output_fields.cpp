@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "mpm/particles/field_keys.hpp"
 #include "mpm/output/output_fields.hpp"
+#include "mpm/particles/field_keys.hpp"
 
 namespace mpm::plasticity {
 

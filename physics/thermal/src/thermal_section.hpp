@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "mpm/scene/key_spec.hpp"
-#include "mpm/scene/yaml_reader.hpp"
 #include "mpm/scene/scene.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm::thermal {
 

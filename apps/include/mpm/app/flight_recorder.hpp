@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "mpm/core/stability_error.hpp"
 #include "mpm/diagnostics/energy_hints.hpp"
 #include "mpm/simulation/simulation.hpp"
-#include "mpm/core/stability_error.hpp"
 
 namespace mpm::app {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "mpm/grid/grid.hpp"
 #include "mpm/app/memory_budget.hpp"
+#include "mpm/grid/grid.hpp"
 #include "mpm/scene/scene.hpp"
 
 namespace mpm::app {

@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "mpm/app/scene_diff.hpp"
+#include "mpm/core/state_archive.hpp"
 #include "mpm/run/checkpoint_sink.hpp"
 #include "mpm/scene/scene.hpp"
-#include "mpm/core/state_archive.hpp"
 
 namespace mpm::app {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <string_view>
 
+#include "mpm/core/types.hpp"
 #include "mpm/schemes/scheme_traits.hpp"
 #include "mpm/simulation/solver_options.hpp"
-#include "mpm/core/types.hpp"
 
 namespace mpm {
 

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "mpm/simulation/energy.hpp"
 #include "mpm/diagnostics/energy_hints.hpp"
+#include "mpm/simulation/energy.hpp"
 #include "mpm/simulation/module.hpp"
 #include "mpm/simulation/reaction_provider.hpp"
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "mpm/core/coordinates.hpp"
-#include "mpm/grid/reserved_pages.hpp"
 #include "mpm/core/types.hpp"
+#include "mpm/grid/reserved_pages.hpp"
 
 namespace mpm {
 

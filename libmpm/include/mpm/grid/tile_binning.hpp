@@ -35,8 +35,8 @@
 #include <utility>
 #include <vector>
 
-#include "mpm/particles/particle_set.hpp"
 #include "mpm/grid/scatter_exchange.hpp"
+#include "mpm/particles/particle_set.hpp"
 
 namespace mpm {
 

@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "mpm/simulation/simulation.hpp"
 #include "mpm/core/state_archive.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm {
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file collective_write.hpp
-/// A write that succeeds on every rank of a distributed run or fails on every rank: the output of docs/distributed.md §4
-/// (an unwritable directory on any rank: every rank stops with status 1, within the frame).
+/// A write that succeeds on every rank of a distributed run or fails on every rank: the output of docs/distributed.md
+/// §4 (an unwritable directory on any rank: every rank stops with status 1, within the frame).
 
 #include <functional>
 #include <string>

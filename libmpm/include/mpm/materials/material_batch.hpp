@@ -24,8 +24,8 @@
 #include <cmath>
 #include <string>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/materials/material.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm {
 

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/materials/material.hpp"
 #include "mpm/materials/elastic_constants.hpp"
+#include "mpm/materials/material.hpp"
 
 namespace mpm {
 

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "mpm/parallel/communicator.hpp"
 #include "mpm/io/csv_log.hpp"
 #include "mpm/io/pvd_collection.hpp"
 #include "mpm/io/vtk_writer.hpp"
 #include "mpm/output/output_fields.hpp"
+#include "mpm/parallel/communicator.hpp"
 #include "mpm/simulation/simulation.hpp"
 
 namespace mpm {

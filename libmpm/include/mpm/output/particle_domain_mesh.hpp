@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "mpm/particles/body.hpp"
 #include "mpm/io/vtk_writer.hpp"
+#include "mpm/particles/body.hpp"
 
 namespace mpm {
 

@@ -22,12 +22,12 @@
 #include <utility>
 #include <vector>
 
+#include "mpm/core/types.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/grid/node_runs.hpp"
 #include "mpm/grid/scatter_exchange.hpp"
 #include "mpm/grid/tile_grid.hpp"
 #include "mpm/parallel/communicator.hpp"
-#include "mpm/grid/grid.hpp"
-#include "mpm/grid/node_runs.hpp"
-#include "mpm/core/types.hpp"
 
 namespace mpm {
 

@@ -5,8 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "mpm/materials/material.hpp"
 #include "mpm/grid/tile_binning.hpp"
+#include "mpm/materials/material.hpp"
 
 namespace mpm {
 

@@ -6,9 +6,9 @@
 
 #include <array>
 
+#include "mpm/core/types.hpp"
 #include "mpm/particles/field_key.hpp"
 #include "mpm/shape/cpdi_elements.hpp"
-#include "mpm/core/types.hpp"
 
 namespace mpm::keys {
 

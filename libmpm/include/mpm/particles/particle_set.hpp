@@ -30,10 +30,10 @@
 #include <type_traits>
 #include <vector>
 
+#include "mpm/grid/grid.hpp"
 #include "mpm/particles/field_key.hpp"
 #include "mpm/particles/field_layout.hpp"
 #include "mpm/particles/field_storage.hpp"
-#include "mpm/grid/grid.hpp"
 
 namespace mpm {
 

@@ -25,12 +25,12 @@
 #include <string>
 #include <vector>
 
-#include "mpm/parallel/communicator.hpp"
 #include "mpm/history/history_writer.hpp"
 #include "mpm/io/csv_log.hpp"
 #include "mpm/io/view_script.hpp"
 #include "mpm/io/vtk_writer.hpp"
 #include "mpm/output/output_writer.hpp"
+#include "mpm/parallel/communicator.hpp"
 #include "mpm/run/checkpoint_sink.hpp"
 #include "mpm/run/run_log.hpp"
 #include "mpm/run/run_observer.hpp"

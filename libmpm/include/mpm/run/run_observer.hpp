@@ -4,8 +4,8 @@
 /// of `mpm run`, the callback and the polling (Ctrl-C) of the Python package, the flight recorder after the guard
 /// stopped the run. Every member has a default that does nothing.
 
-#include "mpm/simulation/simulation.hpp"
 #include "mpm/core/stability_error.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace mpm {
 

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "mpm/scene/key_spec.hpp"
-#include "mpm/simulation/module.hpp"
 #include "mpm/scene/scene.hpp"
+#include "mpm/simulation/module.hpp"
 
 namespace mpm {
 

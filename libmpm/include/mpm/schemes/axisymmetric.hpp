@@ -18,8 +18,8 @@
 #include <array>
 #include <numbers>
 
-#include "mpm/particles/field_keys.hpp"
 #include "mpm/grid/grid.hpp"
+#include "mpm/particles/field_keys.hpp"
 #include "mpm/shape/factored_stencil.hpp"
 
 namespace mpm::axisym {

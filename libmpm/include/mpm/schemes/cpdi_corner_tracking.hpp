@@ -13,8 +13,8 @@
 #include <cmath>
 
 #include "mpm/particles/field_keys.hpp"
-#include "mpm/simulation/module.hpp"
 #include "mpm/shape/cpdi_elements.hpp"
+#include "mpm/simulation/module.hpp"
 
 namespace mpm {
 

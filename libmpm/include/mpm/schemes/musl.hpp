@@ -6,8 +6,8 @@
 /// The particle-velocity update and the second mapping are fused into one pass over the particles.
 /// Axisymmetric (Coords): L_tt = sum T_I v_rI^{t+dt} of the re-mapped velocity, like L (axisymmetric.hpp).
 
-#include "mpm/schemes/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
+#include "mpm/schemes/scheme.hpp"
 
 namespace mpm {
 

@@ -23,8 +23,8 @@
 #include <array>
 
 #include "mpm/particles/field_keys.hpp"
-#include "mpm/schemes/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
+#include "mpm/schemes/scheme.hpp"
 #include "mpm/shape/factored_stencil.hpp"
 
 namespace mpm {

@@ -13,10 +13,10 @@
 #include <type_traits>
 #include <utility>
 
-#include "mpm/grid/active_tiles.hpp"
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/boundary/grid_boundary.hpp"
+#include "mpm/grid/active_tiles.hpp"
 #include "mpm/particles/field_keys.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/stencil.hpp"
 #include "mpm/simulation/step_context.hpp"

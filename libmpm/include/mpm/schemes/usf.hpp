@@ -8,8 +8,8 @@
 ///   v_p = alpha (v_p + sum phi (v^{t+dt} - v^t)) + (1 - alpha) sum phi v^{t+dt};  x_p += dt sum phi v^{t+dt}.
 /// Axisymmetric (Coords): L_tt = sum T_I v_rI^t and F_tt with L and F (axisymmetric.hpp).
 
-#include "mpm/schemes/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
+#include "mpm/schemes/scheme.hpp"
 
 namespace mpm {
 

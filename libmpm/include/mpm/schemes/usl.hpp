@@ -4,8 +4,8 @@
 /// small-mass cut-off (eq. 2.63): one mapping to the grid, one transfer back. Axisymmetric (Coords): the hoop
 /// rate L_tt = sum T_I v_rI^{t+dt} and stretch F_tt with the in-plane L and F (axisymmetric.hpp).
 
-#include "mpm/schemes/scheme.hpp"
 #include "mpm/schemes/explicit_step.hpp"
+#include "mpm/schemes/scheme.hpp"
 
 namespace mpm {
 

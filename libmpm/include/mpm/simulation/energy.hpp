@@ -4,9 +4,9 @@
 
 #include <array>
 
-#include "mpm/parallel/communicator.hpp"
 #include "mpm/core/exact_sum.hpp"
 #include "mpm/core/types.hpp"
+#include "mpm/parallel/communicator.hpp"
 
 namespace mpm {
 

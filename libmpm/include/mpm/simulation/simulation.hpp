@@ -13,16 +13,16 @@
 #include <string>
 #include <vector>
 
-#include "mpm/grid/active_tiles.hpp"
 #include "mpm/boundary/grid_boundary.hpp"
-#include "mpm/parallel/communicator.hpp"
-#include "mpm/simulation/energy.hpp"
-#include "mpm/simulation/module.hpp"
-#include "mpm/schemes/scheme.hpp"
 #include "mpm/core/stability_error.hpp"
 #include "mpm/core/state_archive.hpp"
-#include "mpm/simulation/step_profile.hpp"
+#include "mpm/grid/active_tiles.hpp"
+#include "mpm/parallel/communicator.hpp"
 #include "mpm/parallel/tile_halo.hpp"
+#include "mpm/schemes/scheme.hpp"
+#include "mpm/simulation/energy.hpp"
+#include "mpm/simulation/module.hpp"
+#include "mpm/simulation/step_profile.hpp"
 
 namespace mpm {
 

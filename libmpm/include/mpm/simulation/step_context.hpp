@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "mpm/particles/body.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/grid/node_runs.hpp"
+#include "mpm/particles/body.hpp"
 #include "mpm/simulation/step_profile.hpp"
 
 namespace mpm {

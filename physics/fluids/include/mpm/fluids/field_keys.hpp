@@ -2,8 +2,8 @@
 /// \file field_keys.hpp
 /// The particle field of the fluids module.
 
-#include "mpm/particles/field_key.hpp"
 #include "mpm/core/types.hpp"
+#include "mpm/particles/field_key.hpp"
 
 namespace mpm::fluids::keys {
 

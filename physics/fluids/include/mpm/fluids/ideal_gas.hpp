@@ -13,9 +13,9 @@
 #include <string_view>
 #include <vector>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/fluids/field_keys.hpp"
 #include "mpm/materials/material.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm::fluids {
 

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "mpm/boundary/grid_boundary.hpp"
+#include "mpm/core/stability_error.hpp"
 #include "mpm/implicit/consistent_mass.hpp"
 #include "mpm/implicit/implicit_options.hpp"
 #include "mpm/implicit/mixed_residual.hpp"
@@ -31,7 +32,6 @@
 #include "mpm/implicit/solver_log.hpp"
 #include "mpm/implicit/step_points.hpp"
 #include "mpm/schemes/scheme.hpp"
-#include "mpm/core/stability_error.hpp"
 
 namespace mpm::implicit {
 

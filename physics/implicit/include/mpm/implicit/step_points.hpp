@@ -9,11 +9,11 @@
 #include <array>
 #include <vector>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/particles/body.hpp"
 #include "mpm/plasticity/discrete_gradient.hpp"
 #include "mpm/plasticity/field_keys.hpp"
 #include "mpm/plasticity/hencky_j2_batch.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/shape/linear_hat.hpp"
 
 namespace mpm::implicit {

@@ -22,8 +22,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "mpm/plasticity/symmetric_eigen.hpp"
 #include "mpm/core/types.hpp"
+#include "mpm/plasticity/symmetric_eigen.hpp"
 
 namespace mpm::plasticity {
 

@@ -11,11 +11,11 @@
 #include <cmath>
 #include <string_view>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/materials/material.hpp"
 #include "mpm/plasticity/field_keys.hpp"
 #include "mpm/plasticity/hencky_j2.hpp"
 #include "mpm/plasticity/log_volumetric_energy.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm::plasticity {
 

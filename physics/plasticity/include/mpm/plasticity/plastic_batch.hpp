@@ -11,12 +11,12 @@
 #include <string>
 #include <utility>
 
-#include "mpm/schemes/axisymmetric.hpp"
-#include "mpm/particles/field_keys.hpp"
 #include "mpm/materials/material.hpp"
+#include "mpm/particles/field_keys.hpp"
 #include "mpm/plasticity/elastoplastic.hpp"
 #include "mpm/plasticity/field_keys.hpp"
 #include "mpm/plasticity/output_fields.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm::plasticity {
 

@@ -2,8 +2,8 @@
 /// \file field_keys.hpp
 /// The particle fields of the thermal module (the shared `temperature` is in mpm/field_keys.hpp).
 
-#include "mpm/particles/field_key.hpp"
 #include "mpm/core/types.hpp"
+#include "mpm/particles/field_key.hpp"
 
 namespace mpm::thermal::keys {
 

@@ -38,14 +38,14 @@
 #include <string>
 #include <vector>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/core/expression.hpp"
+#include "mpm/core/state_archive.hpp"
 #include "mpm/particles/field_keys.hpp"
-#include "mpm/simulation/interface_conductance.hpp"
-#include "mpm/simulation/module.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/shape/shape_functions.hpp"
 #include "mpm/shape/stencil.hpp"
-#include "mpm/core/state_archive.hpp"
+#include "mpm/simulation/interface_conductance.hpp"
+#include "mpm/simulation/module.hpp"
 #include "mpm/thermal/field_keys.hpp"
 #include "mpm/thermal/thermal_body.hpp"
 
