@@ -120,6 +120,12 @@ int main(int argc, char** argv) {
                    "test only: SIGKILL halfway through writing the N-th checkpoint")
       ->check(CLI::PositiveNumber)
       ->group("");
+  bool exchange_every_scatter = false;
+  run_cmd
+      ->add_flag("--exchange-every-scatter", exchange_every_scatter,
+                 "benchmark only: under mpirun every scatter exchanges ghost nodes, not only those of bodies near a "
+                 "cut (the same bits; bench/run_distributed_scaling.sh --baseline)")
+      ->group("");
   run_cmd->footer(
       "Signals: SIGINT (Ctrl-C), SIGTERM and SIGUSR1 finish the current step, write a checkpoint and the last frame, "
       "print the command that resumes the run, and exit with 128 + the signal number (130, 143, 138); a second "
@@ -278,6 +284,7 @@ int main(int argc, char** argv) {
     options.communicator = world;
     options.profile = profile;
     options.rebalance_every = rebalance_every;
+    options.exchange_every_scatter = exchange_every_scatter;
     if (steps_opt->count() > 0) options.steps = steps;
     if (end_time_opt->count() > 0) options.end_time = end_time;
     if (!restart.empty()) options.restart = restart;

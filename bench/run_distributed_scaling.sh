@@ -19,8 +19,8 @@
 # (uptime) before the run, and the speed-up both of the medians and paired (the median over the rounds of the
 # round's 1 x 1 time over the configuration's): the machine may be shared, so say how loaded it was.
 # `mpm run` prints rank 0's profile; with several ranks it also prints each phase's min and max over the ranks.
-# --baseline: every multi-rank run is followed by the same run with MPM_DEBUG_ALWAYS_EXCHANGE=1 (every scatter
-# exchanges, as before session 16; same bits), rows "<case>_baseline": a before/after comparison under the same load. --quick: scenes 4x (2D) and ~3x (3D) smaller, a smoke test.
+# --baseline: every multi-rank run is followed by the same run with `mpm run --exchange-every-scatter` (every
+# scatter exchanges, as before session 16; same bits), rows "<case>_baseline": a before/after comparison under the same load. --quick: scenes 4x (2D) and ~3x (3D) smaller, a smoke test.
 #
 # Environment: MPM_BUILD_DIR (default build), MPM_BIN (default $MPM_BUILD_DIR/apps/mpm), MPIRUN (default mpirun). As root the OMPI_ALLOW_RUN_AS_ROOT pair is
 # set here. Needs a build with MPM_WITH_MPI and the targets mpm and bench_pingpong.
@@ -94,12 +94,12 @@ load() { cut -d' ' -f1 /proc/loadavg; }
 # scenes: each what a rank of the 2 x 1 run holds); the slower one's wall and phases, the two runs' compute and other
 # as min and max. What a 2 x 1 run could reach on this machine at that moment: on this VM the two vCPUs' speeds differ
 # and drift, which no decomposition can undo (PERFORMANCE.md §16.6).
-one_run() {  # ranks threads scene [env assignment]
+one_run() {  # ranks threads scene [extra mpm run option]
   local log=$work/run.log logs
   if [ "$1" = 0 ]; then
-    env ${4:-} "$mpm" run "$work/$3.yaml" --threads 1 --steps "$steps" --profile -o "$work/out_a" > "$log" 2>&1 &
+    "$mpm" run "$work/$3.yaml" --threads 1 --steps "$steps" --profile -o "$work/out_a" ${4:-} > "$log" 2>&1 &
     local a=$!
-    env ${4:-} "$mpm" run "$work/$3.yaml" --threads 1 --steps "$steps" --profile -o "$work/out_b" > "$log.b" 2>&1 ||
+    "$mpm" run "$work/$3.yaml" --threads 1 --steps "$steps" --profile -o "$work/out_b" ${4:-} > "$log.b" 2>&1 ||
       { cat "$log.b" >&2; return 1; }
     wait $a || { cat "$log" >&2; return 1; }
     logs="$log $log.b"
@@ -108,8 +108,8 @@ one_run() {  # ranks threads scene [env assignment]
     # or its threads share one core (measured before this: 1 rank x 2 threads at 0.94x of 1 x 1).
     local bind=""
     [ "$2" -gt 1 ] && bind="--bind-to none"
-    env ${4:-} "$mpirun" --oversubscribe $bind -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" \
-      --profile -o "$work/out" --rebalance-every 20 > "$log" 2>&1 || { cat "$log" >&2; return 1; }
+    "$mpirun" --oversubscribe $bind -np "$1" "$mpm" run "$work/$3.yaml" --threads "$2" --steps "$steps" \
+      --profile -o "$work/out" --rebalance-every 20 ${4:-} > "$log" 2>&1 || { cat "$log" >&2; return 1; }
     logs=$log
   fi
   /usr/bin/python3 - $logs <<'EOF'
@@ -152,7 +152,7 @@ run_cases() {  # label "ranks threads scene" ...
       for variant in "" baseline; do
         [ -z "$variant" ] || { [ "$baseline" = 1 ] && [ "$ranks" -gt 1 ]; } || continue
         name=$label setting=""
-        [ -z "$variant" ] || { name=${label}_baseline; setting=MPM_DEBUG_ALWAYS_EXCHANGE=1; }
+        [ -z "$variant" ] || { name=${label}_baseline; setting=--exchange-every-scatter; }
         l=$(load)
         r=$(one_run "$ranks" "$threads" "$scene" $setting)
         read -r wall particles rest <<< "$r"

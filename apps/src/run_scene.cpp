@@ -131,6 +131,7 @@ std::optional<RestartPoint> restart_from(const SceneDescription& scene, const st
 template <int Dim>
 void distribute(Simulation<Dim>& sim, const RunOptions& options) {
   sim.set_rebalance_interval(options.rebalance_every);
+  sim.set_exchange_every_scatter(options.exchange_every_scatter);
   sim.distribute(options.communicator);
 }
 

@@ -129,9 +129,7 @@ void Simulation<Dim>::take_step(Real dt, bool guard) {
   ctx.step = step_ + 1;
   ctx.profile = profiling_ ? &profile_ : nullptr;
   if (halo_) {
-    // MPM_DEBUG_ALWAYS_EXCHANGE=1: every scatter exchanges, as before session 16 (the same bits; for the benchmark's
-    // before/after pairs, PERFORMANCE.md §16.4)
-    static const bool always = std::getenv("MPM_DEBUG_ALWAYS_EXCHANGE") != nullptr;
+    const bool always = settings_.exchange_every_scatter;
     for (std::size_t b = 0; b < bodies_.size(); ++b)
       bodies_[b].bins.exchange = always || !near_cut_known_ || near_cut_[b] != 0;
   }

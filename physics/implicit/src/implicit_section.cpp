@@ -18,7 +18,7 @@ using io::Range;
 void read_options(const io::YamlReader& reader, const io::YamlValue& value, ImplicitOptions& o) {
   const io::YamlMap map = reader.map(value);
   map.allow({"newton_rtol", "newton_atol", "max_newton_iterations", "linear_rtol", "max_linear_iterations",
-             "gmres_restart", "mass_rtol", "volumetric", "weak_node_fraction"});
+             "gmres_restart", "mass_rtol", "volumetric", "weak_node_fraction", "newton_trace"});
   if (const auto v = map.find("newton_rtol")) o.newton_rtol = reader.number(*v, Range::open(0, 1), "");
   if (const auto v = map.find("newton_atol")) o.newton_atol = reader.number(*v, Range::at_least(0), "N");
   if (const auto v = map.find("max_newton_iterations")) o.max_newton_iterations = reader.integer(*v, 1);
@@ -28,6 +28,7 @@ void read_options(const io::YamlReader& reader, const io::YamlValue& value, Impl
   if (const auto v = map.find("mass_rtol")) o.mass_rtol = reader.number(*v, Range::open(0, 1), "");
   if (const auto v = map.find("volumetric")) o.volumetric = reader.choice<VolumetricMode>(*v);
   if (const auto v = map.find("weak_node_fraction")) o.weak_node_fraction = reader.number(*v, Range::closed(0, 1), "");
+  if (const auto v = map.find("newton_trace")) o.newton_trace = reader.boolean(*v);
 }
 
 /// The transfer choices: (92) is the FLIP update of the grid increment, nothing else.

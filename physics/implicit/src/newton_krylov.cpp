@@ -210,7 +210,7 @@ NewtonStats solve_newton_krylov(NonlinearProblem& untimed, Vector& x, Real refer
     stats.failure = "the start of the Newton iteration is inadmissible";
     return stats;
   }
-  if (std::getenv("MPM_NEWTON_TRACE")) std::fprintf(stderr, "start: %g x predictor, |R| %.6e\n", best_scale, best);
+  if (s.trace) std::fprintf(stderr, "start: %g x predictor, |R| %.6e\n", best_scale, best);
   stats.first_residual = stats.last_residual = r.norm();
   stats.tolerance = std::max(s.atol, s.rtol * reference);
   SparseMatrix J;
@@ -268,7 +268,7 @@ NewtonStats solve_newton_krylov(NonlinearProblem& untimed, Vector& x, Real refer
           break;
         }
       }
-      if (std::getenv("MPM_NEWTON_TRACE")) {
+      if (s.trace) {
         Index worst = 0;
         r_trial.cwiseAbs().maxCoeff(&worst);
         std::fprintf(stderr,

@@ -47,6 +47,9 @@ struct RunOptions {
   std::shared_ptr<Communicator> communicator;
   /// Distributed run: steps between balance checks (`--rebalance-every`; SimulationSettings::rebalance_interval).
   int rebalance_every = 50;
+  /// Distributed run: every scatter exchanges ghost nodes (`--exchange-every-scatter`, hidden: the benchmark's
+  /// baseline; SimulationSettings::exchange_every_scatter).
+  bool exchange_every_scatter = false;
   /// The test seams of the run path, hidden options of `mpm run` (apps/README.md, "Test seams"; stop_signals.hpp).
   struct TestSeams {
     std::optional<TestSignal> signal;    ///< `--test-signal-at STEP:NAME`

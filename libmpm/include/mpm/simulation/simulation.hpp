@@ -40,6 +40,9 @@ struct SimulationSettings {
   /// Distributed run: steps between checks of the balance; when the most loaded rank's cost exceeds the mean by
   /// more than 10%, the tiles are dealt anew (`mpm run --rebalance-every`; 0: never).
   int rebalance_interval = 50;
+  /// Distributed run: every scatter exchanges ghost nodes, not only those of bodies near a cut (TileBins::exchange;
+  /// the same bits, slower: the baseline of the benchmark's pairs, docs/PERFORMANCE.md §16.4).
+  bool exchange_every_scatter = false;
   /// One process: the grid kernels visit only the nodes the particles of the occupied tiles reach (active_tiles.hpp;
   /// the same bits as the dense grid, test SparseGrid.*). False: every node every step (the reference).
   bool sparse_grid = true;
@@ -95,6 +98,8 @@ class Simulation {
   std::size_t exchanging_bodies() const;
   /// Steps between balance checks of a distributed run (SimulationSettings::rebalance_interval; 0: never).
   void set_rebalance_interval(int steps) { settings_.rebalance_interval = steps; }
+  /// Distributed run: whether every scatter exchanges (SimulationSettings::exchange_every_scatter).
+  void set_exchange_every_scatter(bool on) { settings_.exchange_every_scatter = on; }
   /// One process: whether the grid kernels visit only the nodes the particles reach (SimulationSettings::sparse_grid;
   /// the same bits either way). From the next step.
   void use_sparse_grid(bool on) {

@@ -27,6 +27,9 @@ struct ImplicitOptions {
   /// A node whose particles cover less than this fraction of a cell's volume (sum N^A V_p / h^dim) is weak: its
   /// components are extrapolated from two nodes further in (free_dofs.hpp; docs/theory.md §15). 0: none.
   Real weak_node_fraction = 0.1;
+  /// Print every Newton iteration, the weak-node split of each step and, when a solve fails, the degrees of
+  /// freedom where the residual stays, to stderr. Diagnostics only: the results are the same bits.
+  bool newton_trace = false;
 };
 
 }  // namespace mpm::implicit

@@ -100,6 +100,7 @@ class ImplicitScheme final : public Scheme<Dim> {
     const Real reference = residual_reference(problem, x, ctx.dt);
     NewtonSettings settings{options_.newton_rtol, options_.newton_atol,           options_.max_newton_iterations,
                             options_.linear_rtol, options_.max_linear_iterations, options_.gmres_restart};
+    settings.trace = options_.newton_trace;
     const NewtonStats stats = solve_newton_krylov(problem, x, reference, settings);
     record_ = {ctx.step,
                ctx.time + ctx.dt,
@@ -113,7 +114,7 @@ class ImplicitScheme final : public Scheme<Dim> {
                stats.residual_seconds,
                stats.factor_seconds};
     if (!stats.converged) {
-      if (std::getenv("MPM_NEWTON_TRACE") && problem.residual(x, r)) {  // where the residual stays
+      if (options_.newton_trace && problem.residual(x, r)) {  // where the residual stays
         std::vector<Index> order(static_cast<std::size_t>(r.size()));
         for (Index k = 0; k < r.size(); ++k) order[k] = k;
         std::partial_sort(order.begin(), order.begin() + std::min<Index>(6, r.size()), order.end(),
@@ -166,7 +167,7 @@ class ImplicitScheme final : public Scheme<Dim> {
     ctx.boundary.apply(probe, &NodeVelocity<Dim>::mapped, ctx.time);
     dofs_.build(g, touched, fraction, options_.weak_node_fraction,
                 [&](Index a, int d) { return probe[a].mapped[d] == 0; });
-    if (std::getenv("MPM_NEWTON_TRACE")) {  // the weak-node split of this step
+    if (options_.newton_trace) {  // the weak-node split of this step
       Real weakest = 1e300;
       Index at = -1;
       for (const auto& [a, d] : dofs_.dofs)

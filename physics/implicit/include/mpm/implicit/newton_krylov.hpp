@@ -27,6 +27,9 @@ struct NewtonSettings {
   /// which its evaluation rounds (the terms it sums are ~1e10 times larger than R there): the iterate is
   /// accepted as converged at that floor instead of failing a tolerance below what R can resolve.
   Real step_rtol = 1e-8;
+  /// Print each Newton iteration (residual, line search, GMRES count, worst degree of freedom) to stderr
+  /// (`solver.implicit.newton_trace`): for diagnosing a solve that does not converge.
+  bool trace = false;
 };
 
 struct NewtonStats {
