@@ -64,9 +64,10 @@ std::vector<BadScene> bad_scenes() {
   return scenes;
 }
 
-class SceneLoaderBadScene : public testing::TestWithParam<BadScene> {};
+/// One case per fixture of tests/data/bad_scenes: ctest names them `Bad/Scene.Refused/<fixture>`.
+class Scene : public testing::TestWithParam<BadScene> {};
 
-TEST_P(SceneLoaderBadScene, ReportsMessageAndLine) {
+TEST_P(Scene, Refused) {
   const BadScene& scene = GetParam();
   ASSERT_FALSE(scene.expect.empty()) << scene.file << ": first line must be '# expect: ...'";
   ASSERT_GT(scene.line, 0) << scene.file << ": second line must be '# line: N'";
@@ -87,7 +88,7 @@ TEST_P(SceneLoaderBadScene, ReportsMessageAndLine) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(SceneLoader, SceneLoaderBadScene, testing::ValuesIn(bad_scenes()),
+INSTANTIATE_TEST_SUITE_P(Bad, Scene, testing::ValuesIn(bad_scenes()),
                          [](const testing::TestParamInfo<BadScene>& info) { return info.param.file.stem().string(); });
 
 TEST(SceneLoader, HasBadSceneFixtures) { EXPECT_GE(bad_scenes().size(), 50u); }

@@ -38,13 +38,6 @@ struct GTestTypes<ShapeList<Shapes...>> {
   using type = ::testing::Types<Shapes...>;
 };
 
-struct ShapeName {
-  template <class Shape>
-  static std::string GetName(int) {
-    return Shape::name;
-  }
-};
-
 /// The listed functions whose weights are products of 1D functions (all but CPDI): the factored-stencil
 /// and derivative checks below apply to these only, so they run over this sub-list instead of skipping.
 template <class Done, class Rest>
@@ -63,11 +56,11 @@ using TensorProductShapes = TensorProductOf<ShapeList<>, ShapeFunctions>::type;
 
 template <class Shape>
 class ShapeFunctionProperties : public ::testing::Test {};
-TYPED_TEST_SUITE(ShapeFunctionProperties, GTestTypes<ShapeFunctions>::type, ShapeName);
+TYPED_TEST_SUITE(ShapeFunctionProperties, GTestTypes<ShapeFunctions>::type);
 
 template <class Shape>
 class TensorProductShapeProperties : public ::testing::Test {};
-TYPED_TEST_SUITE(TensorProductShapeProperties, GTestTypes<TensorProductShapes>::type, ShapeName);
+TYPED_TEST_SUITE(TensorProductShapeProperties, GTestTypes<TensorProductShapes>::type);
 
 /// `cells` raised to the function's minimum (and to 2) and to a multiple of its cell multiple.
 template <class Shape>
