@@ -199,8 +199,10 @@ RunSummary summarise(RunSummary summary, const Run<Dim>& run, Index first_step, 
   summary.particle_updates_per_second = static_cast<double>(summary.particles) *
                                         static_cast<double>(summary.steps - first_step) /
                                         std::max(summary.wall_seconds, 1e-300);
-  const Real e0 = run.record().initial_energy, e1 = sim.energy().total();
+  // The energy of the material that left through outflow faces is booked, not lost (energy.csv's outflow columns).
+  const Real e0 = run.record().initial_energy, e1 = sim.energy().total() + sim.boundary().outflow_energy();
   summary.relative_energy_change = e0 != 0 ? (e1 - e0) / std::abs(e0) : e1;
+  for (const auto& line : sim.boundary().outflow_summary()) fmt::print(log, "{}\n", line);
   if (const EnergySentinel<Dim>* sentinel = sim.energy_sentinel()) {
     summary.largest_energy_ratio = sentinel->largest_ratio();
     summary.largest_energy_ratio_step = sentinel->largest_ratio_step();

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "mpm/app/material_reference.hpp"
+#include "mpm/app/modules.hpp"
 #include "mpm/app/scene_reference.hpp"
 #include "mpm/materials/material_registry.hpp"
 #include "mpm/scene/scene_loader.hpp"

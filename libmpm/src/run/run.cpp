@@ -128,6 +128,13 @@ void Run<Dim>::check_energy() {
 }
 
 template <int Dim>
+void Run<Dim>::check_outflow() {
+  // The first departure of each body through each outflow face, in the step it happened (the books: energy.csv).
+  for (const auto& notice : sim_->boundary().outflow_notices())
+    if (notice.step == sim_->step()) warn(notice.message());
+}
+
+template <int Dim>
 void Run<Dim>::write_checkpoint() {
   if (!output_.checkpoints || sim_->step() == last_checkpoint_step_) return;  // at most one per step
   const auto t0 = Clock::now();
@@ -149,6 +156,7 @@ typename Run<Dim>::Next Run<Dim>::after_step(RunObserver<Dim>* observer) {
   if (step_log_) step_log_->append(sim_->scheme().step_log_row());
   write(false);
   check_energy();
+  check_outflow();
   if (sim_->step() % state_check_interval == 0) check_state();
   // A wall-clock checkpoint interval expires, and a stop is requested, at different steps on the ranks: all write
   // when any is due and all stop after the step where any one asked. Both flags were asked at the end of the step

@@ -7,7 +7,8 @@
 ///     table (solver.csv of the implicit scheme), view.py; frames to other directories on request (write_frame);
 ///   - the checks: the materials' state warnings (Material::state_warning) every `state_check_interval` steps and
 ///     at the end, the first of each body logged once; the energy sentinel's drift (energy_sentinel.hpp), logged as
-///     a warning, or with `solver.on_energy_drift: stop` thrown as a StabilityError (field "energy_balance");
+///     a warning, or with `solver.on_energy_drift: stop` thrown as a StabilityError (field "energy_balance"); the
+///     first departure of each body through each outflow face (boundary/grid_boundary.hpp), a warning;
 ///   - the checkpoints: when a sink (checkpoint_sink.hpp) is given, one after every step it says is due, one at the
 ///     end, and one when the run is interrupted; each holds the run record (run_record.hpp) too.
 /// Messages go to one RunLog (run_log.hpp); progress, stop requests and the flight recorder are the front end's,
@@ -129,6 +130,7 @@ class Run {
   void write(bool always);
   void check_state();
   void check_energy();
+  void check_outflow();
   void write_checkpoint();
   void warn(std::string message);
   std::unique_ptr<OutputWriter<Dim>> make_writer(const std::filesystem::path& directory) const;
