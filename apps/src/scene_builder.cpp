@@ -83,8 +83,8 @@ geometry::CpdiParticles<Dim> particle_elements(const SceneDescription& scene, co
   // CPDI: every sub-cell becomes one or more particle elements (segments, quads, triangles, tets).
   geometry::CpdiParticles<Dim> elements;
   const bool conforming = bd.domains == "conforming";
-  if (conforming && !((Dim == 2 && scene.solver.shape_function == "cpdi_t3") ||
-                      (Dim == 3 && scene.solver.shape_function == "cpdi_tet4")))
+  // A conforming mesh of the shape is made of simplices: the CPDI elements with Dim + 1 corners (T3, Tet4).
+  if (conforming && find_shape_function(scene.solver.shape_function)->domain_corners != Dim + 1)
     throw SceneError(bd.where, body_key(index, "domains"),
                      "domains: conforming needs shape_function cpdi_t3 (2D) or cpdi_tet4 (3D); the solver uses " +
                          scene.solver.shape_function);
@@ -154,7 +154,7 @@ bool add_domain_fields(Body<Dim>& body, const SceneDescription& scene, const Bod
       p.add_field(keys::cpdi_corner_offsets0<Dim>, none) = elements.offsets;
     }
   }
-  body.stretched_domain = scene.solver.shape_function == "cpgimp";
+  body.stretched_domain = find_shape_function(scene.solver.shape_function)->stretched_domain;
   if (shape.particle_domain) {
     // GIMP: the initial particle domain is the sub-cell the particle was placed in (review §3.3).
     VecU<Dim> half;

@@ -61,9 +61,9 @@ void read_cpdi_domain_update(const YamlReader& reader, const YamlMap& map, Solve
   if (total_lagrangian)
     reader.fail(*key,
                 "corners: the TLMPM keeps its reference weights, so its domains follow F; use deformation_gradient");
-  if (solver.shape_function == "cpdi_r4")
-    reader.fail(*key,
-                "cpdi_r4 is the parallelogram domain convected with F (eq. 3.27); use cpdi_q4 to track the corners");
+  if (!info.tracks_corners)
+    reader.fail(*key, solver.shape_function +
+                          " is the parallelogram domain convected with F (eq. 3.27); use cpdi_q4 to track the corners");
 }
 
 void read_velocity_transfer(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {

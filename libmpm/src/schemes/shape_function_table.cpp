@@ -21,7 +21,9 @@ ShapeFunctionInfo info() {
   if constexpr (shape_corner_domain<Shape>) {
     i.domain_corners = Shape::element::corners;
     i.domain_follows_F = Shape::follows_F_by_default;
+    i.tracks_corners = Shape::tracks_corners;
   }
+  if constexpr (requires { Shape::stretched_domain; }) i.stretched_domain = Shape::stretched_domain;
   return i;
 }
 // Every shape function, once, in the order of ShapeFunctions.

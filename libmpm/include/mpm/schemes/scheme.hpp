@@ -84,6 +84,8 @@ struct ShapeFunctionInfo {
   int dimension = 0;              ///< the only dimension the function exists in (CPDI elements), 0 for any
   int domain_corners = 0;         ///< CPDI: corners of the particle element (fields "cpdi_corners"/"..._offsets0")
   bool domain_follows_F = false;  ///< CPDI: domains convect with F unless the scene asks for corner tracking
+  bool tracks_corners = false;    ///< CPDI: the corners may be tracked on their own (all but the R4 parallelogram)
+  bool stretched_domain = false;  ///< GIMP: the domain follows diag F (cpGIMP, eq. 3.14), drawn so in the output
   bool axisymmetric = false;      ///< usable on an axisymmetric grid (shape_axisymmetric)
   bool multilinear = false;       ///< the multilinear functions of the particle's cell (linear hats, shape_multilinear)
 };

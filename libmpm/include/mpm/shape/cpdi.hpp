@@ -46,8 +46,10 @@ struct CpdiDomain {
   }
 };
 
-/// A CPDI shape function on `Element`; `FollowsF`: the scene's default domain update.
-template <class Element, bool FollowsF, int Reach>
+/// A CPDI shape function on `Element`; `FollowsF`: the scene's default domain update; `TracksCorners`: the corners
+/// may move on their own (`solver.cpdi_domain_update: corners`), false for CPDI-R4, whose domain stays the
+/// parallelogram F maps the initial one to (eq. 3.27).
+template <class Element, bool FollowsF, int Reach, bool TracksCorners = true>
 struct Cpdi {
   using element = Element;
   static constexpr int dimension = Element::dimension;
@@ -59,6 +61,7 @@ struct Cpdi {
   static constexpr int min_cells = support - 1;
   static constexpr bool corner_domain = true;
   static constexpr bool follows_F_by_default = FollowsF;
+  static constexpr bool tracks_corners = TracksCorners;
   template <int Dim>
   using Domain = CpdiDomain<Dim>;
 };
@@ -66,7 +69,7 @@ struct Cpdi {
 struct CpdiL2 : Cpdi<CpdiSegment, true, 1> {
   static constexpr const char* name = "cpdi_l2";
 };
-struct CpdiR4 : Cpdi<CpdiQuad, true, 2> {
+struct CpdiR4 : Cpdi<CpdiQuad, true, 2, false> {
   static constexpr const char* name = "cpdi_r4";
 };
 struct CpdiQ4 : Cpdi<CpdiQuad, false, 2> {

@@ -101,7 +101,8 @@ struct UGimp : GimpFunctions {
 
 struct CpGimp : GimpFunctions {
   static constexpr const char* name = "cpgimp";
-  static constexpr bool axisymmetric = true;  ///< with the r-weighted radial averages (evaluate_radial)
+  static constexpr bool axisymmetric = true;      ///< with the r-weighted radial averages (evaluate_radial)
+  static constexpr bool stretched_domain = true;  ///< the domain follows diag F (eq. 3.14): drawn so in the output
   /// Half-lengths l_p(0)/2 F_aa (m), eq. 3.14.
   template <int Dim>
   struct Domain {
