@@ -37,8 +37,9 @@ const std::vector<std::string> outflow_energy_columns{"kinetic_energy", "strain_
 /// after eroded_strain_energy. The books close as the outflow's: mass + eroded_mass is the initial mass, and
 /// total_energy + eroded_total_energy is E(0) + W (docs/theory.md eq. 8.4).
 const std::vector<std::string> eroded_energy_columns{
-    "kinetic_energy", "strain_energy", "internal_energy", "gravity_potential_energy", "total_energy", "momentum_x",
-    "momentum_y",     "momentum_z",    "mass",            "plastic_work",             "thermal_energy", "particles"};
+    "kinetic_energy", "strain_energy", "internal_energy", "gravity_potential_energy",
+    "total_energy",   "momentum_x",    "momentum_y",      "momentum_z",
+    "mass",           "plastic_work",  "thermal_energy",  "particles"};
 
 /// The run's failure module when a material erodes, else null.
 template <int Dim>
@@ -340,9 +341,9 @@ std::vector<double> OutputWriter<Dim>::energy_row(const Simulation<Dim>& sim) co
   if (const auto* failure = erosion_of(sim)) {  // the same on every rank
     const RemovedBook book = failure->eroded();
     const EnergyBalance out = book.value();
-    row.insert(row.end(), {out.kinetic, out.strain, out.strain + out.thermal, out.gravity, out.total(),
-                           out.momentum[0], out.momentum[1], out.momentum[2], out.mass, out.plastic_work, out.thermal,
-                           book.particle_count()});
+    row.insert(row.end(),
+               {out.kinetic, out.strain, out.strain + out.thermal, out.gravity, out.total(), out.momentum[0],
+                out.momentum[1], out.momentum[2], out.mass, out.plastic_work, out.thermal, book.particle_count()});
   }
   return row;
 }

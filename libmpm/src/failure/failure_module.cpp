@@ -152,10 +152,11 @@ std::vector<std::string> FailureModule<Dim>::summary(const std::vector<std::stri
         by += fmt::format("{}{} {}", by.empty() ? "" : ", ", criterion_name(static_cast<FailureCriterion>(c)), n);
     if (by.empty()) continue;
     const EnergyBalance e = b.eroded.value();
-    lines.push_back(fmt::format("failure of body '{}': {} particles eroded, {} carry only pressure ({}); eroded mass "
-                                "{:.6g} kg, kinetic energy {:.6g} J, total energy {:.6g} J",
-                                body_names.at(static_cast<std::size_t>(b.body)), b.eroded.particle_count(),
-                                b.failed_in_place, by, e.mass, e.kinetic, e.total()));
+    lines.push_back(
+        fmt::format("failure of body '{}': {} particles eroded, {} carry only pressure ({}); eroded mass "
+                    "{:.6g} kg, kinetic energy {:.6g} J, total energy {:.6g} J",
+                    body_names.at(static_cast<std::size_t>(b.body)), b.eroded.particle_count(), b.failed_in_place, by,
+                    e.mass, e.kinetic, e.total()));
   }
   return lines;
 }
@@ -181,8 +182,8 @@ void FailureModule<Dim>::restore_state(const StateArchive& archive, const std::s
     if (!archive.contains(name + "failed_by")) continue;
     const auto counts = archive.values<std::int64_t>(name + "failed_by");
     if (counts.size() != failure_criterion_count + 1)
-      throw ArchiveError(fmt::format("{}failed_by: expected {} values, found {}", name, failure_criterion_count + 1,
-                                     counts.size()));
+      throw ArchiveError(
+          fmt::format("{}failed_by: expected {} values, found {}", name, failure_criterion_count + 1, counts.size()));
     std::copy(counts.begin(), counts.end() - 1, b.failed_by.begin());
     b.failed_in_place = counts.back();
   }

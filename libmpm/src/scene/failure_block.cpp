@@ -96,20 +96,20 @@ FailureCriteria read_failure(const YamlReader& reader, const YamlValue& value, c
   if (c.damage) {
     const std::string& enabler = model.damage_enabled_by;
     if (enabler.empty())
-      reader.fail(*map.find("damage"),
-                  fmt::format("model {} has no damage; the models with Johnson-Cook damage are {}", material.model,
-                              material_model_names_where([](const MaterialModel& m) {
-                                return !m.damage_enabled_by.empty();
-                              })));
+      reader.fail(
+          *map.find("damage"),
+          fmt::format("model {} has no damage; the models with Johnson-Cook damage are {}", material.model,
+                      material_model_names_where([](const MaterialModel& m) { return !m.damage_enabled_by.empty(); })));
     if (!material.parameters.count(enabler))
       reader.fail(*map.find("damage"), fmt::format("material '{}' has no damage: model {} tracks it only with {}; "
                                                    "give {} (and its constants) or another criterion",
                                                    material.name, material.model, enabler, enabler));
   }
   if (c.plastic_strain && !model.tracks_plastic_strain)
-    reader.fail(*map.find("plastic_strain"),
-                fmt::format("model {} keeps no plastic strain; the models that do are {}", material.model,
-                            material_model_names_where([](const MaterialModel& m) { return m.tracks_plastic_strain; })));
+    reader.fail(
+        *map.find("plastic_strain"),
+        fmt::format("model {} keeps no plastic strain; the models that do are {}", material.model,
+                    material_model_names_where([](const MaterialModel& m) { return m.tracks_plastic_strain; })));
   return c;
 }
 
