@@ -29,8 +29,7 @@ class FailingMaterial final : public Material<Dim> {
   /// The wrapped model's material.
   const Material<Dim>& wrapped() const { return *model_; }
 
-  WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L,
-                                    Real dt) override {
+  WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override {
     thread_local std::vector<SymTensor<Dim>> before;
     before.assign(p.stress.begin() + begin, p.stress.begin() + end);
     const WaveSpeedBound<Dim> bound = model_->update_stress(p, begin, end, L, dt);
@@ -56,9 +55,7 @@ class FailingMaterial final : public Material<Dim> {
     }
     return bound;
   }
-  WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override {
-    return model_->wave_speed_bound(p);
-  }
+  WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override { return model_->wave_speed_bound(p); }
   /// sum V0 (w - w_p) (eq. 16.4): the work of each particle's stress less the plastic work its model dissipated.
   void add_strain_energy(const ParticleSet<Dim>& p, ExactSum& sum) const override {
     const auto& work = p.field(keys::stress_work);

@@ -38,21 +38,21 @@ inline constexpr int failure_criterion_count = 7;
 /// The scene's name of a criterion (its key in `failure:`; `volume_ratio` for the pair of bounds).
 constexpr std::string_view criterion_name(FailureCriterion c) {
   constexpr std::array<std::string_view, failure_criterion_count> names{
-      "damage", "plastic_strain", "principal_strain", "principal_stress", "spall_pressure", "volume_ratio",
-      "min_time_step"};
+      "damage",         "plastic_strain", "principal_strain", "principal_stress",
+      "spall_pressure", "volume_ratio",   "min_time_step"};
   return names[static_cast<std::size_t>(c)];
 }
 
 /// One material's `failure:` block. An absent limit is not tested.
 struct FailureCriteria {
-  bool damage = false;                     ///< fail at D >= 1
-  std::optional<Real> plastic_strain;      ///< -
-  std::optional<Real> principal_strain;    ///< -
-  std::optional<Real> principal_stress;    ///< Pa
-  std::optional<Real> spall_pressure;      ///< Pa (> 0: a tension)
-  std::optional<Real> min_volume_ratio;    ///< -
-  std::optional<Real> max_volume_ratio;    ///< -
-  std::optional<Real> min_time_step;       ///< s
+  bool damage = false;                   ///< fail at D >= 1
+  std::optional<Real> plastic_strain;    ///< -
+  std::optional<Real> principal_strain;  ///< -
+  std::optional<Real> principal_stress;  ///< Pa
+  std::optional<Real> spall_pressure;    ///< Pa (> 0: a tension)
+  std::optional<Real> min_volume_ratio;  ///< -
+  std::optional<Real> max_volume_ratio;  ///< -
+  std::optional<Real> min_time_step;     ///< s
   FailureAction action = FailureAction::erode;
 
   bool needs_damage() const { return damage; }
