@@ -20,6 +20,7 @@
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/app/stop_signals.hpp"
 #include "mpm/diagnostics/energy_sentinel.hpp"
+#include "mpm/failure/failure_module.hpp"
 #include "mpm/history/history_kind.hpp"
 #include "mpm/run/run.hpp"
 
@@ -199,8 +200,11 @@ RunSummary summarise(RunSummary summary, const Run<Dim>& run, Index first_step, 
   summary.particle_updates_per_second = static_cast<double>(summary.particles) *
                                         static_cast<double>(summary.steps - first_step) /
                                         std::max(summary.wall_seconds, 1e-300);
-  // The energy of the material that left through outflow faces is booked, not lost (energy.csv's outflow columns).
-  const Real e0 = run.record().initial_energy, e1 = sim.energy().total() + sim.boundary().outflow_energy();
+  // What left through outflow faces and what eroded took its energy along, booked (energy.csv's outflow_* and
+  // eroded_* columns; eq. 8.4): the change is that of E(t) + E_out + E_eroded.
+  Real removed = sim.boundary().outflow_energy();
+  for (const auto& m : sim.modules()) removed += m->removed_energy();
+  const Real e0 = run.record().initial_energy, e1 = sim.energy().total() + removed;
   summary.relative_energy_change = e0 != 0 ? (e1 - e0) / std::abs(e0) : e1;
   for (const auto& line : sim.boundary().outflow_summary()) fmt::print(log, "{}\n", line);
   if (const EnergySentinel<Dim>* sentinel = sim.energy_sentinel()) {
@@ -209,6 +213,12 @@ RunSummary summarise(RunSummary summary, const Run<Dim>& run, Index first_step, 
     fmt::print(log, "energy sentinel: largest balance / tolerance {:.4g} (step {}), external work {:.6g} J\n",
                summary.largest_energy_ratio, summary.largest_energy_ratio_step, sentinel->work());
   }
+  for (const auto& m : sim.modules())
+    if (const auto* failure = dynamic_cast<const FailureModule<Dim>*>(m.get())) {
+      std::vector<std::string> names;
+      for (const auto& b : sim.bodies()) names.push_back(b.name);
+      for (const std::string& line : failure->summary(names)) fmt::print(log, "{}\n", line);
+    }
   fmt::print(log,
              "done: {} steps to t = {:.6g} s in {:.3f} s wall, {:.4g} particle-updates/s, {} particles ({} B state "
              "each), relative energy change {:+.3e}; output in {}\n",

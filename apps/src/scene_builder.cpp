@@ -13,6 +13,8 @@
 #include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/core/expression.hpp"
 #include "mpm/diagnostics/energy_sentinel.hpp"
+#include "mpm/failure/failing_material.hpp"
+#include "mpm/failure/failure_module.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/geometry_error.hpp"
@@ -164,6 +166,14 @@ bool add_domain_fields(Body<Dim>& body, const SceneDescription& scene, const Bod
   return track_corners;
 }
 
+/// The material of a body: its model's, wrapped when the scene material has a `failure:` block (failing_material.hpp).
+template <int Dim>
+std::shared_ptr<Material<Dim>> body_material(const MaterialDescription& description) {
+  std::unique_ptr<Material<Dim>> material = make_material<Dim>(description);
+  if (description.failure) return std::make_shared<FailingMaterial<Dim>>(std::move(material));
+  return material;
+}
+
 /// The on-demand fields a run of the scene adds to a body besides its particle domains: APIC's affine velocity
 /// (and PolyPIC's higher modes),
 /// the axisymmetric hoop fields, what the output and the histories read, the material's history.
@@ -190,7 +200,7 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   Body<Dim> body;
   body.name = bd.name;
   body.index = index;
-  body.material = make_material<Dim>(scene.materials.at(bd.material));
+  body.material = body_material<Dim>(scene.materials.at(bd.material));
   std::vector<std::string> warnings;  // repairs of mesh files (printed, the run goes on)
   geometry::CpdiParticles<Dim> elements;
   std::optional<SeedParticles<Dim>> seed;  // a body from a particle file
@@ -284,7 +294,7 @@ std::vector<Body<Dim>> prototype_bodies(const SceneDescription& scene, const Gri
     Body<Dim> body;
     body.name = bd.name;
     body.index = k;
-    body.material = make_material<Dim>(scene.materials.at(bd.material));
+    body.material = body_material<Dim>(scene.materials.at(bd.material));
     add_domain_fields<Dim>(body, scene, bd, geometry, shape, geometry::CpdiParticles<Dim>{});
     add_run_fields<Dim>(body, scene, geometry);
     bodies.push_back(std::move(body));
@@ -294,6 +304,33 @@ std::vector<Body<Dim>> prototype_bodies(const SceneDescription& scene, const Gri
 }
 
 namespace {
+
+/// The failure module (failure/failure_module.hpp) of a scene in which a material has a `failure:` block. Erosion
+/// removes particles, which a scheme that keeps its particles in their initial order cannot (TLMPM); the criterion
+/// min_time_step needs each particle's wave speed of its model.
+template <int Dim>
+void add_failure_module(const SceneDescription& scene, Simulation<Dim>& sim, bool reorders_particles) {
+  std::vector<BodyFailure> bodies;
+  for (const auto& b : sim.bodies()) {
+    const MaterialDescription& m = scene.materials.at(scene.bodies[static_cast<std::size_t>(b.index)].material);
+    if (!m.failure) continue;
+    const std::string key = "materials." + m.name + ".failure";
+    if (m.failure->action == FailureAction::erode && !reorders_particles)
+      throw SceneError(m.failure_where, key,
+                       fmt::format("scheme {}: erosion removes particles, which a scheme that keeps per-particle data "
+                                   "in the particles' initial order cannot (the reference stencils); use action: fail, "
+                                   "or scheme usl, musl or usf",
+                                   scene.solver.scheme));
+    std::vector<Real> speeds;
+    if (m.failure->min_time_step && !b.material->particle_wave_speeds(b.particles, speeds))
+      throw SceneError(m.failure_where, key + ".min_time_step",
+                       fmt::format("model {} gives no wave speed per particle, which the particle's own time step "
+                                   "(eq. 16.3) needs; use another criterion",
+                                   m.model));
+    bodies.push_back({b.index, *m.failure});
+  }
+  if (!bodies.empty()) sim.add_module(std::make_shared<FailureModule<Dim>>(std::move(bodies), sim.settings().cfl));
+}
 
 /// The energy sentinel of every run (energy_sentinel.hpp), with the rigid partners of the modules that hold the
 /// bodies (reaction_provider.hpp) and the method it quotes hints for.
@@ -330,6 +367,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
   check_memory<Dim>(scene, geometry, available_memory());  // before anything the size of the scene is allocated
   auto scheme = make_scene_scheme<Dim>(scene);
+  const bool reorders_particles = scheme->reorders_particles();
   const ShapeFunctionInfo& shape = *find_shape_function(scene.solver.shape_function);
   check_output_against_shape_function(scene, shape);
 
@@ -351,6 +389,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   for (auto& m : modules) sim->add_module(std::move(m));
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));
+  add_failure_module<Dim>(scene, *sim, reorders_particles);
   add_energy_sentinel<Dim>(scene, *sim);  // last: its E(0) is the audit of the complete initial state
   check_fixed_time_step<Dim>(scene, *sim);
   check_time_step(estimate_steps<Dim>(scene, *sim), scene);  // 0, infinite, or too small to reach end_time

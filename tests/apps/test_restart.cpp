@@ -263,6 +263,30 @@ Case outflow() {
           checkpoint_at(0.06)};
 }
 
+// Erosion (materials.NAME.failure): block a erodes whole at step 51 (t = 0.051 s: its particles' own time step
+// falls to the floor as it falls, tests/libmpm/test_failure.cpp), after the checkpoint at 0.03 s, and block b of
+// the pulled-apart cut erodes at its first steps, before it; the eroded books and energy.csv's eroded_* columns
+// continue from the checkpoint.
+Case erosion() {
+  return {"erosion",
+          "dimension: 2\n"
+          "grid: {extent: [2, 1], cell_size: 0.1, boundary: {y_min: slip, y_max: slip}}\n"
+          "materials:\n"
+          "  brittle: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e4, poisson_ratio: 0.3, failure: "
+          "{min_time_step: 1.2e-2}}\n"
+          "  cut: {model: neo_hookean, density: 1000, youngs_modulus: 1.0e4, poisson_ratio: 0.3, failure: "
+          "{principal_stress: 500}}\n"
+          "bodies:\n"
+          "  - {name: a, material: brittle, shape: {type: box, min: [0.1, 0.5], max: [0.4, 0.9]}}\n"
+          "  - {name: left, material: cut, shape: {type: box, min: [0.6, 0.1], max: [1.2, 0.4]}, velocity: [-1, 0]}\n"
+          "  - {name: right, material: cut, shape: {type: box, min: [1.2, 0.1], max: [1.8, 0.4]}, velocity: [1, 0]}\n"
+          "solver: {scheme: usl, dt: 1.0e-3, end_time: 0.08, gravity: [0, -9.81]}\n"
+          "output:\n"
+          "  interval: 0.01\n"
+          "  fields: [velocity, stress, failed]\n" +
+              checkpoint_at(0.03)};
+}
+
 class InterruptedRun : public ::testing::TestWithParam<Case> {};
 
 TEST_P(InterruptedRun, ReachesTheSameBitsAsTheUninterruptedOne) {
@@ -270,7 +294,7 @@ TEST_P(InterruptedRun, ReachesTheSameBitsAsTheUninterruptedOne) {
 }
 
 std::vector<Case> cases() {
-  std::vector<Case> all{two_disks(), cpdi_q4(), tlmpm(), apic(), histories(), outflow()};
+  std::vector<Case> all{two_disks(), cpdi_q4(), tlmpm(), apic(), histories(), outflow(), erosion()};
 #ifdef MPM_WITH_FLUIDS
   all.push_back(dam_break());
   all.push_back(sod());

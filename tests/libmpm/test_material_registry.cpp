@@ -52,11 +52,13 @@ TEST(MaterialRegistry, CoreModelsAreRegisteredWithTheirMakers) {
     ASSERT_NE(model, nullptr) << key;
     EXPECT_EQ(model->parameters.size(), 3u);
     EXPECT_TRUE(model->make_1d && model->make_2d && model->make_3d) << key;
-    mpm::MaterialDescription d{"m", key, {{"density", 1000}, {"youngs_modulus", 1e6}, {"poisson_ratio", 0.3}}, {}};
+    mpm::MaterialDescription d{"m", key, {{"density", 1000}, {"youngs_modulus", 1e6}, {"poisson_ratio", 0.3}},
+                               {},  {},  {}};
     EXPECT_EQ(mpm::make_material<2>(d)->model(), key);
     EXPECT_EQ(mpm::make_material<3>(d)->density(), 1000);
   }
-  EXPECT_THROW(mpm::make_material<2>(mpm::MaterialDescription{"m", "no_such_model", {}, {}}), std::invalid_argument);
+  EXPECT_THROW(mpm::make_material<2>(mpm::MaterialDescription{"m", "no_such_model", {}, {}, {}, {}}),
+               std::invalid_argument);
 }
 
 TEST(MaterialRegistry, LoaderFillsDefaultsFromTheSpecAndLeavesOptionalsOut) {

@@ -23,7 +23,11 @@ GridBoundary<Dim>::GridBoundary(const GridGeometry<Dim>& g, std::vector<std::uni
     }
     if (const auto plane = c->removal()) {
       removals_.push_back(*plane);
-      books_.push_back(OutflowBook{face, {}, {}});
+      {
+        OutflowBook book;
+        book.face = face;
+        books_.push_back(book);
+      }
     }
   }
 }

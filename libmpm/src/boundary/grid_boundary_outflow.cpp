@@ -20,95 +20,36 @@ std::string OutflowNotice::message() const {
       face_names[static_cast<std::size_t>(face)]);
 }
 
-namespace {
-
-/// The terms of a book in a fixed order (for the reduction over the ranks and the archive).
-constexpr int book_terms = 10;
-std::array<ExactSum*, book_terms> terms_of(OutflowBook& b) {
-  auto& s = b.sums;
-  return {&s.kinetic, &s.strain,      &s.gravity,     &s.plastic_work, &s.thermal,
-          &s.mass,    &s.momentum[0], &s.momentum[1], &s.momentum[2],  &b.particles};
-}
-constexpr std::array<const char*, book_terms> term_names{"kinetic",    "strain",   "gravity",    "plastic_work",
-                                                         "thermal",    "mass",     "momentum_x", "momentum_y",
-                                                         "momentum_z", "particles"};
-
-void put_exact(StateArchive& archive, const std::string& name, const ExactSum& s) {
-  const ExactSum::Digits digits = s.carried_digits();
-  archive.put_values<std::int64_t>(name + "/digits", std::span<const std::int64_t>(digits.data(), digits.size()));
-  archive.put_number(name + "/special", s.special());
-}
-
-ExactSum exact(const StateArchive& archive, const std::string& name) {
-  const auto values = archive.values<std::int64_t>(name + "/digits");
-  ExactSum::Digits digits{};
-  if (values.size() != digits.size())
-    throw ArchiveError(fmt::format("{}/digits: expected {} values, found {}", name, digits.size(), values.size()));
-  std::copy(values.begin(), values.end(), digits.begin());
-  return ExactSum::from_digits(digits, archive.number(name + "/special"));
-}
-
-}  // namespace
-
 template <int Dim>
 void GridBoundary<Dim>::end_of_step(StepContext<Dim>& ctx) {
   const std::size_t faces = removals_.size(), bodies = ctx.bodies.size();
-  std::vector<OutflowBook> step(faces);
+  std::vector<RemovedBook> step(faces);
+  std::vector<RemovedBook*> into(faces);
+  for (std::size_t k = 0; k < faces; ++k) into[k] = &step[k];
   std::vector<std::int64_t> left(faces * bodies, 0);  // per (face, body)
-  empty_sets_.resize(bodies);
   bool any = false;
-  std::vector<Index> stay;
   std::vector<std::vector<Index>> leave(faces);
   for (std::size_t b = 0; b < bodies; ++b) {
     Body<Dim>& body = ctx.bodies[b];
-    ParticleSet<Dim>& p = body.particles;
-    stay.clear();
+    const ParticleSet<Dim>& p = body.particles;
     for (auto& l : leave) l.clear();
     for (Index i = 0; i < p.size(); ++i) {
       std::size_t k = 0;
       while (k < faces && !removals_[k].beyond(p.x[i][removals_[k].axis])) ++k;
-      (k < faces ? leave[k] : stay).push_back(i);
+      if (k < faces) leave[k].push_back(i);
     }
-    if (static_cast<Index>(stay.size()) == p.size()) continue;
-    any = true;
-    ParticleSet<Dim>& empty = empty_sets_[b];
-    if (empty.field_layout().size() != p.field_layout().size()) {  // once per body: the body's fields, no particle
-      empty = p;
-      empty.gather({});
-    }
-    for (std::size_t k = 0; k < faces; ++k) {
-      if (leave[k].empty()) continue;
-      Body<Dim> gone;  // the leaving particles as a body of their own, audited as Simulation::energy() audits
-      gone.name = body.name;
-      gone.index = body.index;
-      gone.material = body.material;
-      gone.particles = empty;
-      std::vector<std::byte> bytes;
-      p.pack(leave[k], bytes);
-      gone.particles.append_packed(bytes, static_cast<Index>(leave[k].size()));
-      add_body_energy(gone, ctx.settings.gravity, ctx.hooks.all(), step[k].sums);
-      step[k].particles += static_cast<double>(leave[k].size());
-      left[k * bodies + b] += static_cast<std::int64_t>(leave[k].size());
-    }
-    p.gather(stay);
+    for (std::size_t k = 0; k < faces; ++k) left[k * bodies + b] += static_cast<std::int64_t>(leave[k].size());
+    any = remover_.remove(body, leave, into, ctx.settings.gravity, ctx.hooks.all()) > 0 || any;
   }
   if (ctx.comm) {  // every rank's departures: the same books on every rank
     if (!ctx.comm->any(any)) return;
-    std::vector<ExactSum> all;
-    for (auto& s : step)
-      for (ExactSum* term : terms_of(s)) all.push_back(*term);
-    ctx.comm->sum(std::span<ExactSum>(all));
-    std::size_t j = 0;
-    for (auto& s : step)
-      for (ExactSum* term : terms_of(s)) *term = all[j++];
+    reduce_books(*ctx.comm, step);
     ctx.comm->sum(std::span<std::int64_t>(left));
   } else if (!any) {
     return;
   }
   for (std::size_t k = 0; k < faces; ++k) {
-    auto into = terms_of(books_[k]);
-    const auto from = terms_of(step[k]);
-    for (int t = 0; t < book_terms; ++t) into[static_cast<std::size_t>(t)]->merge(*from[static_cast<std::size_t>(t)]);
+    books_[k].merge(step[k]);
     for (std::size_t b = 0; b < bodies; ++b) {
       const std::int64_t count = left[k * bodies + b];
       if (count == 0) continue;
@@ -125,12 +66,7 @@ void GridBoundary<Dim>::end_of_step(StepContext<Dim>& ctx) {
 template <int Dim>
 Real GridBoundary<Dim>::outflow_energy() const {
   ExactSum e;
-  for (const auto& b : books_) {
-    e.merge(b.sums.kinetic);
-    e.merge(b.sums.strain);
-    e.merge(b.sums.gravity);
-    e.merge(b.sums.plastic_work);
-  }
+  for (const auto& b : books_) b.add_total_energy(e);
   return e.value();
 }
 
@@ -150,15 +86,8 @@ std::vector<std::string> GridBoundary<Dim>::outflow_summary() const {
 template <int Dim>
 void GridBoundary<Dim>::save_state(StateArchive& archive, const std::string& prefix) const {
   if (books_.empty()) return;
-  for (const auto& b : books_) {
-    OutflowBook copy = b;
-    const auto terms = terms_of(copy);
-    for (int t = 0; t < book_terms; ++t)
-      put_exact(archive,
-                fmt::format("{}outflow/{}/{}", prefix, face_names[static_cast<std::size_t>(b.face)],
-                            term_names[static_cast<std::size_t>(t)]),
-                *terms[static_cast<std::size_t>(t)]);
-  }
+  for (const auto& b : books_)
+    save_book(archive, fmt::format("{}outflow/{}/", prefix, face_names[static_cast<std::size_t>(b.face)]), b);
   std::vector<std::int64_t> face, step, particles;
   std::vector<Real> time;
   std::string body;
@@ -180,15 +109,8 @@ template <int Dim>
 void GridBoundary<Dim>::restore_state(const StateArchive& archive, const std::string& prefix) {
   if (books_.empty()) return;
   notices_.clear();
-  for (auto& b : books_) {
-    const std::string face = fmt::format("{}outflow/{}/", prefix, face_names[static_cast<std::size_t>(b.face)]);
-    b.sums = {};
-    b.particles = {};
-    if (!archive.contains(face + "mass/digits")) continue;  // a checkpoint of a run without this outflow face
-    const auto terms = terms_of(b);
-    for (int t = 0; t < book_terms; ++t)
-      *terms[static_cast<std::size_t>(t)] = exact(archive, face + term_names[static_cast<std::size_t>(t)]);
-  }
+  for (auto& b : books_)  // a checkpoint of a run without this outflow face: empty books
+    restore_book(archive, fmt::format("{}outflow/{}/", prefix, face_names[static_cast<std::size_t>(b.face)]), b);
   if (!archive.contains(prefix + "notices/face")) return;
   const auto face = archive.values<std::int64_t>(prefix + "notices/face");
   const auto step = archive.values<std::int64_t>(prefix + "notices/step");

@@ -99,6 +99,8 @@ void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
   Real balance = (e.total() - initial_.total()) - work_;
   // What left through outflow faces took its energy along (GridBoundary's books, the same on every rank).
   if (ctx.boundary.removes_particles()) balance += ctx.boundary.outflow_energy();
+  // What eroded took its energy along too (the failure module's books, the same on every rank).
+  for (const auto& m : ctx.hooks.all()) balance += m->removed_energy();
   const Real scale = e.kinetic + e.strain + e.plastic_work + std::abs(e.gravity - initial_.gravity) + std::abs(work_);
   if (scale > scale_ || std::isnan(scale)) scale_ = scale;
   const Real tolerance = fraction_ * scale_;

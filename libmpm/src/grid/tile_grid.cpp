@@ -1,5 +1,9 @@
 #include "mpm/grid/tile_grid.hpp"
 
+#include <algorithm>
+
+#include "mpm/grid/tile_binning.hpp"
+
 namespace mpm {
 
 std::pair<int, int> TileGrid::reach(int d, int c) const {

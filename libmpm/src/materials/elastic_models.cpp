@@ -34,7 +34,9 @@ MaterialModel elastic_model(std::string description, ThermalExpansion expansion)
           &make_elastic<2, Law>,
           &make_elastic<3, Law>,
           expansion,
-          /*implicit_stress=*/false};
+          /*implicit_stress=*/false,
+          /*tracks_plastic_strain=*/false,
+          /*damage_enabled_by=*/{}};
 }
 
 }  // namespace

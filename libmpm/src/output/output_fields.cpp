@@ -122,6 +122,15 @@ std::deque<OutputField> core_fields() {
                            "the particle domains as cells, in their own files `PREFIX_domains_NNNNNN.vtu` / "
                            "`PREFIX_domains.pvd`; only with `gimp`, `cpgimp` and the `cpdi_*` functions",
                            nullptr));  // not a point field: OutputWriter writes the cells to files of their own
+  // written by a material with `failure:` (FailingMaterial::append_output); 0 in any other body
+  t.push_back(output_field("failed", 1, "-",
+                           "1 for a particle that failed with action `fail` (it carries only compressive pressure, "
+                           "eq. 16.2), else 0; 0 in bodies whose material has no `failure:`",
+                           [](const auto& b, std::vector<double>& out) {
+                             if (!b.material->append_output("failed", b.particles, out))
+                               out.insert(out.end(), static_cast<std::size_t>(b.particles.size()), 0.0);
+                           }));
+  t.back().material_output = true;
   t.push_back(output_field(
       "id", 1, "-", "index of the particle at creation (stable when particles are reordered)",
       [](const auto& b, std::vector<double>& out) { each(b, [&](Index i) { out.push_back(b.particles.id[i]); }); }));

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "mpm/core/due_time.hpp"
+#include "mpm/failure/failure_module.hpp"
 #include "mpm/io/collective_write.hpp"
 #include "mpm/io/pvtu_writer.hpp"
 #include "mpm/output/particle_domain_mesh.hpp"
@@ -31,16 +32,35 @@ const std::vector<std::string> outflow_energy_columns{"kinetic_energy", "strain_
                                                       "momentum_z",     "mass",          "plastic_work",
                                                       "thermal_energy", "particles"};
 
+/// With erosion (a material's `failure:` with action erode), what the eroded particles took along since t = 0
+/// (FailureModule::eroded): eroded_ and the outflow columns' names, with eroded_internal_energy (strain + thermal)
+/// after eroded_strain_energy. The books close as the outflow's: mass + eroded_mass is the initial mass, and
+/// total_energy + eroded_total_energy is E(0) + W (docs/theory.md eq. 8.4).
+const std::vector<std::string> eroded_energy_columns{
+    "kinetic_energy", "strain_energy", "internal_energy", "gravity_potential_energy",
+    "total_energy",   "momentum_x",    "momentum_y",      "momentum_z",
+    "mass",           "plastic_work",  "thermal_energy",  "particles"};
+
+/// The run's failure module when a material erodes, else null.
+template <int Dim>
+const FailureModule<Dim>* erosion_of(const Simulation<Dim>& sim) {
+  for (const auto& m : sim.modules())
+    if (const auto* f = dynamic_cast<const FailureModule<Dim>*>(m.get()); f && f->erodes()) return f;
+  return nullptr;
+}
+
 template <int Dim>
 std::vector<std::string> energy_columns(const Simulation<Dim>& sim) {
   std::vector<std::string> columns = base_energy_columns;
   for (const auto& book : sim.boundary().outflow())
     for (const auto& c : outflow_energy_columns)
       columns.push_back(fmt::format("outflow_{}_{}", face_names[static_cast<std::size_t>(book.face)], c));
+  if (erosion_of(sim))
+    for (const auto& c : eroded_energy_columns) columns.push_back("eroded_" + c);
   return columns;
 }
 
-/// The columns of the energy.csv a restart continues: the base ones and the outflow ones its header has.
+/// The columns of the energy.csv a restart continues: the base ones and the outflow and eroded ones its header has.
 std::vector<std::string> continued_energy_columns(const io::FileMark& mark) {
   std::vector<std::string> columns = base_energy_columns;
   std::ifstream in(mark.path);
@@ -50,7 +70,8 @@ std::vector<std::string> continued_energy_columns(const io::FileMark& mark) {
   for (std::size_t k = 0; begin <= header.size(); ++k) {
     const std::size_t end = std::min(header.find(',', begin), header.size());
     const std::string name = header.substr(begin, end - begin);
-    if (k >= base_energy_columns.size() && name.rfind("outflow_", 0) == 0) columns.push_back(name);
+    if (k >= base_energy_columns.size() && (name.rfind("outflow_", 0) == 0 || name.rfind("eroded_", 0) == 0))
+      columns.push_back(name);
     begin = end + 1;
   }
   return columns;
@@ -317,12 +338,19 @@ std::vector<double> OutputWriter<Dim>::energy_row(const Simulation<Dim>& sim) co
     row.insert(row.end(), {out.kinetic, out.strain, out.gravity, out.total(), out.momentum[0], out.momentum[1],
                            out.momentum[2], out.mass, out.plastic_work, out.thermal, book.particle_count()});
   }
+  if (const auto* failure = erosion_of(sim)) {  // the same on every rank
+    const RemovedBook book = failure->eroded();
+    const EnergyBalance out = book.value();
+    row.insert(row.end(),
+               {out.kinetic, out.strain, out.strain + out.thermal, out.gravity, out.total(), out.momentum[0],
+                out.momentum[1], out.momentum[2], out.mass, out.plastic_work, out.thermal, book.particle_count()});
+  }
   return row;
 }
 
 template <int Dim>
 void OutputWriter<Dim>::append_energy_row(const Simulation<Dim>& sim, const std::vector<double>& row) {
-  // A scene with outflow faces has their columns too: the first frame writes the header again with them.
+  // A scene with outflow faces or erosion has their columns too: the first frame writes the header again with them.
   if (frame_ == 0 && energy_->columns().size() != row.size())
     energy_ = std::make_unique<io::CsvLog>(energy_->path(), energy_columns(sim));
   energy_->append(row);

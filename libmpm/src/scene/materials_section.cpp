@@ -17,6 +17,11 @@ const std::vector<io::KeySpec>& material_keys() {
        .required = true,
        .description = "the material model; its parameters are the other keys of the entry (tables below)",
        .allowed_text = "a registered material model, see [Models](#models)"},
+      {.name = "failure",
+       .type = io::KeyType::map,
+       .absent = "never fails",
+       .description = "when the material's particles fail and what they become (keys of materials.failure below)",
+       .keys = failure_keys()},
   };
   return keys;
 }
@@ -57,6 +62,10 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
       if (const auto value = map.map().find(error->key)) reader.fail(*value, error->message);
       reader.fail(entry.key_mark, map.map().path_of(error->key), error->message);
     }
+  if (const auto failure = map.find("failure")) {
+    material.failure_where = reader.location(failure->mark);
+    material.failure = read_failure(reader, *failure, material, *model);
+  }
   return material;
 }
 

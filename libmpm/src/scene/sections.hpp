@@ -10,6 +10,10 @@
 #include "mpm/scene/scene.hpp"
 #include "mpm/scene/yaml_reader.hpp"
 
+namespace mpm {
+struct MaterialModel;
+}
+
 namespace mpm::sections {
 
 using io::Range;
@@ -35,6 +39,9 @@ GridDescription read_grid(const io::YamlReader& reader, const io::YamlValue& val
 void read_coordinates(const io::YamlReader& reader, const io::YamlMap& map, int dimension, GridDescription& grid);
 /// `materials:`, checked against the registered models (materials_section.cpp).
 std::map<std::string, MaterialDescription> read_materials(const io::YamlReader& reader, const io::YamlValue& value);
+/// `materials.NAME.failure` of `material`, whose model is `model` (failure_block.cpp).
+FailureCriteria read_failure(const io::YamlReader& reader, const io::YamlValue& value,
+                             const MaterialDescription& material, const MaterialModel& model);
 /// `bodies:`, with their shapes (bodies_section.cpp); needs the grid and the materials.
 std::vector<BodyDescription> read_bodies(const io::YamlReader& reader, const io::YamlValue& value,
                                          const SceneDescription& scene);

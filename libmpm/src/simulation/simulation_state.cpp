@@ -15,6 +15,7 @@
 #include <numeric>
 #include <optional>
 
+#include "mpm/failure/failure_module.hpp"
 #include "mpm/simulation/simulation.hpp"
 
 namespace mpm {
@@ -150,18 +151,23 @@ std::vector<std::string> Simulation<Dim>::restore_state(const StateArchive& arch
   const auto saved_bodies = archive.children("bodies/");
   if (saved_bodies.size() != bodies_.size())
     throw ArchiveError(fmt::format("the checkpoint has {} bodies, the scene {}", saved_bodies.size(), bodies_.size()));
+  // particles may have left before the checkpoint: through an outflow face, or eroded (failure_module.hpp)
+  bool removes_particles = boundary_->removes_particles();
+  for (const auto& m : hooks_.all())
+    if (const auto* failure = dynamic_cast<const FailureModule<Dim>*>(m.get()); failure && failure->erodes())
+      removes_particles = true;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     auto& p = bodies_[b].particles;
     const std::string& prefix = prefixes[b];
     if (!archive.contains(prefix + storage_order_entry))
       throw ArchiveError(fmt::format("the checkpoint has no body '{}'", bodies_[b].name));
     const auto storage = archive.values<std::uint32_t>(prefix + storage_order_entry);
-    const bool removed = boundary_->removes_particles() && static_cast<Index>(storage.size()) < p.size();
+    const bool removed = removes_particles && static_cast<Index>(storage.size()) < p.size();
     if (static_cast<Index>(storage.size()) != p.size() && !removed)
       throw ArchiveError(fmt::format("body '{}' has {} particles in the checkpoint and {} in the scene",
                                      bodies_[b].name, storage.size(), p.size()));
     p.gather(id_order(p));  // fields the checkpoint lacks then line up with the ones it restores
-    if (removed) {          // particles left through an outflow face before the checkpoint: keep the saved ones, by id
+    if (removed) {          // particles left (outflow, erosion) before the checkpoint: keep the saved ones, by id
       std::vector<std::uint32_t> saved(storage.begin(), storage.end());
       std::sort(saved.begin(), saved.end());
       std::vector<Index> kept;

@@ -62,6 +62,11 @@ void refuse_materials(const SceneDescription& scene) {
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const BodyDescription& body = scene.bodies[b];
     const MaterialDescription& material = scene.materials.at(body.material);
+    if (material.failure)
+      throw SceneError(material.failure_where, "materials." + material.name + ".failure",
+                       "scheme: implicit cannot take failure: its Newton solve and energy-consistent update (ref. "
+                       "003) are written for a fixed set of particles with a smooth stress, and erosion removes "
+                       "particles, failure cuts the stress to a pressure; use an explicit scheme (usl, musl or usf)");
     if (const MaterialModel* model = find_material_model(material.model); !model || !model->implicit_stress)
       throw SceneError(body.where, fmt::format("bodies[{}].material", b),
                        fmt::format("scheme: implicit needs the material model {} (the algorithmic stress of "

@@ -43,7 +43,8 @@ MaterialModel hencky_j2_model() {
       .make_1d = &make_hencky_j2<1>,
       .make_2d = &make_hencky_j2<2>,
       .make_3d = &make_hencky_j2<3>,
-      .implicit_stress = true};
+      .implicit_stress = true,
+      .tracks_plastic_strain = true};
 }
 
 template <int Dim>

@@ -142,7 +142,9 @@ MaterialModel johnson_cook_model() {
           .make_1d = &make_johnson_cook<1>,
           .make_2d = &make_johnson_cook<2>,
           .make_3d = &make_johnson_cook<3>,
-          .thermal_expansion = ThermalExpansion::in_update};
+          .thermal_expansion = ThermalExpansion::in_update,
+          .tracks_plastic_strain = true,
+          .damage_enabled_by = "damage_d1"};
 }
 
 MaterialModel j2_model() {
@@ -162,7 +164,9 @@ MaterialModel j2_model() {
           .make_1d = &make_j2_plasticity<1>,
           .make_2d = &make_j2_plasticity<2>,
           .make_3d = &make_j2_plasticity<3>,
-          .thermal_expansion = ThermalExpansion::in_update};
+          .thermal_expansion = ThermalExpansion::in_update,
+          .tracks_plastic_strain = true,
+          .damage_enabled_by = "damage_d1"};
 }
 
 }  // namespace

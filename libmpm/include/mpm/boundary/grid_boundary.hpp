@@ -111,8 +111,7 @@ class GridBoundary final : public Module<Dim> {
   std::vector<RemovalPlane> removals_;  ///< the outflow faces' planes, in face order (books_ alike)
   std::vector<OutflowBook> books_;
   std::vector<OutflowNotice> notices_;
-  /// per body: an empty particle set with the body's fields (the removed particles are packed into a copy)
-  std::vector<ParticleSet<Dim>> empty_sets_;
+  ParticleRemover<Dim> remover_;  ///< takes the leaving particles out and books them
 };
 
 }  // namespace mpm

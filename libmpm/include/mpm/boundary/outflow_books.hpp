@@ -7,17 +7,14 @@
 #include <string>
 
 #include "mpm/boundary/face.hpp"
+#include "mpm/removal/removed_particles.hpp"
 #include "mpm/simulation/energy.hpp"
 
 namespace mpm {
 
-/// The books of one outflow face since t = 0.
-struct OutflowBook {
-  int face = 0;     ///< the order of face_names
-  EnergySums sums;  ///< of the removed particles, as they were at the end of the step they left in
-  ExactSum particles;
-  EnergyBalance value() const { return sums.value(); }
-  double particle_count() const { return particles.value(); }
+/// The books of one outflow face since t = 0 (removal/removed_particles.hpp).
+struct OutflowBook : RemovedBook {
+  int face = 0;  ///< the order of face_names
 };
 
 /// The first time particles of a body left through a face: the run loop logs message() on that step, once.

@@ -5,6 +5,7 @@
 /// concrete model, which the batch loop in MaterialBatch calls without any virtual dispatch.
 
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -78,6 +79,13 @@ class Material {
   /// Kinematic viscosity nu (m^2/s) of the model's viscous stress, 0 if it has none: the simulation adds the
   /// explicit diffusion bound dt <= h^2 / (2 Dim nu) to the CFL bound (review §5.4).
   virtual Real kinematic_viscosity() const { return 0; }
+  /// Each particle's dilatational wave speed c (m/s) in its current state, into `c` (resized to p.size()), for the
+  /// failure criterion min_time_step (eq. 16.3); false when the model cannot give it per particle.
+  virtual bool particle_wave_speeds(const ParticleSet<Dim>&, std::vector<Real>& /*c*/) const { return false; }
+  /// The particles `which` failed (failure/failure_criteria.hpp, action fail): a model with a failed state of its own
+  /// enters it (plasticity: damage D = 1, which stops plastic flow and tension, eq. B.16), so that its history stays
+  /// consistent with the pressure-only stress the failure wrapper gives them. Nothing for the others.
+  virtual void mark_failed(ParticleSet<Dim>&, std::span<const Index> /*which*/) const {}
   /// A message when the particles' state has left the range in which the model is valid (e.g. a weakly
   /// compressible fluid compressed beyond its stated tolerance), empty otherwise. The run checks it at each
   /// output frame and logs the first message of every body.

@@ -71,6 +71,14 @@ class MaterialBatch final : public Material<Dim> {
     }
   }
 
+  bool particle_wave_speeds(const ParticleSet<Dim>& p, std::vector<Real>& c) const override {
+    const Real* hoop = axisym::hoop_stretch_of(p);
+    c.resize(static_cast<std::size_t>(p.size()));
+    for (Index i = 0; i < p.size(); ++i)
+      c[static_cast<std::size_t>(i)] = Model::wave_speed(params_, axisym::volume_ratio(p, i, hoop));
+    return true;
+  }
+
   WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override {
     const Real* hoop = axisym::hoop_stretch_of(p);
     WaveSpeedBound<Dim> bound;

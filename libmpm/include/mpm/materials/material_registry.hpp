@@ -91,6 +91,12 @@ struct MaterialModel {
   /// Gives the algorithmic stress the implicit scheme solves with (ref. 003, eqs. 81-83, 90): a trial update without
   /// committing state, and its commit. Asked by `scheme: implicit`.
   bool implicit_stress = false;
+  /// Keeps an equivalent plastic strain (output field `plastic_strain`): the failure criterion `plastic_strain` is
+  /// refused for a model without it.
+  bool tracks_plastic_strain = false;
+  /// The parameter whose presence gives the model Johnson-Cook damage (output field `damage`, e.g. "damage_d1");
+  /// empty: no damage. The failure criterion `damage` is refused for a material without it.
+  std::string damage_enabled_by{};
 };
 
 /// Adds a model (or replaces the one with the same key). Call before loading scenes; the optional modules'

@@ -55,5 +55,10 @@ inline constexpr FieldKey<Real> hoop_stretch{"hoop_stretch"};
 inline constexpr FieldKey<Real> hoop_velocity_gradient{"hoop_velocity_gradient"};
 /// Temperature, K: added by a plastic material with specific_heat and by the thermal module's bodies.
 inline constexpr FieldKey<Real> temperature{"temperature"};
+/// Bodies whose material has a `failure:` block (failure/failing_material.hpp): 1 for a failed particle that carries
+/// only compressive pressure (action fail), else 0; and the work its stress has done per reference volume,
+/// integral of J sigma : D dt (J/m^3), from which its strain energy is booked (eq. 16.4).
+inline constexpr FieldKey<Real> failed{"failed"};
+inline constexpr FieldKey<Real> stress_work{"stress_work"};
 
 }  // namespace mpm::keys

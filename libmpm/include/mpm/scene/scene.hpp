@@ -13,6 +13,7 @@
 
 #include "mpm/boundary/face_names.hpp"
 #include "mpm/core/coordinates.hpp"
+#include "mpm/failure/failure_criteria.hpp"
 #include "mpm/simulation/solver_options.hpp"
 
 namespace mpm {
@@ -55,6 +56,9 @@ struct MaterialDescription {
   std::string model;
   std::map<std::string, double> parameters;
   SourceLocation where;
+  /// `failure:` (failure/failure_criteria.hpp): when its particles fail and what they become; absent: never.
+  std::optional<FailureCriteria> failure;
+  SourceLocation failure_where;  ///< the `failure:` key
 };
 
 /// The shape a body is filled from (docs/scene-reference.md, bodies[].shape): a primitive, a polygon, a CAD

@@ -19,6 +19,8 @@ const std::vector<io::KeySpec>& history_keys();
 const std::vector<io::KeySpec>& body_keys();
 /// One entry of `materials:` besides its model's parameters (src/scene/materials_section.cpp).
 const std::vector<io::KeySpec>& material_keys();
+/// `failure:` of a material (src/scene/failure_block.cpp): the criteria and the action of failure_criteria.hpp.
+const std::vector<io::KeySpec>& failure_keys();
 
 /// The top level of a scene (src/scene_loader.cpp): the core's sections, then the registered modules' (sorted),
 /// each with the keys it declares (none for a section whose reader does not read through specs yet).

@@ -60,6 +60,21 @@ class PlasticBatch final : public Material<Dim> {
     return bound;
   }
 
+  bool particle_wave_speeds(const ParticleSet<Dim>& p, std::vector<Real>& c) const override {
+    const Real* hoop = axisym::hoop_stretch_of(p);
+    c.resize(static_cast<std::size_t>(p.size()));
+    for (Index i = 0; i < p.size(); ++i)
+      c[static_cast<std::size_t>(i)] = Model::wave_speed(params_, axisym::volume_ratio(p, i, hoop));
+    return true;
+  }
+
+  /// A failed particle is fully damaged (D = 1): no deviatoric stress, no plastic flow, no tension (eq. B.16 and
+  /// docs/errata.md #28), from now on.
+  void mark_failed(ParticleSet<Dim>& p, std::span<const Index> which) const override {
+    auto& state = p.field(state_field);
+    for (const Index i : which) state[static_cast<std::size_t>(i)].damage = 1;
+  }
+
   void add_strain_energy(const ParticleSet<Dim>& p, ExactSum& e) const override {
     const Real* hoop = axisym::hoop_stretch_of(p);
     for (Index i = 0; i < p.size(); ++i)
