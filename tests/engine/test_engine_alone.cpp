@@ -54,7 +54,7 @@ TEST(EngineAlone, AFallingBlockFollowsTheClosedForm) {
   const Real n = std::round(t / dt);
   const auto& p = sim->bodies()[0].particles;
   Real momentum = 0, mass = 0, largest_stress = 0;
-  for (std::size_t k = 0; k < p.size(); ++k) {
+  for (Index k = 0; k < p.size(); ++k) {
     EXPECT_NEAR(p.v[k][1], g * t, 1e-10) << "particle " << k;
     EXPECT_NEAR(p.v[k][0], 0, 1e-12) << "particle " << k;
     EXPECT_NEAR(p.x[k][1] - x0[k][1], 0.5 * g * dt * dt * n * (n + 1), 1e-10) << "particle " << k;

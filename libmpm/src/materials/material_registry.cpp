@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "materials/elastic_models.hpp"
+#include "elastic_models.hpp"
 
 namespace mpm {
 namespace {

@@ -13,7 +13,7 @@
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/spec_map.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
-#include "scene/sections.hpp"
+#include "sections.hpp"
 
 namespace mpm {
 namespace {

@@ -4,7 +4,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "schemes/core_schemes.hpp"
+#include "core_schemes.hpp"
 
 namespace mpm {
 namespace {
