@@ -70,6 +70,10 @@ struct ShapeDescription {
   const Spec& as() const {
     return std::any_cast<const Spec&>(spec);
   }
+  template <class Spec>
+  Spec& as() {
+    return std::any_cast<Spec&>(spec);
+  }
 };
 
 /// A body: a set of particles with one material.
