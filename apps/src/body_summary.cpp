@@ -18,9 +18,9 @@ std::string body_summary(const Simulation<Dim>& sim) {
       volume.add(b.particles.volume0[i]);
       mass.add(b.particles.mass[i]);
     }
-    text += fmt::format("  body '{}': {} particle{}, volume {:.10g} m^{}, mass {:.10g} {}\n", b.name,
-                        b.particles.size(), b.particles.size() == 1 ? "" : "s", volume.value(), volume_power,
-                        mass.value(), mass_unit);
+    text +=
+        fmt::format("  body '{}': {} particle{}, volume {:.10g} m^{}, mass {:.10g} {}\n", b.name, b.particles.size(),
+                    b.particles.size() == 1 ? "" : "s", volume.value(), volume_power, mass.value(), mass_unit);
   }
   return text;
 }

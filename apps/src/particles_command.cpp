@@ -15,8 +15,8 @@
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
-#include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
+#include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
@@ -175,7 +175,7 @@ std::string write_scene(const ParticlesOptions& o, const SceneDescription& scene
   io::write_vtu(o.output, cloud);
   if (!o.domains.empty()) io::write_cells_vtu(domains_path(o.output), particle_domain_mesh(sim->bodies()));
   std::string bodies = body_summary<Dim>(*sim);  // one line per body
-  bodies.pop_back();                              // the caller ends the text
+  bodies.pop_back();                             // the caller ends the text
   return fmt::format("{}: {} particles in {} bodies ({}D), volume {:.10g} m^{}\n{}", o.output.string(), cloud.size(),
                      sim->bodies().size(), Dim, total, Dim, bodies);
 }

@@ -10,9 +10,9 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "mpm/app/body_summary.hpp"
 #include "mpm/app/memory_estimate.hpp"
 #include "mpm/app/rank_report.hpp"
-#include "mpm/app/body_summary.hpp"
 #include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_console.hpp"
 #include "mpm/app/run_description.hpp"

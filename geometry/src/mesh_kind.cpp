@@ -4,9 +4,9 @@
 // meshes it.
 #include <fmt/format.h>
 
-#include "shape_kinds.hpp"
 #include "mpm/geometry/mesh_region.hpp"
 #include "mpm/io/yaml_reader.hpp"
+#include "shape_kinds.hpp"
 
 namespace mpm::geometry {
 namespace {
@@ -14,16 +14,33 @@ namespace {
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
   static const std::vector<io::KeySpec> k{
-      {.name = "mesh", .type = KeyType::name, .required = true,
+      {.name = "mesh",
+       .type = KeyType::name,
+       .required = true,
        .description = "a closed triangle (or polygon) surface file: `.stl` (ASCII or binary), `.obj`, `.off` or "
                       "`.ply`, relative to the scene file's folder"},
-      {.name = "scale", .type = KeyType::number, .unit = "-", .range = io::Range::above(0), .default_value = 1.0,
+      {.name = "scale",
+       .type = KeyType::number,
+       .unit = "-",
+       .range = io::Range::above(0),
+       .default_value = 1.0,
        .description = "factor on the file's coordinates (`1.0e-3` for millimetres), applied first"},
-      {.name = "rotation", .type = KeyType::list, .unit = "degrees", .absent = "none",
-       .description = "angles about x, then y, then z, applied after the scale", .type_text = "list of 3 numbers"},
-      {.name = "translation", .type = KeyType::list, .unit = "m", .absent = "none", .description = "added last",
+      {.name = "rotation",
+       .type = KeyType::list,
+       .unit = "degrees",
+       .absent = "none",
+       .description = "angles about x, then y, then z, applied after the scale",
        .type_text = "list of 3 numbers"},
-      {.name = "section", .type = KeyType::number, .unit = "m", .absent = "required in 2D",
+      {.name = "translation",
+       .type = KeyType::list,
+       .unit = "m",
+       .absent = "none",
+       .description = "added last",
+       .type_text = "list of 3 numbers"},
+      {.name = "section",
+       .type = KeyType::number,
+       .unit = "m",
+       .absent = "required in 2D",
        .description = "2D only: the body is the cut of the (transformed) mesh by the plane z = `section`"},
   };
   return k;
@@ -38,7 +55,8 @@ std::any parse(const io::YamlReader& reader, const io::YamlMap& map, const Shape
   MeshShape mesh;
   mesh.file = read_shape_file(reader, file, context.scene_file, {".stl", ".obj", ".off", ".ply"}, "mesh");
   if (const auto scale = map.find("scale")) mesh.scale = reader.number(*scale, io::Range::above(0), "");
-  if (const auto rotation = map.find("rotation")) mesh.rotation = reader.vector(*rotation, 3, io::Range::any(), "degrees");
+  if (const auto rotation = map.find("rotation"))
+    mesh.rotation = reader.vector(*rotation, 3, io::Range::any(), "degrees");
   if (const auto translation = map.find("translation"))
     mesh.translation = reader.vector(*translation, 3, io::Range::any(), "m");
   if (context.dimension == 2)

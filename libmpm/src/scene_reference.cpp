@@ -125,11 +125,12 @@ std::optional<std::string> scene_reference_block(const std::string& content) {
     if (!known) return std::nullopt;
     return table;
   } catch (const std::invalid_argument&) {
-    throw std::invalid_argument("unknown generated block '" + content +
-                                "'; expected 'keys of SECTION', 'top-level keys', 'output fields', 'history kinds', 'shape kinds', "
-                                "'keys of shape KIND', "
-                                "'parameters of A, B', 'parameters specific to A, B' or 'parameters added to every "
-                                "model'");
+    throw std::invalid_argument(
+        "unknown generated block '" + content +
+        "'; expected 'keys of SECTION', 'top-level keys', 'output fields', 'history kinds', 'shape kinds', "
+        "'keys of shape KIND', "
+        "'parameters of A, B', 'parameters specific to A, B' or 'parameters added to every "
+        "model'");
   }
 }
 

@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <numeric>
 
-#include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/body_shape/primitive_shapes.hpp"
+#include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/region.hpp"
 #include "mpm/geometry/register.hpp"

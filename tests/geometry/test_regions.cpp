@@ -19,9 +19,7 @@ ShapeDescription polygon(std::vector<std::array<double, 2>> corners) {
 
 ShapeDescription disk(double x, double y, double r) { return make_shape("disk", BallShape{{x, y, 0}, r}); }
 
-ShapeDescription box(std::array<double, 3> lo, std::array<double, 3> hi) {
-  return make_shape("box", BoxShape{lo, hi});
-}
+ShapeDescription box(std::array<double, 3> lo, std::array<double, 3> hi) { return make_shape("box", BoxShape{lo, hi}); }
 
 ShapeDescription combine(const std::string& type, std::vector<ShapeDescription> parts) {
   return make_shape(type, CombinedShape{std::move(parts)});

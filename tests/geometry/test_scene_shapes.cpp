@@ -121,7 +121,8 @@ TEST(SceneShapes, MeshPathIsRelativeToTheScene) {
       "translation: [1, 0.5, 0.5]}}]\n"
       "solver: {cfl: 0.5, end_time: 0.001}\n",
       (source / "tests" / "data" / "bad_scenes" / "any.yaml").string());
-  EXPECT_EQ(scene.bodies[0].shape.as<geometry::MeshShape>().file, (source / "tests" / "data" / "meshes" / "cube.off").lexically_normal());
+  EXPECT_EQ(scene.bodies[0].shape.as<geometry::MeshShape>().file,
+            (source / "tests" / "data" / "meshes" / "cube.off").lexically_normal());
   const auto sim = app::build_simulation<3>(scene);
   EXPECT_NEAR(total_volume(sim->bodies()[0]), 0.125, 1e-14);
 }

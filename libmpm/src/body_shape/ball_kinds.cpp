@@ -12,9 +12,17 @@ namespace {
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
   static const std::vector<io::KeySpec> k{
-      {.name = "center", .type = KeyType::list, .unit = "m", .required = true, .description = "the centre",
+      {.name = "center",
+       .type = KeyType::list,
+       .unit = "m",
+       .required = true,
+       .description = "the centre",
        .type_text = "list of `dimension` numbers"},
-      {.name = "radius", .type = KeyType::number, .unit = "m", .range = io::Range::above(0), .required = true,
+      {.name = "radius",
+       .type = KeyType::number,
+       .unit = "m",
+       .range = io::Range::above(0),
+       .required = true,
        .description = "the radius"},
   };
   return k;

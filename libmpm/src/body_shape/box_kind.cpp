@@ -11,10 +11,18 @@ namespace {
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
   static const std::vector<io::KeySpec> k{
-      {.name = "min", .type = KeyType::list, .unit = "m", .required = true, .description = "the lower corner",
+      {.name = "min",
+       .type = KeyType::list,
+       .unit = "m",
+       .required = true,
+       .description = "the lower corner",
        .type_text = "list of `dimension` numbers"},
-      {.name = "max", .type = KeyType::list, .unit = "m", .required = true,
-       .description = "the upper corner, above `min` on every axis", .type_text = "list of `dimension` numbers"},
+      {.name = "max",
+       .type = KeyType::list,
+       .unit = "m",
+       .required = true,
+       .description = "the upper corner, above `min` on every axis",
+       .type_text = "list of `dimension` numbers"},
   };
   return k;
 }

@@ -115,7 +115,9 @@ ShapeKind combination_kind(const char* noun, const char* description) {
   k.noun = noun;
   k.description = description;
   k.keyed = true;
-  k.keys = {{.name = name_of(C), .type = io::KeyType::list, .required = true,
+  k.keys = {{.name = name_of(C),
+             .type = io::KeyType::list,
+             .required = true,
              .description = "the shapes (any kind that may be an operand)",
              .type_text = "list of at least 2 shapes"}};
   k.traits.combination = true;
@@ -130,9 +132,7 @@ ShapeKind combination_kind(const char* noun, const char* description) {
 
 }  // namespace
 
-ShapeKind union_kind() {
-  return combination_kind<Combination::union_of>("a union", "inside any of the shapes");
-}
+ShapeKind union_kind() { return combination_kind<Combination::union_of>("a union", "inside any of the shapes"); }
 ShapeKind intersection_kind() {
   return combination_kind<Combination::intersection_of>("an intersection", "inside all of the shapes");
 }

@@ -13,9 +13,17 @@ const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
   static const std::vector<io::KeySpec> k = [] {
     std::vector<io::KeySpec> keys{
-        {.name = "center", .type = KeyType::list, .unit = "m", .required = true,
-         .description = "the centre of the base", .type_text = "list of 3 numbers"},
-        {.name = "radius", .type = KeyType::number, .unit = "m", .range = io::Range::above(0), .required = true,
+        {.name = "center",
+         .type = KeyType::list,
+         .unit = "m",
+         .required = true,
+         .description = "the centre of the base",
+         .type_text = "list of 3 numbers"},
+        {.name = "radius",
+         .type = KeyType::number,
+         .unit = "m",
+         .range = io::Range::above(0),
+         .required = true,
          .description = "the radius"},
     };
     for (auto& a : shape_axis_keys("cylinder")) keys.push_back(std::move(a));

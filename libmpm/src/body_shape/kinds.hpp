@@ -1,8 +1,9 @@
 #pragma once
-// The core's body shape kinds (mpm/body_shape/shape_kind.hpp), one file each in this folder; the registry's table
-// (shape_kind.cpp) lists them in this order. What several of them share is here too.
+// The core's body shape kinds (mpm/body_shape/shape_kind.hpp), one file each in this folder, and their list
+// (core_shape_kinds(), the registry's first entries in this order). What several of them share is here too.
 
 #include <array>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,12 @@ ShapeKind particle_file_kind();  // particle_file_kind.cpp
 ShapeKind union_kind();          // combination_kinds.cpp
 ShapeKind intersection_kind();   // combination_kinds.cpp
 ShapeKind difference_kind();     // combination_kinds.cpp
+
+/// The core's kinds in the order the registry lists them (messages and the scene reference follow it).
+inline std::deque<ShapeKind> core_shape_kinds() {
+  return {box_kind(),  disk_kind(),          sphere_kind(), cylinder_kind(),     polygon_kind(),
+          ring_kind(), particle_file_kind(), union_kind(),  intersection_kind(), difference_kind()};
+}
 
 /// Axis names for messages, in the order x, y, z.
 inline constexpr const char* axis_names[3] = {"x", "y", "z"};

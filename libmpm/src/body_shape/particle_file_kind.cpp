@@ -16,9 +16,14 @@ namespace {
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
   static const std::vector<io::KeySpec> k{
-      {.name = "particles", .type = KeyType::name, .required = true,
+      {.name = "particles",
+       .type = KeyType::name,
+       .required = true,
        .description = "a `.vtu` or `.csv` particle file, relative to the scene file's folder (see below)"},
-      {.name = "body", .type = KeyType::integer, .range = io::Range::at_least(0), .absent = "every row",
+      {.name = "body",
+       .type = KeyType::integer,
+       .range = io::Range::at_least(0),
+       .absent = "every row",
        .description = "only the rows whose field `body` has this value"},
   };
   return k;
@@ -61,8 +66,8 @@ std::optional<ParticleSeeds<Dim>> fill(const std::any& spec, const GridGeometry<
   const io::FieldArray* mass = file.field("mass");
   const io::FieldArray* id = file.field("id");
   if (velocity && velocity->components < Dim)
-    fail(fmt::format("{}: 'velocity' has {} components, fewer than the {} axes", shape.file, velocity->components,
-                     Dim));
+    fail(
+        fmt::format("{}: 'velocity' has {} components, fewer than the {} axes", shape.file, velocity->components, Dim));
   if (stress && stress->components != 6 && stress->components != 9)
     fail(fmt::format("{}: 'stress' has {} components; expected 6 (xx, yy, zz, xy, yz, xz) or 9", shape.file,
                      stress->components));
@@ -112,7 +117,7 @@ std::optional<ParticleSeeds<Dim>> fill(const std::any& spec, const GridGeometry<
   }
   if (seed.positions.empty())
     fail(shape.body ? fmt::format("{}: no particle has body = {}", shape.file, *shape.body)
-                                : shape.file + ": the file holds no particle");
+                    : shape.file + ": the file holds no particle");
   return seed;
 }
 
@@ -124,8 +129,9 @@ ShapeKind particle_file_kind() {
   ShapeKind k;
   k.name = "particles";
   k.noun = "a particle file";
-  k.description = "a particle set from a `.vtu` or `.csv` file: positions, volumes and optionally velocity, stress, "
-                  "mass and id";
+  k.description =
+      "a particle set from a `.vtu` or `.csv` file: positions, volumes and optionally velocity, stress, "
+      "mass and id";
   k.keyed = true;
   k.keys = keys();
   k.traits.not_operand =

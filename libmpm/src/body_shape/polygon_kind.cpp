@@ -83,12 +83,16 @@ void check_simple(const io::YamlReader& reader, const io::YamlValue& where, cons
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
   static const std::vector<io::KeySpec> k{
-      {.name = "vertices", .type = KeyType::list, .unit = "m",
+      {.name = "vertices",
+       .type = KeyType::list,
+       .unit = "m",
        .absent = "required unless `file`",
        .description = "the corners, either orientation, not crossing itself, non-zero area (a repeated closing "
                       "corner is dropped)",
        .type_text = "list of at least 3 `[x, y]`"},
-      {.name = "file", .type = KeyType::name, .absent = "instead of `vertices`",
+      {.name = "file",
+       .type = KeyType::name,
+       .absent = "instead of `vertices`",
        .description = "a text file of corners, one `x y` (or `x, y`) per line in m, blank lines and lines starting "
                       "with `#` skipped, relative to the scene file's folder"},
   };

@@ -16,11 +16,24 @@ const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
   static const std::vector<io::KeySpec> k = [] {
     std::vector<io::KeySpec> keys{
-        {.name = "center", .type = KeyType::list, .unit = "m", .required = true,
-         .description = "the centre (3D: of the base)", .type_text = "list of `dimension` numbers"},
-        {.name = "inner_radius", .type = KeyType::number, .unit = "m", .range = io::Range::above(0), .required = true,
-         .description = "the radius of the hole", .allowed_text = "> 0, below `outer_radius`"},
-        {.name = "outer_radius", .type = KeyType::number, .unit = "m", .range = io::Range::above(0), .required = true,
+        {.name = "center",
+         .type = KeyType::list,
+         .unit = "m",
+         .required = true,
+         .description = "the centre (3D: of the base)",
+         .type_text = "list of `dimension` numbers"},
+        {.name = "inner_radius",
+         .type = KeyType::number,
+         .unit = "m",
+         .range = io::Range::above(0),
+         .required = true,
+         .description = "the radius of the hole",
+         .allowed_text = "> 0, below `outer_radius`"},
+        {.name = "outer_radius",
+         .type = KeyType::number,
+         .unit = "m",
+         .range = io::Range::above(0),
+         .required = true,
          .description = "the outer radius"},
     };
     for (auto a : shape_axis_keys("tube")) {

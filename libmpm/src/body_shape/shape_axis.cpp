@@ -19,10 +19,17 @@ std::vector<std::string> typed_keys(const std::vector<io::KeySpec>& keys) {
 std::vector<io::KeySpec> shape_axis_keys(const std::string& what) {
   using io::KeyType;
   return {
-      {.name = "axis", .type = KeyType::choice, .choices = {"x", "y", "z"}, .default_value = std::string("z"),
+      {.name = "axis",
+       .type = KeyType::choice,
+       .choices = {"x", "y", "z"},
+       .default_value = std::string("z"),
        .description = "the " + what + "'s axis: `x`, `y`, `z` or any direction `[ax, ay, az]` (a non-zero vector)",
        .type_text = "string, or list of 3 numbers"},
-      {.name = "length", .type = KeyType::number, .unit = "m", .range = io::Range::above(0), .required = true,
+      {.name = "length",
+       .type = KeyType::number,
+       .unit = "m",
+       .range = io::Range::above(0),
+       .required = true,
        .description = "the " + what + "'s length along its axis from the base"},
   };
 }

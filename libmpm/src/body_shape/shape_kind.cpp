@@ -24,10 +24,7 @@ std::mutex& table_mutex() {
 }
 /// A deque: entries never move, so find_shape_kind's pointers stay valid as modules register.
 std::deque<ShapeKind>& table() {
-  static std::deque<ShapeKind> t{shapes::box_kind(),          shapes::disk_kind(),       shapes::sphere_kind(),
-                                 shapes::cylinder_kind(),     shapes::polygon_kind(),    shapes::ring_kind(),
-                                 shapes::particle_file_kind(), shapes::union_kind(),     shapes::intersection_kind(),
-                                 shapes::difference_kind()};
+  static std::deque<ShapeKind> t = shapes::core_shape_kinds();
   return t;
 }
 
@@ -67,10 +64,10 @@ const ShapeKind& typed_kind(const io::YamlReader& reader, const io::YamlValue& t
   const ShapeKind* kind = find_shape_kind(name);
   if (!kind || kind->keyed || std::find(valid.begin(), valid.end(), name) == valid.end()) {
     const bool elsewhere = kind && !kind->keyed;
-    reader.fail(type, fmt::format("{} '{}'{}; valid types in {}D: {} (or {})",
-                                  elsewhere ? "shape type" : "unknown shape type", name,
-                                  elsewhere ? fmt::format(" is not available in {}D", dimension) : "", dimension,
-                                  fmt::join(valid, ", "), fmt::join(names_of(keyed_kinds({true, false, true})), ", ")));
+    reader.fail(
+        type, fmt::format("{} '{}'{}; valid types in {}D: {} (or {})", elsewhere ? "shape type" : "unknown shape type",
+                          name, elsewhere ? fmt::format(" is not available in {}D", dimension) : "", dimension,
+                          fmt::join(valid, ", "), fmt::join(names_of(keyed_kinds({true, false, true})), ", ")));
   }
   return *kind;
 }
@@ -133,7 +130,8 @@ ShapeDescription read_body_shape(const io::YamlReader& reader, const io::YamlVal
   }
   const ShapeKind& kind =
       given[0] == "type" ? typed_kind(reader, *map.find("type"), context.dimension) : *find_shape_kind(given[0]);
-  if (!context.whole_shape && !kind.traits.not_operand.empty()) reader.fail(*map.find(given[0]), kind.traits.not_operand);
+  if (!context.whole_shape && !kind.traits.not_operand.empty())
+    reader.fail(*map.find(given[0]), kind.traits.not_operand);
   shape.kind = kind.name;
   shape.spec = kind.parse(reader, map, context);
   return shape;
@@ -154,8 +152,7 @@ template <int Dim>
 std::unique_ptr<Region<Dim>> make_shape_region(const ShapeDescription& shape, std::vector<std::string>* warnings) {
   const ShapeKind& kind = shape_kind(shape);
   const auto maker = kind.template region<Dim>();
-  if (!maker)
-    throw std::logic_error(fmt::format("body shape kind '{}' has no region in {}D", kind.name, Dim));
+  if (!maker) throw std::logic_error(fmt::format("body shape kind '{}' has no region in {}D", kind.name, Dim));
   return maker(shape.spec, warnings);
 }
 

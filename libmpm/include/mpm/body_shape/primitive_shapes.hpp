@@ -25,9 +25,9 @@ struct BallShape {
 
 /// A straight axis from a base centre (cylinder, ring in 3D): `axis` x, y or z, or any direction.
 struct ShapeAxis {
-  int axis = 2;                               ///< 0 = x, 1 = y, 2 = z; -1 = oblique (see direction)
+  int axis = 2;                              ///< 0 = x, 1 = y, 2 = z; -1 = oblique (see direction)
   std::array<double, 3> direction{0, 0, 1};  ///< the axis as a unit vector
-  double length = 0;                          ///< along the axis from the base centre
+  double length = 0;                         ///< along the axis from the base centre
 };
 
 /// `type: cylinder` (3D): `center` is the centre of the base.

@@ -55,8 +55,8 @@ class ShapeError : public std::runtime_error {
 /// Where a shape is being read.
 struct ShapeContext {
   int dimension = 0;
-  std::string scene_file;    ///< relative file names are taken from its folder
-  bool whole_shape = true;   ///< false inside a union, intersection or difference
+  std::string scene_file;   ///< relative file names are taken from its folder
+  bool whole_shape = true;  ///< false inside a union, intersection or difference
   /// A shape that makes several bodies (an image's `labels`) appends one entry per body: the suffix of the body's
   /// name (`<name>_<suffix>`) and that body's description. Null where a shape must make one body.
   std::vector<std::pair<std::string, std::any>>* bodies = nullptr;
@@ -104,10 +104,10 @@ struct OwnParticleCount {
 using ShapeOwnCount = std::optional<OwnParticleCount> (*)(const std::any& spec, int dimension);
 
 struct ShapeKind {
-  std::string name;         ///< the value of `type`, or the key of a keyed kind
-  std::string noun;         ///< the kind in a sentence: "a disk", "an image", "a particle file"
-  std::string description;  ///< one line for the scene reference
-  bool keyed = false;       ///< named by its own key (`mesh: FILE`) instead of `type: NAME`
+  std::string name;               ///< the value of `type`, or the key of a keyed kind
+  std::string noun;               ///< the kind in a sentence: "a disk", "an image", "a particle file"
+  std::string description;        ///< one line for the scene reference
+  bool keyed = false;             ///< named by its own key (`mesh: FILE`) instead of `type: NAME`
   std::vector<io::KeySpec> keys;  ///< its keys besides `type` (a keyed kind's own key first), for the reference
   ShapeTraits traits;
   ShapeParser parse = nullptr;
@@ -154,8 +154,7 @@ ShapeDescription make_shape(std::string kind, Spec spec) {
 }
 
 /// Reads the shape at `value` through the kind it names (see the file comment).
-ShapeDescription read_body_shape(const io::YamlReader& reader, const io::YamlValue& value,
-                                 const ShapeContext& context);
+ShapeDescription read_body_shape(const io::YamlReader& reader, const io::YamlValue& value, const ShapeContext& context);
 /// The bounding box of a shape, or nothing when only its file knows it.
 std::optional<ShapeBoundingBox> shape_bounds(const ShapeDescription& shape, int dimension);
 /// The file a shape reads (the first one of a combination's operands), or "".
