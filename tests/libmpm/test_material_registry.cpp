@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpm/app/modules.hpp"
 #include "mpm/material_reference.hpp"
 #include "mpm/material_registry.hpp"
 #include "mpm/scene_loader.hpp"
