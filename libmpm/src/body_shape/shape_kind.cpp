@@ -43,6 +43,7 @@ std::vector<const ShapeKind*> keyed_kinds(std::array<bool, 3> groups = {true, tr
 
 std::vector<std::string> names_of(const std::vector<const ShapeKind*>& kinds) {
   std::vector<std::string> names;
+  names.reserve(kinds.size());
   for (const auto* k : kinds) names.push_back(k->name);
   return names;
 }
