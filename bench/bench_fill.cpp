@@ -114,8 +114,7 @@ int main(int argc, char** argv) {
   const int cells = static_cast<int>(std::ceil(2 * c / h));
   const mpm::GridGeometry<3> grid(mpm::Vec<3>::Zero(), mpm::Vec<3>::Constant(h), {cells, cells, cells});
 
-  mpm::ShapeDescription shape;
-  shape.type = "mesh";
+  mpm::geometry::MeshShape shape;
   shape.file = file.string();
   const auto t0 = Clock::now();
   mpm::geometry::MeshSummary summary;

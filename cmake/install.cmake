@@ -13,6 +13,7 @@ set(mpm_libraries mpm_engine mpm_core mpm_geometry mpm_checkpoint mpm_app)
 foreach(module ${mpm_modules})
   list(APPEND mpm_libraries mpm_${module})
 endforeach()
+list(REMOVE_DUPLICATES mpm_libraries)  # geometry is in both: always built, registered like a module
 
 foreach(target ${mpm_libraries})
   string(REGEX REPLACE "^mpm_" "" name ${target})

@@ -6,7 +6,7 @@
 
 #include "mpm/app/key_location.hpp"
 #include "mpm/app/scene_builder.hpp"
-#include "mpm/geometry/geometry_error.hpp"
+#include "mpm/body_shape/shape_kind.hpp"
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
@@ -14,13 +14,6 @@
 
 namespace mpm::app {
 namespace {
-
-/// Whether filling the shape reads a file (a mesh, an image): its region then costs a read, and an upper bound
-/// is taken from the grid instead until a closer count is needed.
-bool reads_file(const ShapeDescription& s) {
-  if (!s.file.empty()) return true;
-  return std::any_of(s.parts.begin(), s.parts.end(), [](const auto& p) { return reads_file(p); });
-}
 
 /// Particle elements per lattice sub-cell: CPDI splits each into segments, quads, 2 triangles or 6 tetrahedra
 /// (geometry/cpdi_domains.hpp; a conforming mesh at the same spacing has about as many).
@@ -43,18 +36,19 @@ std::size_t scheme_bytes_per_particle(const SceneDescription& scene) {
 /// The count of one body: an upper bound (bounding box, or the grid for shapes read from files) or the sample.
 template <int Dim>
 void count_body(BodyMemory& m, const BodyDescription& bd, const GridGeometry<Dim>& geometry, bool sample, int index) {
-  if (bd.shape.type == "particles") return;  // a particle file: as many as its rows, bounded by the file itself
+  const ShapeKind& kind = shape_kind(bd.shape);
   geometry::Box<Dim> grid_box{geometry.origin, geometry.upper()};
   try {
-    if (bd.shape.type == "image" && bd.shape.pixel_particles) {  // one particle per selected pixel
-      const auto region = geometry::make_region<Dim>(bd.shape);
-      Real pixel = 1;
-      for (int d = 0; d < Dim; ++d) pixel *= bd.shape.pixel_size[d];
-      m.particles = pixel > 0 ? region->exact_volume().value_or(0) / pixel : 0;
-      m.exact = m.sampled = true;
+    // Particles of the kind's own: a particle file (as many as its rows, bounded by the file itself), an image's
+    // pixels.
+    if (const auto own = kind.own_count ? kind.own_count(bd.shape.spec, Dim) : std::nullopt) {
+      m.particles = own->count;
+      m.exact = m.sampled = own->exact;
       return;
     }
-    if (!sample && reads_file(bd.shape)) {
+    // Filling a shape that reads a file (a mesh, an image) costs the read: an upper bound is taken from the grid
+    // instead until a closer count is needed.
+    if (!sample && !shape_file(bd.shape).empty()) {
       m.particles = geometry::lattice_points_in<Dim>(grid_box, geometry, bd.particles_per_cell);
       return;
     }
@@ -67,7 +61,7 @@ void count_body(BodyMemory& m, const BodyDescription& bd, const GridGeometry<Dim
     m.particles = count.count;
     m.exact = count.exact;
     m.sampled = true;
-  } catch (const geometry::GeometryError& e) {
+  } catch (const ShapeError& e) {
     throw SceneError(bd.shape.where, fmt::format("bodies[{}].shape", index), "body '" + bd.name + "': " + e.what());
   }
 }

@@ -10,12 +10,14 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "mpm/app/body_summary.hpp"
 #include "mpm/app/memory_budget.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
+#include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
@@ -172,8 +174,10 @@ std::string write_scene(const ParticlesOptions& o, const SceneDescription& scene
                         scene.solver.shape_function));
   io::write_vtu(o.output, cloud);
   if (!o.domains.empty()) io::write_cells_vtu(domains_path(o.output), particle_domain_mesh(sim->bodies()));
-  return fmt::format("{}: {} particles in {} bodies ({}D), volume {:.10g} m^{}", o.output.string(), cloud.size(),
-                     sim->bodies().size(), Dim, total, Dim);
+  std::string bodies = body_summary<Dim>(*sim);  // one line per body
+  bodies.pop_back();                             // the caller ends the text
+  return fmt::format("{}: {} particles in {} bodies ({}D), volume {:.10g} m^{}\n{}", o.output.string(), cloud.size(),
+                     sim->bodies().size(), Dim, total, Dim, bodies);
 }
 
 std::string run(const ParticlesOptions& o, std::ostream& err) {
@@ -185,11 +189,9 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
   if (o.particles_per_cell < 1 || o.particles_per_cell > max_particles_per_cell)
     throw UsageError(fmt::format("--ppc must be between 1 and {} (particles per cell per axis), got {}",
                                  max_particles_per_cell, o.particles_per_cell));
+  register_modules();  // the modules' shape kinds (geometry: mesh, image), materials and sections
   std::optional<SceneDescription> scene;
-  if (!o.scene.empty()) {
-    register_modules();
-    scene = load_scene(o.scene);
-  }
+  if (!o.scene.empty()) scene = load_scene(o.scene);
   if (o.input.empty()) {
     if (o.domains != "" && o.domains != "scene")
       throw UsageError("--domains " + o.domains + " applies to an input file; with a scene alone use --domains scene");
@@ -205,25 +207,28 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
   if (o.domains != "" && o.domains != "lattice" && o.domains != "conforming")
     throw UsageError("--domains with an input file: lattice or conforming, got " + o.domains);
 
-  ShapeDescription shape;
-  shape.file = o.input;
   const std::string ext = lower_extension(o.input);
   int dimension = 3;
+  ShapeDescription shape;
   if (ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply") {
-    shape.type = "mesh";
-    shape.scale = o.scale;
-    shape.section = o.section;
+    geometry::MeshShape mesh;
+    mesh.file = o.input;
+    mesh.scale = o.scale;
+    mesh.section = o.section;
     dimension = o.section ? 2 : 3;
+    shape = make_shape("mesh", mesh);
   } else if (ext == ".png" || ext == ".pgm" || ext == ".vti") {
-    shape.type = "image";
+    geometry::ImageShape image;
+    image.file = o.input;
     dimension = ext == ".vti" ? 3 : 2;
     if (o.pixel_size)
-      shape.pixel_size = {*o.pixel_size, *o.pixel_size, *o.pixel_size};
+      image.pixel_size = {*o.pixel_size, *o.pixel_size, *o.pixel_size};
     else if (dimension == 2)
       throw UsageError("--pixel-size is required for a picture (the size of a pixel, m)");
     if (!o.threshold && !o.label) throw UsageError("an image needs --threshold T or --label L");
-    shape.threshold = o.threshold;
-    shape.label = o.label;
+    image.threshold = o.threshold;
+    image.label = o.label;
+    shape = make_shape("image", image);
   } else {
     throw geometry::GeometryError(o.input, fmt::format("unsupported input format '{}' (meshes: .stl, .obj, .off, "
                                                        ".ply; images: .png, .pgm, .vti)",

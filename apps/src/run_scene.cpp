@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "mpm/app/body_summary.hpp"
 #include "mpm/app/memory_budget.hpp"
 #include "mpm/app/memory_estimate.hpp"
 #include "mpm/app/rank_report.hpp"
@@ -78,6 +79,7 @@ void check(const SceneDescription& scene, std::ostream& out, int ranks) {
              sim->particle_count(), sim->bodies().size(), sim->grid().size(), scene.solver.scheme_name(),
              scene.solver.shape_function, dt, sim->stable_time_step(), sim->time_step_limiter(),
              static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
+  fmt::print(out, "{}", body_summary<Dim>(*sim));
   const MemoryEstimate memory = estimate_memory<Dim>(scene, sim->grid().geometry, true);
   const MemoryBudget budget = available_memory();
   fmt::print(out, "memory: about {} estimated before building ({:.4g} particles, {} grid nodes), {} available ({})\n",

@@ -10,6 +10,7 @@
 #include "mpm/app/memory_budget.hpp"
 #include "mpm/app/memory_estimate.hpp"
 #include "mpm/app/step_estimate.hpp"
+#include "mpm/body_shape/shape_kind.hpp"
 #include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/core/expression.hpp"
 #include "mpm/diagnostics/energy_sentinel.hpp"
@@ -17,8 +18,6 @@
 #include "mpm/failure/failure_module.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
-#include "mpm/geometry/geometry_error.hpp"
-#include "mpm/geometry/shape_filler.hpp"
 #include "mpm/history/history_kind.hpp"
 #include "mpm/materials/material_registry.hpp"
 #include "mpm/output/output_fields.hpp"
@@ -66,24 +65,46 @@ void check_output_against_shape_function(const SceneDescription& scene, const Sh
                          scene.solver.shape_function);
 }
 
-/// The particles of one body as elements (position, volume; CPDI: corner offsets): the shape filled on the
-/// grid's lattice, split into CPDI elements or meshed conformingly when the shape function asks for it.
+/// The particles of one body's shape (body_shape/shape_kind.hpp): its kind's own, or the lattice fill of its region
+/// with the body's `volume`. Refuses a kind whose particles have no domains with a CPDI shape function, before it
+/// reads anything.
 template <int Dim>
-geometry::CpdiParticles<Dim> particle_elements(const SceneDescription& scene, const BodyDescription& bd, int index,
-                                               const GridGeometry<Dim>& geometry, const ShapeFunctionInfo& shape,
-                                               std::vector<std::string>& warnings) {
+ParticleSeeds<Dim> shape_particles(const SceneDescription& scene, const BodyDescription& bd, int index,
+                                   const GridGeometry<Dim>& geometry, const ShapeFunctionInfo& shape,
+                                   std::vector<std::string>& warnings) {
   const std::string shape_key = body_key(index, "shape");
-  geometry::ParticleSeeds<Dim> seeds;
+  const ShapeTraits& traits = shape_kind(bd.shape).traits;
+  if (!traits.not_cpdi.empty() && shape.domain_corners > 0)
+    throw SceneError(bd.shape.where, shape_key,
+                     traits.not_cpdi + ", which " + scene.solver.shape_function +
+                         " needs: use a shape function without them (not cpdi_*)");
+  ParticleSeeds<Dim> seeds;
   try {
-    seeds = geometry::fill_shape<Dim>(bd.shape, geometry, bd.particles_per_cell, &warnings);
-  } catch (const geometry::GeometryError& e) {
-    throw SceneError(bd.shape.where, shape_key, "body '" + bd.name + "': " + e.what());
+    seeds = fill_shape<Dim>(bd.shape, geometry, bd.particles_per_cell, &warnings, bd.exact_volume);
+  } catch (const ShapeError& e) {
+    throw SceneError(bd.shape.where, e.key.empty() ? shape_key : shape_key + "." + e.key,
+                     "body '" + bd.name + "': " + e.what());
   }
   if (seeds.positions.empty())
     throw SceneError(bd.where, shape_key,
                      "body '" + bd.name + "' contains no particle: the shape is smaller than a particle spacing");
-  // CPDI: every sub-cell becomes one or more particle elements (segments, quads, triangles, tets).
+  return seeds;
+}
+
+/// The particles of one body as elements (position, volume; CPDI: corner offsets): a kind's own particles as they
+/// are, the lattice's split into CPDI elements or meshed conformingly when the shape function asks for it.
+template <int Dim>
+geometry::CpdiParticles<Dim> particle_elements(const SceneDescription& scene, const BodyDescription& bd, int index,
+                                               const GridGeometry<Dim>& geometry, const ShapeFunctionInfo& shape,
+                                               const ParticleSeeds<Dim>& seeds, std::vector<std::string>& warnings) {
+  const std::string shape_key = body_key(index, "shape");
   geometry::CpdiParticles<Dim> elements;
+  if (!seeds.volumes.empty()) {  // particles of their own volumes (a particle file)
+    elements.positions = seeds.positions;
+    elements.volumes = seeds.volumes;
+    return elements;
+  }
+  // CPDI: every sub-cell becomes one or more particle elements (segments, quads, triangles, tets).
   const bool conforming = bd.domains == "conforming";
   // A conforming mesh of the shape is made of simplices: the CPDI elements with Dim + 1 corners (T3, Tet4).
   if (conforming && find_shape_function(scene.solver.shape_function)->domain_corners != Dim + 1)
@@ -96,7 +117,7 @@ geometry::CpdiParticles<Dim> particle_elements(const SceneDescription& scene, co
     for (int d = 1; d < Dim; ++d) spacing = std::min<Real>(spacing, h[d] / bd.particles_per_cell[d]);
     try {
       elements = geometry::conforming_cpdi_particles<Dim>(bd.shape, spacing, &warnings);
-    } catch (const geometry::GeometryError& e) {
+    } catch (const ShapeError& e) {
       throw SceneError(bd.shape.where, shape_key, "body '" + bd.name + "': " + e.what());
     }
   } else if (shape.domain_corners > 0) {
@@ -202,21 +223,11 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   body.index = index;
   body.material = body_material<Dim>(scene.materials.at(bd.material));
   std::vector<std::string> warnings;  // repairs of mesh files (printed, the run goes on)
-  geometry::CpdiParticles<Dim> elements;
-  std::optional<SeedParticles<Dim>> seed;  // a body from a particle file
-  if (bd.shape.type == "particles") {
-    if (shape.domain_corners > 0)
-      throw SceneError(bd.shape.where, body_key(index, "shape"),
-                       "a particle file gives no particle domains, which " + scene.solver.shape_function +
-                           " needs: use a shape function without them (not cpdi_*)");
-    seed = read_seed_particles<Dim>(bd, index, geometry);
-    elements.positions = seed->positions;
-    elements.volumes = seed->volumes;
-  } else {
-    elements = particle_elements<Dim>(scene, bd, index, geometry, shape, warnings);
-  }
+  const ParticleSeeds<Dim> seeds = shape_particles<Dim>(scene, bd, index, geometry, shape, warnings);
+  const geometry::CpdiParticles<Dim> elements =
+      particle_elements<Dim>(scene, bd, index, geometry, shape, seeds, warnings);
   add_particles<Dim>(body, bd, elements);
-  if (seed) apply_seed_state(body, *seed);
+  apply_seed_state(body, seeds);  // what a particle file gives besides positions and volumes
   track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
   add_run_fields<Dim>(body, scene, geometry);
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';

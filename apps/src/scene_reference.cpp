@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "mpm/app/material_reference.hpp"
+#include "mpm/body_shape/shape_kind.hpp"
 #include "mpm/history/history_kind.hpp"
 #include "mpm/output/output_fields.hpp"
 #include "mpm/scene/scene_keys.hpp"
@@ -19,6 +20,7 @@ constexpr std::string_view end_marker = "<!-- end of generated text -->";
 constexpr std::string_view marker_close = " -->";
 constexpr std::string_view keys_of = "keys of ";
 constexpr std::string_view top_level = "top-level keys";
+constexpr std::string_view keys_of_shape = "keys of shape ";
 
 /// A table cell: '|' would end the cell.
 std::string cell(const std::string& text) {
@@ -110,6 +112,8 @@ std::optional<std::string> scene_reference_block(const std::string& content) {
   if (content == "output fields") return output_field_table();
   if (content == "history kinds") return history_kind_table();
   if (content == top_level) return section_key_table("");
+  if (content == "shape kinds") return shape_kind_table();
+  if (content.rfind(keys_of_shape, 0) == 0) return shape_key_table(content.substr(keys_of_shape.size()));
   if (content.rfind(keys_of, 0) == 0) {
     const std::string path = content.substr(keys_of.size());
     if (path.empty()) throw std::invalid_argument("generated block '" + content + "' names no section");
@@ -121,10 +125,12 @@ std::optional<std::string> scene_reference_block(const std::string& content) {
     if (!known) return std::nullopt;
     return table;
   } catch (const std::invalid_argument&) {
-    throw std::invalid_argument("unknown generated block '" + content +
-                                "'; expected 'keys of SECTION', 'top-level keys', 'output fields', 'history kinds', "
-                                "'parameters of A, B', 'parameters specific to A, B' or 'parameters added to every "
-                                "model'");
+    throw std::invalid_argument(
+        "unknown generated block '" + content +
+        "'; expected 'keys of SECTION', 'top-level keys', 'output fields', 'history kinds', 'shape kinds', "
+        "'keys of shape KIND', "
+        "'parameters of A, B', 'parameters specific to A, B' or 'parameters added to every "
+        "model'");
   }
 }
 

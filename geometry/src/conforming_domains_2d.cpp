@@ -27,9 +27,10 @@ CpdiParticles<2> conforming_triangles(const ShapeDescription& shape, Real spacin
   const auto region = make_region<2>(shape, warnings);
   const auto loops = polygon_loops(*region);
   if (loops.empty())
-    throw GeometryError(shape.file, fmt::format("conforming CPDI domains need a polygonal 2D shape (box, polygon or "
-                                                "mesh section), not a {}",
-                                                shape.type));
+    throw GeometryError(shape_file(shape),
+                        fmt::format("conforming CPDI domains need a polygonal 2D shape (box, polygon or "
+                                    "mesh section), not a {}",
+                                    shape.kind));
   Cdt cdt;
   for (const auto& loop : loops) {
     std::vector<Cdt::Vertex_handle> v;

@@ -65,15 +65,17 @@ CpdiParticles<3> elements(const C3t3& c3t3) {
 
 CpdiParticles<3> conforming_tetrahedra(const ShapeDescription& shape, Real spacing,
                                        std::vector<std::string>* warnings) {
+  const std::string file = shape_file(shape);
+  const auto region = make_region<3>(shape, warnings);
   SurfaceMesh surface;
-  if (shape.type == "mesh")
-    surface = detail::load_surface_mesh(shape, warnings);
-  else if (shape.type == "box")
-    surface = detail::box_mesh(shape.min, shape.max);
+  if (const SurfaceMesh* mesh = detail::surface_of(*region))
+    surface = *mesh;
+  else if (const auto* box = dynamic_cast<const BoxRegion<3>*>(region.get()))
+    surface = detail::box_mesh(box->bounds());
   else
-    throw GeometryError(shape.file, fmt::format("conforming CPDI domains in 3D need a closed surface (a mesh or a "
-                                                "box), not a {}",
-                                                shape.type));
+    throw GeometryError(file, fmt::format("conforming CPDI domains in 3D need a closed surface (a mesh or a "
+                                          "box), not a {}",
+                                          shape.kind));
   // Every crease whose faces' normals differ by more than 1 degree is a protected feature, so that the
   // tetrahedra's boundary facets lie on the input facets and the volumes sum to the mesh volume. Mesh_3 can
   // fail on some inputs (curves meeting at small angles); other protection sizes are tried, and at last
@@ -102,13 +104,13 @@ CpdiParticles<3> conforming_tetrahedra(const ShapeDescription& shape, Real spaci
         warnings->push_back(
             fmt::format("{}: the conforming tetrahedra approximate the surface: their volumes sum to "
                         "{:.6g} m^3, the mesh encloses {:.6g} m^3 ({:+.3g}%)",
-                        shape.file.empty() ? "box" : shape.file, sum, mesh_volume, 100 * (sum / mesh_volume - 1)));
+                        file.empty() ? "box" : file, sum, mesh_volume, 100 * (sum / mesh_volume - 1)));
       return out;
     } catch (const CGAL::Failure_exception& e) {
       failure = e.message();
     }
   }
-  throw GeometryError(shape.file, "CGAL Mesh_3 could not mesh the surface into tetrahedra: " + failure);
+  throw GeometryError(file, "CGAL Mesh_3 could not mesh the surface into tetrahedra: " + failure);
 }
 
 }  // namespace mpm::geometry

@@ -52,7 +52,7 @@ Image to_image(vtkImageData* data, const std::string& file, int dimension) {
 }
 
 /// Pixels selected by the shape's threshold or label: a mask with the image's layout.
-std::vector<unsigned char> select(const Image& image, const ShapeDescription& shape, std::size_t& selected) {
+std::vector<unsigned char> select(const Image& image, const ImageShape& shape, std::size_t& selected) {
   std::vector<unsigned char> mask(image.values.size(), 0);
   selected = 0;
   for (std::size_t n = 0; n < image.values.size(); ++n) {
@@ -75,17 +75,17 @@ std::vector<unsigned char> select(const Image& image, const ShapeDescription& sh
 
 /// Pixel size and lower corner: the shape's, else the .vti file's.
 template <int Dim>
-void placement(const Image& image, const ShapeDescription& shape, Vec<Dim>& origin, Vec<Dim>& h) {
+void placement(const Image& image, const ImageShape& shape, Vec<Dim>& origin, Vec<Dim>& h) {
   for (int d = 0; d < Dim; ++d) {
     h[d] = shape.pixel_size[d] > 0 ? shape.pixel_size[d] : image.spacing[d];
-    origin[d] = shape.image_origin ? (*shape.image_origin)[d] : image.origin[d];
+    origin[d] = shape.origin ? (*shape.origin)[d] : image.origin[d];
     if (!(h[d] > 0))
       throw GeometryError(shape.file, "the pixel size is not given (pixel_size) and the file does not define one");
   }
 }
 
 template <int Dim>
-Image read_for(const ShapeDescription& shape) {
+Image read_for(const ImageShape& shape) {
   Image image = read_image(shape.file);
   if (image.dimension != Dim)
     throw GeometryError(shape.file, fmt::format("a {}D image cannot make a body in a {}D scene", image.dimension, Dim));
@@ -96,7 +96,7 @@ Image read_for(const ShapeDescription& shape) {
 template <int Dim>
 class ImageRegion : public Region<Dim> {
  public:
-  explicit ImageRegion(const ShapeDescription& shape) {
+  explicit ImageRegion(const ImageShape& shape) {
     const Image image = read_for<Dim>(shape);
     placement<Dim>(image, shape, origin_, h_);
     for (int d = 0; d < 3; ++d) size_[d] = image.size[d];
@@ -191,7 +191,7 @@ Image read_image(const std::string& file) {
 }
 
 template <int Dim>
-std::unique_ptr<Region<Dim>> make_image_region(const ShapeDescription& shape) {
+std::unique_ptr<Region<Dim>> make_image_region(const ImageShape& shape) {
   if constexpr (Dim == 1) {
     throw GeometryError(shape.file, "images make bodies in 2D and 3D only");
   } else {
@@ -200,7 +200,7 @@ std::unique_ptr<Region<Dim>> make_image_region(const ShapeDescription& shape) {
 }
 
 template <int Dim>
-ParticleSeeds<Dim> fill_image_pixels(const ShapeDescription& shape) {
+ParticleSeeds<Dim> fill_image_pixels(const ImageShape& shape) {
   ParticleSeeds<Dim> seeds;
   if constexpr (Dim == 1) {
     throw GeometryError(shape.file, "images make bodies in 2D and 3D only");
@@ -226,11 +226,11 @@ ParticleSeeds<Dim> fill_image_pixels(const ShapeDescription& shape) {
   return seeds;
 }
 
-template std::unique_ptr<Region<1>> make_image_region<1>(const ShapeDescription&);
-template std::unique_ptr<Region<2>> make_image_region<2>(const ShapeDescription&);
-template std::unique_ptr<Region<3>> make_image_region<3>(const ShapeDescription&);
-template ParticleSeeds<1> fill_image_pixels<1>(const ShapeDescription&);
-template ParticleSeeds<2> fill_image_pixels<2>(const ShapeDescription&);
-template ParticleSeeds<3> fill_image_pixels<3>(const ShapeDescription&);
+template std::unique_ptr<Region<1>> make_image_region<1>(const ImageShape&);
+template std::unique_ptr<Region<2>> make_image_region<2>(const ImageShape&);
+template std::unique_ptr<Region<3>> make_image_region<3>(const ImageShape&);
+template ParticleSeeds<1> fill_image_pixels<1>(const ImageShape&);
+template ParticleSeeds<2> fill_image_pixels<2>(const ImageShape&);
+template ParticleSeeds<3> fill_image_pixels<3>(const ImageShape&);
 
 }  // namespace mpm::geometry

@@ -50,7 +50,12 @@ class MeshRegion : public Region<3> {
 
 }  // namespace
 
-std::unique_ptr<Region<3>> make_mesh_region(const ShapeDescription& shape, std::vector<std::string>* warnings,
+const SurfaceMesh* detail::surface_of(const Region<3>& region) {
+  const auto* mesh = dynamic_cast<const MeshRegion*>(&region);
+  return mesh ? &mesh->mesh() : nullptr;
+}
+
+std::unique_ptr<Region<3>> make_mesh_region(const MeshShape& shape, std::vector<std::string>* warnings,
                                             MeshSummary* summary) {
   auto region = std::make_unique<MeshRegion>(detail::load_surface_mesh(shape, warnings));
   if (summary) {
@@ -61,7 +66,7 @@ std::unique_ptr<Region<3>> make_mesh_region(const ShapeDescription& shape, std::
   return region;
 }
 
-std::unique_ptr<Region<2>> make_mesh_section(const ShapeDescription& shape, std::vector<std::string>* warnings) {
+std::unique_ptr<Region<2>> make_mesh_section(const MeshShape& shape, std::vector<std::string>* warnings) {
   const SurfaceMesh mesh = detail::load_surface_mesh(shape, warnings);
   const double z = shape.section.value_or(0.0);
   const CGAL::Bbox_3 b = PMP::bbox(mesh);

@@ -42,7 +42,7 @@ Eigen::Matrix3d rotation_matrix(const std::array<double, 3>& degrees) {
 
 }  // namespace
 
-SurfaceMesh load_surface_mesh(const ShapeDescription& shape, std::vector<std::string>* warnings) {
+SurfaceMesh load_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings) {
   const std::string& file = shape.file;
   std::error_code error;
   if (!std::filesystem::exists(file, error)) throw GeometryError(file, "mesh file not found");
@@ -113,7 +113,8 @@ SurfaceMesh load_surface_mesh(const ShapeDescription& shape, std::vector<std::st
   return mesh;
 }
 
-SurfaceMesh box_mesh(const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
+SurfaceMesh box_mesh(const Box<3>& box) {
+  const Vec<3>&lo = box.lo, &hi = box.hi;
   SurfaceMesh mesh;
   std::array<SurfaceMesh::Vertex_index, 8> v;
   for (int k = 0; k < 8; ++k)

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/geometry/file_shapes.hpp"
+#include "mpm/geometry/region.hpp"
 #include "mpm/scene/scene.hpp"
 
 namespace mpm::geometry::detail {
@@ -18,9 +20,11 @@ using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 /// The closed, manifold, self-intersection-free, outward-oriented triangle mesh of `shape.file`, with
 /// the shape's scale, rotation and translation applied. Throws GeometryError naming the file and the
 /// problem; an inside-out or inconsistently oriented mesh is repaired and a warning appended.
-SurfaceMesh load_surface_mesh(const ShapeDescription& shape, std::vector<std::string>* warnings);
+SurfaceMesh load_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings);
 
 /// Builds a box as a closed triangle mesh (12 triangles, outward).
-SurfaceMesh box_mesh(const std::array<double, 3>& lo, const std::array<double, 3>& hi);
+SurfaceMesh box_mesh(const Box<3>& box);
+/// The surface of a mesh region (make_mesh_region), or nullptr for a region of another kind.
+const SurfaceMesh* surface_of(const Region<3>& region);
 
 }  // namespace mpm::geometry::detail

@@ -10,8 +10,11 @@
 #include <filesystem>
 #include <numeric>
 
+#include "mpm/body_shape/primitive_shapes.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
+#include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/region.hpp"
+#include "mpm/geometry/register.hpp"
 #include "test_meshes.hpp"
 
 namespace fs = std::filesystem;
@@ -52,12 +55,13 @@ void check_elements(const CpdiParticles<Dim>& p, int corners) {
 
 // A polygon with a re-entrant corner and a slanted edge, and a box: T3 areas sum to the shoelace area.
 TEST(ConformingDomains, TrianglesOfAPolygonSumToItsArea) {
-  ShapeDescription s;
-  s.type = "polygon";
-  s.vertices = {{0.1, 0.1}, {0.9, 0.2}, {0.8, 0.6}, {0.45, 0.45}, {0.3, 0.9}, {0.1, 0.7}};
+  PolygonShape polygon;
+  polygon.vertices = {{0.1, 0.1}, {0.9, 0.2}, {0.8, 0.6}, {0.45, 0.45}, {0.3, 0.9}, {0.1, 0.7}};
+  const auto& v = polygon.vertices;
   double shoelace = 0;
-  for (std::size_t i = 0, j = s.vertices.size() - 1; i < s.vertices.size(); j = i++)
-    shoelace += (s.vertices[j][0] * s.vertices[i][1] - s.vertices[i][0] * s.vertices[j][1]) / 2;
+  for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
+    shoelace += (v[j][0] * v[i][1] - v[i][0] * v[j][1]) / 2;
+  const ShapeDescription s = make_shape("polygon", polygon);
   const auto p = conforming_triangles(s, 0.02, nullptr);
   EXPECT_NEAR(total(p) / shoelace, 1, 1e-10);
   check_elements<CpdiTriangle>(p, 3);
@@ -67,16 +71,10 @@ TEST(ConformingDomains, TrianglesOfAPolygonSumToItsArea) {
   EXPECT_GT(p.positions.size(), shoelace / (0.02 * 0.02));
   EXPECT_LT(p.positions.size(), 4 * shoelace / (0.02 * 0.02));
 
-  ShapeDescription box;
-  box.type = "box";
-  box.min = {0.2, 0.3, 0};
-  box.max = {0.7, 0.5, 0};
+  const ShapeDescription box = make_shape("box", BoxShape{{0.2, 0.3, 0}, {0.7, 0.5, 0}});
   EXPECT_NEAR(total(conforming_triangles(box, 0.01, nullptr)) / 0.1, 1, 1e-10);
 
-  ShapeDescription disk;
-  disk.type = "disk";
-  disk.radius = 0.2;
-  disk.center = {0.5, 0.5, 0};
+  const ShapeDescription disk = make_shape("disk", BallShape{{0.5, 0.5, 0}, 0.2});
   EXPECT_THROW(conforming_triangles(disk, 0.01, nullptr), GeometryError);
 }
 
@@ -85,12 +83,12 @@ TEST(ConformingDomains, TetrahedraOfACubeSumToItsVolume) {
   const fs::path dir = fs::temp_directory_path() / ("mpm_geometry_tet_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   mpm::test::write_off(dir / "cube.off", mpm::test::cube_mesh());
-  ShapeDescription s;
-  s.type = "mesh";
-  s.file = (dir / "cube.off").string();
-  s.scale = 0.5;
-  s.rotation = {0, 0, 30};
-  const auto p = conforming_tetrahedra(s, 0.1, nullptr);
+  mpm::geometry::register_module();  // the mesh kind
+  MeshShape mesh;
+  mesh.file = (dir / "cube.off").string();
+  mesh.scale = 0.5;
+  mesh.rotation = {0, 0, 30};
+  const auto p = conforming_tetrahedra(make_shape("mesh", mesh), 0.1, nullptr);
   std::printf("cube: %zu tetrahedra, volume %.17g\n", p.positions.size(), total(p));
   EXPECT_NEAR(total(p) / 0.125, 1, 1e-10);
   check_elements<CpdiTetrahedron>(p, 4);
@@ -103,11 +101,11 @@ TEST(ConformingDomains, TetrahedraOfACubeSumToItsVolume) {
                 {"sphere.off", mpm::test::sphere_mesh(0.3, {0, 0, 0}, 12, 24)}};
   for (const auto& c : curved) {
     mpm::test::write_off(dir / c.name, c.mesh);
-    s.file = (dir / c.name).string();
-    s.scale = 1;
-    s.rotation = {0, 0, 0};
+    mesh.file = (dir / c.name).string();
+    mesh.scale = 1;
+    mesh.rotation = {0, 0, 0};
     std::vector<std::string> warnings;
-    const auto t = conforming_tetrahedra(s, 0.05, &warnings);
+    const auto t = conforming_tetrahedra(make_shape("mesh", mesh), 0.05, &warnings);
     const double exact = mpm::test::polyhedron_volume(c.mesh);
     std::printf("%s: %zu tetrahedra, relative volume difference %.3g\n", c.name.c_str(), t.positions.size(),
                 total(t) / exact - 1);
@@ -129,10 +127,7 @@ TEST(ConformingDomains, TetrahedraOfACubeSumToItsVolume) {
     check_elements<CpdiTetrahedron>(t, 4);
   }
 
-  ShapeDescription box;
-  box.type = "box";
-  box.min = {0, 0, 0};
-  box.max = {0.3, 0.2, 0.1};
+  const ShapeDescription box = make_shape("box", BoxShape{{0, 0, 0}, {0.3, 0.2, 0.1}});
   EXPECT_NEAR(total(conforming_tetrahedra(box, 0.05, nullptr)) / 0.006, 1, 1e-10);
   fs::remove_all(dir);
 }

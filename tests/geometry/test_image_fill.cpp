@@ -16,6 +16,7 @@
 
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/image_region.hpp"
+#include "mpm/geometry/register.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 
 namespace fs = std::filesystem;
@@ -65,13 +66,13 @@ void write_pgm(const fs::path& file, int nx, int ny, const std::vector<unsigned 
 
 ShapeDescription image_shape(const fs::path& file, double pixel, std::optional<double> threshold,
                              std::optional<double> label = std::nullopt) {
-  ShapeDescription s;
-  s.type = "image";
-  s.file = file.string();
-  s.pixel_size = {pixel, pixel, pixel};
-  s.threshold = threshold;
-  s.label = label;
-  return s;
+  mpm::geometry::register_module();  // the image kind
+  ImageShape image;
+  image.file = file.string();
+  image.pixel_size = {pixel, pixel, pixel};
+  image.threshold = threshold;
+  image.label = label;
+  return make_shape("image", image);
 }
 
 /// A disk of radius r (pixels) centred in an n x n picture: 255 inside, 0 outside.
@@ -100,7 +101,7 @@ TEST(ImageFill, DiskAreaFromPngAndPgm) {
     EXPECT_NEAR(total(seeds) / exact, 1, 0.01) << name;
     EXPECT_NEAR(seeds.sub_cell_volume * static_cast<double>(seeds.positions.size()) / exact, 1, 0.01) << name;
     auto pixel_shape = shape;
-    pixel_shape.pixel_particles = true;
+    pixel_shape.as<ImageShape>().pixel_particles = true;
     const auto pixels_seeds = fill_shape<2>(pixel_shape, g, {4, 4, 1}, nullptr);
     EXPECT_NEAR(total(pixels_seeds) / exact, 1, 0.01) << name;
     EXPECT_DOUBLE_EQ(pixels_seeds.volume, 1e-6);
@@ -116,8 +117,8 @@ TEST(ImageFill, YPointsUpAndOriginShifts) {
   const auto pixels = picture(20, 10, 3, [](int i, int row) { return i < 5 && row < 2 ? 200 : 10; });
   write_png(dir / "corner.png", 20, 10, 3, pixels);
   auto shape = image_shape(dir / "corner.png", 0.1, 100);
-  shape.image_origin = std::array<double, 3>{1, 2, 0};
-  shape.pixel_particles = true;
+  shape.as<ImageShape>().origin = std::array<double, 3>{1, 2, 0};
+  shape.as<ImageShape>().pixel_particles = true;
   const GridGeometry<2> g(Vec<2>::Zero(), Vec<2>::Constant(0.1), {40, 40});
   const auto seeds = fill_shape<2>(shape, g, {1, 1, 1}, nullptr);
   ASSERT_EQ(seeds.positions.size(), 10u);
@@ -178,10 +179,7 @@ TEST(ImageFill, VtiStackGivesA3dBody) {
   writer->SetFileName((dir / "ball.vti").c_str());
   writer->SetInputData(image);
   writer->Write();
-  ShapeDescription s;
-  s.type = "image";
-  s.file = (dir / "ball.vti").string();
-  s.label = 1;
+  ShapeDescription s = image_shape(dir / "ball.vti", 0, std::nullopt, 1);
   const GridGeometry<3> g(Vec<3>::Zero(), Vec<3>::Constant(0.004), {16, 16, 16});
   const auto seeds = fill_shape<3>(s, g, {2, 2, 2}, nullptr);
   const double selected = static_cast<double>(voxels) * 1e-9;

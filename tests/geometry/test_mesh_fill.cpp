@@ -12,6 +12,7 @@
 
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/mesh_region.hpp"
+#include "mpm/geometry/register.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "test_meshes.hpp"
 
@@ -29,10 +30,10 @@ fs::path mesh_scratch() {
 }
 
 ShapeDescription mesh_shape(const fs::path& file) {
-  ShapeDescription s;
-  s.type = "mesh";
-  s.file = file.string();
-  return s;
+  mpm::geometry::register_module();  // the mesh kind
+  MeshShape mesh;
+  mesh.file = file.string();
+  return make_shape("mesh", mesh);
 }
 
 GridGeometry<3> grid3(double lo, double hi, double h) {
@@ -74,7 +75,7 @@ TEST(MeshFill, SphereTorusCubeVolumesInEveryFormat) {
   for (const auto& c : cases) {
     c.write(dir / c.name, c.mesh);
     MeshSummary summary;
-    const auto region = make_mesh_region(mesh_shape(dir / c.name), nullptr, &summary);
+    const auto region = make_mesh_region(mesh_shape(dir / c.name).as<MeshShape>(), nullptr, &summary);
     const double exact = mpm::test::polyhedron_volume(c.mesh);
     EXPECT_EQ(summary.triangles, c.mesh.triangles.size()) << c.name;
     EXPECT_NEAR(summary.volume / exact, 1, 1e-12) << c.name;
@@ -126,9 +127,9 @@ TEST(MeshFill, TransformedMeshGivesTransformedParticles) {
   const fs::path dir = mesh_scratch();
   mpm::test::write_off(dir / "cube.off", mpm::test::cube_mesh());
   ShapeDescription s = mesh_shape(dir / "cube.off");
-  s.scale = 0.4;
-  s.rotation = {20, 0, 30};
-  s.translation = {0.5, 0.3, 0.2};
+  s.as<MeshShape>().scale = 0.4;
+  s.as<MeshShape>().rotation = {20, 0, 30};
+  s.as<MeshShape>().translation = {0.5, 0.3, 0.2};
   const Eigen::Matrix3d R = (Eigen::AngleAxisd(30 * M_PI / 180, Eigen::Vector3d::UnitZ()) *
                              Eigen::AngleAxisd(20 * M_PI / 180, Eigen::Vector3d::UnitX()))
                                 .toRotationMatrix();
@@ -158,7 +159,7 @@ TEST(MeshFill, SectionOfAMeshIsA2dBody) {
   const fs::path dir = mesh_scratch();
   mpm::test::write_off(dir / "torus.off", mpm::test::torus_mesh(0.3, 0.1, {0.5, 0.5, 0.0}, 96, 33));
   ShapeDescription s = mesh_shape(dir / "torus.off");
-  s.section = 0.001;
+  s.as<MeshShape>().section = 0.001;
   const GridGeometry<2> g(Vec<2>::Zero(), Vec<2>::Constant(0.01), {100, 100});
   const auto seeds = fill_shape<2>(s, g, {2, 2, 1}, nullptr);
   const double annulus = M_PI * (0.4 * 0.4 - 0.2 * 0.2);
@@ -169,7 +170,7 @@ TEST(MeshFill, SectionOfAMeshIsA2dBody) {
     const double r = (x - Vec<2>(0.5, 0.5)).norm();
     ASSERT_TRUE(r > 0.195 && r < 0.405) << r;  // no particle in the hole
   }
-  s.section = 0.5;
+  s.as<MeshShape>().section = 0.5;
   try {
     fill_shape<2>(s, g, {2, 2, 1}, nullptr);
     FAIL() << "a plane above the torus must be refused";

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "mpm/body_shape/primitive_shapes.hpp"
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 
@@ -14,13 +15,7 @@ using namespace mpm::geometry;
 
 namespace {
 
-ShapeDescription disk_shape(double x, double y, double r) {
-  ShapeDescription s;
-  s.type = "disk";
-  s.center = {x, y, 0};
-  s.radius = r;
-  return s;
-}
+ShapeDescription disk_shape(double x, double y, double r) { return make_shape("disk", BallShape{{x, y, 0}, r}); }
 
 GridGeometry<2> unit_square_grid(int cells) {
   return GridGeometry<2>(Vec<2>::Zero(), Vec<2>::Constant(1.0 / cells), {cells, cells});
@@ -53,12 +48,11 @@ TEST(ParticleCount, SampledCountIsWithinAPercentOfTheFill) {
 TEST(ParticleCount, TaylorAnvilAtAHundredPerCellWithoutFillingIt) {
   // examples/05_taylor_anvil at 100 per cell per axis: pi r^2 L / (h/100)^3 = 9.218e9 particles, which the fill
   // would take hours and ~2 TB to make; the sample says so in milliseconds.
-  ShapeDescription rod;
-  rod.type = "cylinder";
+  CylinderShape rod;
   rod.radius = 3.8e-3;
-  rod.length = 25.4e-3;
-  rod.axis = 2;
-  const auto region = make_region<3>(rod);
+  rod.axis.length = 25.4e-3;
+  rod.axis.axis = 2;
+  const auto region = make_region<3>(make_shape("cylinder", rod));
   const GridGeometry<3> grid(Vec<3>(-0.008, -0.008, 0), Vec<3>::Constant(0.0005), {32, 32, 52});
   const auto count = count_particles<3>(*region, grid, {100, 100, 100});
   const double analytic = std::numbers::pi * 3.8e-3 * 3.8e-3 * 25.4e-3 / std::pow(5e-6, 3);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "mpm/body_shape/primitive_shapes.hpp"
 #include "mpm/geometry/polygon_region.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 
@@ -13,33 +14,15 @@ using namespace mpm::geometry;
 namespace {
 
 ShapeDescription polygon(std::vector<std::array<double, 2>> corners) {
-  ShapeDescription s;
-  s.type = "polygon";
-  s.vertices = std::move(corners);
-  return s;
+  return make_shape("polygon", PolygonShape{std::move(corners)});
 }
 
-ShapeDescription disk(double x, double y, double r) {
-  ShapeDescription s;
-  s.type = "disk";
-  s.center = {x, y, 0};
-  s.radius = r;
-  return s;
-}
+ShapeDescription disk(double x, double y, double r) { return make_shape("disk", BallShape{{x, y, 0}, r}); }
 
-ShapeDescription box(std::array<double, 3> lo, std::array<double, 3> hi) {
-  ShapeDescription s;
-  s.type = "box";
-  s.min = lo;
-  s.max = hi;
-  return s;
-}
+ShapeDescription box(std::array<double, 3> lo, std::array<double, 3> hi) { return make_shape("box", BoxShape{lo, hi}); }
 
 ShapeDescription combine(const std::string& type, std::vector<ShapeDescription> parts) {
-  ShapeDescription s;
-  s.type = type;
-  s.parts = std::move(parts);
-  return s;
+  return make_shape(type, CombinedShape{std::move(parts)});
 }
 
 const GridGeometry<2> unit_grid(Vec<2>::Zero(), Vec<2>::Constant(0.01), {100, 100});
@@ -57,9 +40,9 @@ TEST(Regions, PolygonFillIsExactOnTheLattice) {
   EXPECT_NEAR(area(seeds), 0.27, 1e-14);
   for (const auto& x : seeds.positions) EXPECT_FALSE(x[0] > 0.5 && x[1] > 0.5);
   // Either orientation.
-  auto reversed = s;
-  std::reverse(reversed.vertices.begin(), reversed.vertices.end());
-  EXPECT_EQ(fill_shape<2>(reversed, unit_grid, {2, 2, 1}, nullptr).positions, seeds.positions);
+  auto reversed = s.as<PolygonShape>().vertices;
+  std::reverse(reversed.begin(), reversed.end());
+  EXPECT_EQ(fill_shape<2>(polygon(reversed), unit_grid, {2, 2, 1}, nullptr).positions, seeds.positions);
 }
 
 // Two loops, even-odd: a square with a square hole.
@@ -96,14 +79,14 @@ TEST(Regions, BooleanCombinations) {
 // A cylinder along (1, 1, 1)/sqrt(3): particles satisfy the analytic test, the lattice volume is within
 // 2% of pi r^2 L, and the bounding box holds every particle.
 TEST(Regions, CylinderAlongAnyDirection) {
-  ShapeDescription s;
-  s.type = "cylinder";
-  s.center = {0.25, 0.25, 0.25};
-  s.radius = 0.1;
-  s.length = 0.8;
-  s.axis = -1;
+  CylinderShape cylinder;
+  cylinder.center = {0.25, 0.25, 0.25};
+  cylinder.radius = 0.1;
+  cylinder.axis.length = 0.8;
+  cylinder.axis.axis = -1;
   const double a = 1 / std::sqrt(3.0);
-  s.direction = {a, a, a};
+  cylinder.axis.direction = {a, a, a};
+  ShapeDescription s = make_shape("cylinder", cylinder);
   const GridGeometry<3> g(Vec<3>::Zero(), Vec<3>::Constant(0.02), {50, 50, 50});
   const auto seeds = fill_shape<3>(s, g, {2, 2, 2}, nullptr);
   const Vec<3> base(0.25, 0.25, 0.25), axis = Vec<3>::Constant(a);
@@ -121,6 +104,7 @@ TEST(Regions, CylinderAlongAnyDirection) {
   EXPECT_NEAR(bounds.lo[0], 0.25 - 0.1 * std::sqrt(2.0 / 3), 1e-15);
   EXPECT_NEAR(bounds.hi[2], 0.25 + 0.8 * a + 0.1 * std::sqrt(2.0 / 3), 1e-15);
   // Axis-aligned cylinders are unchanged: axis index wins over the direction.
-  s.axis = 0;
+  cylinder.axis.axis = 0;
+  s = make_shape("cylinder", cylinder);
   EXPECT_TRUE(make_region<3>(s)->contains(Vec<3>(0.9, 0.25, 0.25)));
 }

@@ -9,6 +9,8 @@
 
 #include "mpm/app/modules.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/body_shape/primitive_shapes.hpp"
+#include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/scene/scene_loader.hpp"
 
@@ -41,17 +43,16 @@ std::string scene_2d(const std::string& body, const std::string& solver = "") {
 // and its particle volumes sum to the 256-gon prism's volume (float vertices: 1e-6).
 TEST(SceneShapes, StlCylinderGivesTheParticlesOfThePrimitive) {
   const GridGeometry<3> grid(Vec<3>(-8e-3, -8e-3, 0), Vec<3>::Constant(0.5e-3), {32, 32, 52});
-  ShapeDescription stl;
-  stl.type = "mesh";
+  app::register_modules();  // geometry's mesh kind
+  geometry::MeshShape stl;
   stl.file = (source / "examples" / "15_stl_cylinder" / "cylinder.stl").string();
   stl.scale = 1e-3;
-  ShapeDescription cylinder;
-  cylinder.type = "cylinder";
+  CylinderShape cylinder;
   cylinder.radius = 3.8e-3;
-  cylinder.length = 25.4e-3;
-  cylinder.axis = 2;
-  const auto a = geometry::fill_shape<3>(stl, grid, {2, 2, 2}, nullptr);
-  const auto b = geometry::fill_shape<3>(cylinder, grid, {2, 2, 2}, nullptr);
+  cylinder.axis.length = 25.4e-3;
+  cylinder.axis.axis = 2;
+  const auto a = geometry::fill_shape<3>(make_shape("mesh", stl), grid, {2, 2, 2}, nullptr);
+  const auto b = geometry::fill_shape<3>(make_shape("cylinder", cylinder), grid, {2, 2, 2}, nullptr);
   EXPECT_EQ(a.positions.size(), 74664u);
   EXPECT_EQ(a.positions, b.positions);
   const double prism = 0.5 * 256 * 3.8e-3 * 3.8e-3 * std::sin(2 * M_PI / 256) * 25.4e-3;
@@ -62,6 +63,7 @@ TEST(SceneShapes, StlCylinderGivesTheParticlesOfThePrimitive) {
 // labels: [50, 100, 200] makes three bodies <name>_<label>, each with the area of its disk of pixels
 // (radii 20, 16, 25 pixels of 1 cm: within 1% of pi r^2).
 TEST(SceneShapes, ImageLabelsMakeOneBodyEach) {
+  app::register_modules();  // geometry's image kind
   const std::string image = (source / "tests" / "data" / "images" / "labels.png").string();
   const auto scene = parse_scene(scene_2d("  - name: grain\n    material: m\n    shape: {image: " + image +
                                           ", pixel_size: 0.01, labels: [50, 100, 200]}\n"),
@@ -110,6 +112,7 @@ TEST(SceneShapes, ConformingDomainsThroughTheScene) {
 
 // A 3D mesh body through the scene: relative file names are taken from the scene file's folder.
 TEST(SceneShapes, MeshPathIsRelativeToTheScene) {
+  app::register_modules();  // geometry's mesh kind
   const auto scene = parse_scene(
       "dimension: 3\n"
       "grid: {extent: [2, 2, 2], cell_size: 0.1}\n"
@@ -118,7 +121,8 @@ TEST(SceneShapes, MeshPathIsRelativeToTheScene) {
       "translation: [1, 0.5, 0.5]}}]\n"
       "solver: {cfl: 0.5, end_time: 0.001}\n",
       (source / "tests" / "data" / "bad_scenes" / "any.yaml").string());
-  EXPECT_EQ(scene.bodies[0].shape.file, (source / "tests" / "data" / "meshes" / "cube.off").lexically_normal());
+  EXPECT_EQ(scene.bodies[0].shape.as<geometry::MeshShape>().file,
+            (source / "tests" / "data" / "meshes" / "cube.off").lexically_normal());
   const auto sim = app::build_simulation<3>(scene);
   EXPECT_NEAR(total_volume(sim->bodies()[0]), 0.125, 1e-14);
 }
@@ -130,7 +134,7 @@ TEST(SceneShapes, PolygonFromAFile) {
                   (source / "tests" / "data" / "bad_scenes" / "any.yaml").string());
   const std::vector<std::array<double, 2>> corners{{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.5},
                                                    {0.5, 0.5}, {0.5, 0.8}, {0.2, 0.8}};
-  EXPECT_EQ(scene.bodies[0].shape.vertices, corners);
+  EXPECT_EQ(scene.bodies[0].shape.as<PolygonShape>().vertices, corners);
   const auto sim = app::build_simulation<2>(scene);
   EXPECT_NEAR(total_volume(sim->bodies()[0]) / 0.27, 1, 1e-12);  // a sum of 2,700 equal volumes
 }

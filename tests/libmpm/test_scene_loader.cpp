@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mpm/app/modules.hpp"
+#include "mpm/body_shape/primitive_shapes.hpp"
 #include "mpm/boundary/velocity_face.hpp"
 #include "mpm/core/expression.hpp"
 #include "mpm/scene/scene_loader.hpp"
@@ -251,18 +252,18 @@ TEST(SceneLoader, Good2D) {
   const auto& block = s.bodies[0];
   EXPECT_EQ(block.name, "block");
   EXPECT_EQ(block.material, "rubber");
-  EXPECT_EQ(block.shape.type, "box");
-  EXPECT_EQ(block.shape.min, (std::array<double, 3>{0.1, 0.1, 0}));
-  EXPECT_EQ(block.shape.max, (std::array<double, 3>{0.5, 0.3, 0}));
+  EXPECT_EQ(block.shape.kind, "box");
+  EXPECT_EQ(block.shape.as<mpm::BoxShape>().min, (std::array<double, 3>{0.1, 0.1, 0}));
+  EXPECT_EQ(block.shape.as<mpm::BoxShape>().max, (std::array<double, 3>{0.5, 0.3, 0}));
   EXPECT_EQ(block.particles_per_cell, (std::array<int, 3>{2, 3, 1}));
   EXPECT_EQ(block.velocity, (std::array<std::string, 3>{"0.1", "0.2*x", "0"}));
   EXPECT_EQ(block.where.line, 24);
   const auto& disk = s.bodies[1];
   EXPECT_EQ(disk.name, "body1");  // default name from the list index
   EXPECT_EQ(disk.material, "steel");
-  EXPECT_EQ(disk.shape.type, "disk");
-  EXPECT_EQ(disk.shape.center, (std::array<double, 3>{1.0, 0.5, 0}));
-  EXPECT_EQ(disk.shape.radius, 0.2);
+  EXPECT_EQ(disk.shape.kind, "disk");
+  EXPECT_EQ(disk.shape.as<mpm::BallShape>().center, (std::array<double, 3>{1.0, 0.5, 0}));
+  EXPECT_EQ(disk.shape.as<mpm::BallShape>().radius, 0.2);
   EXPECT_EQ(disk.particles_per_cell, (std::array<int, 3>{4, 4, 1}));
   EXPECT_EQ(disk.velocity, (std::array<std::string, 3>{"0", "0", "0"}));
   EXPECT_EQ(disk.where.line, 29);
@@ -309,16 +310,16 @@ TEST(SceneLoader, Good3D) {
 
   ASSERT_EQ(s.bodies.size(), 2u);
   const auto& ball = s.bodies[0];
-  EXPECT_EQ(ball.shape.type, "sphere");
-  EXPECT_EQ(ball.shape.center, (std::array<double, 3>{0.5, 0.5, 1.5}));
-  EXPECT_EQ(ball.shape.radius, 0.25);
+  EXPECT_EQ(ball.shape.kind, "sphere");
+  EXPECT_EQ(ball.shape.as<mpm::BallShape>().center, (std::array<double, 3>{0.5, 0.5, 1.5}));
+  EXPECT_EQ(ball.shape.as<mpm::BallShape>().radius, 0.25);
   EXPECT_EQ(ball.particles_per_cell, (std::array<int, 3>{2, 2, 2}));
   EXPECT_EQ(ball.velocity, (std::array<std::string, 3>{"0", "0", "-1 - 0.5*z"}));
   const auto& pillar = s.bodies[1];
-  EXPECT_EQ(pillar.shape.type, "cylinder");
-  EXPECT_EQ(pillar.shape.axis, 2);
-  EXPECT_EQ(pillar.shape.length, 0.75);
-  EXPECT_EQ(pillar.shape.radius, 0.2);
+  EXPECT_EQ(pillar.shape.kind, "cylinder");
+  EXPECT_EQ(pillar.shape.as<mpm::CylinderShape>().axis.axis, 2);
+  EXPECT_EQ(pillar.shape.as<mpm::CylinderShape>().axis.length, 0.75);
+  EXPECT_EQ(pillar.shape.as<mpm::CylinderShape>().radius, 0.2);
   EXPECT_EQ(pillar.particles_per_cell, (std::array<int, 3>{1, 2, 3}));
 
   // Defaults.

@@ -1,13 +1,14 @@
-// `bodies:` (docs/scene-reference.md, bodies): material, shape (shapes.hpp), particles per cell, initial
-// velocity; an image with `labels:` becomes one body per label.
+// `bodies:` (docs/scene-reference.md, bodies): material, shape (read through its kind, body_shape/shape_kind.hpp),
+// particles per cell, initial velocity, volume; a shape that makes several bodies (an image with `labels:`) becomes
+// one body each.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpm/body_shape/shape_kind.hpp"
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/scene_limits.hpp"
 #include "mpm/scene/spec_map.hpp"
 #include "sections.hpp"
-#include "shapes.hpp"
 
 namespace mpm {
 
@@ -47,6 +48,12 @@ const std::vector<io::KeySpec>& body_keys() {
        .choices = {"lattice", "conforming"},
        .default_value = std::string("lattice"),
        .description = "the CPDI particle elements (see below)"},
+      {.name = "volume",
+       .type = KeyType::choice,
+       .choices = {"lattice", "exact"},
+       .absent = "the shape kind's: `exact` for `polygon`, `mesh`, `image`; `lattice` otherwise",
+       .description = "the particles' volumes: `lattice`, each its sub-cell's; `exact`, the shape's exact volume "
+                      "shared equally (shape kinds whose volume is known, see below)"},
   };
   return keys;
 }
@@ -58,7 +65,7 @@ namespace {
 /// shape may cross the axis (its part at r < 0 is not filled: a disk centred on the axis is a sphere).
 void check_inside_grid(const YamlReader& reader, const YamlValue& shape, const BodyDescription& body, int dimension,
                        const GridDescription& grid) {
-  const auto box = bounding_box(body.shape, dimension);
+  const auto box = shape_bounds(body.shape, dimension);
   for (int d = 0; box && d < dimension; ++d) {
     const auto& [lo, hi] = *box;
     const double grid_lo = grid.origin[d], grid_hi = grid.origin[d] + grid.extent[d];
@@ -71,9 +78,30 @@ void check_inside_grid(const YamlReader& reader, const YamlValue& shape, const B
   }
 }
 
-/// `labels` receives the values of an image shape's `labels:` list (the body is then one body per label).
+/// `volume:` against the shape's kind: `exact` needs a kind whose volume is known; cartesian coordinates only (an
+/// axisymmetric body's particle volumes are the rings of their lattice sub-cells).
+bool read_volume(const io::SpecMap& map, const ShapeDescription& shape, const SceneDescription& scene) {
+  const ShapeTraits& traits = shape_kind(shape).traits;
+  const auto value = map.find("volume");
+  if (!value) return traits.exact_by_default;
+  const bool exact = map.choice("volume") == "exact";
+  if (exact && !traits.exact_volume) {
+    std::vector<std::string> known;
+    for (const auto& name : shape_kind_names())
+      if (find_shape_kind(name)->traits.exact_volume) known.push_back(name);
+    map.reader().fail(*value, fmt::format("volume: exact needs a shape whose volume is known ({}); {} has none",
+                                          fmt::join(known, ", "), shape_kind(shape).noun));
+  }
+  if (exact && scene.grid.coordinates == Coordinates::axisymmetric)
+    map.reader().fail(*value,
+                      "volume: exact is for cartesian coordinates; in an axisymmetric run each particle's volume is "
+                      "the ring its lattice sub-cell sweeps about the axis");
+  return exact;
+}
+
+/// `bodies` receives the bodies of a shape that makes several (suffix of the name and shape description each).
 BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std::size_t index,
-                          const SceneDescription& scene, std::vector<double>& labels) {
+                          const SceneDescription& scene, std::vector<std::pair<std::string, std::any>>& bodies) {
   const int dimension = scene.dimension;
   const io::SpecMap map(reader, value, body_keys());
   BodyDescription body;
@@ -91,7 +119,7 @@ BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std:
   }
 
   const YamlValue shape = map.required("shape");
-  body.shape = read_shape(reader, shape, dimension, scene.file, true, &labels);
+  body.shape = read_body_shape(reader, shape, {.dimension = dimension, .scene_file = scene.file, .bodies = &bodies});
   check_inside_grid(reader, shape, body, dimension, scene.grid);
 
   body.particles_per_cell = {1, 1, 1};
@@ -115,6 +143,7 @@ BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std:
     for (int d = 0; d < dimension; ++d) body.velocity[d] = reader.expression(components[d], {"x", "y", "z"});
   }
   body.domains = map.choice("domains");
+  body.exact_volume = read_volume(map, body.shape, scene);
   return body;
 }
 
@@ -127,15 +156,15 @@ std::vector<BodyDescription> read_bodies(const YamlReader& reader, const YamlVal
   std::vector<BodyDescription> bodies;
   std::map<std::string, int> first_line;  // body name -> line of its definition
   for (std::size_t i = 0; i < items.size(); ++i) {
-    std::vector<double> labels;
-    const BodyDescription read = read_body(reader, items[i], i, scene, labels);
+    std::vector<std::pair<std::string, std::any>> several;
+    const BodyDescription read = read_body(reader, items[i], i, scene, several);
     std::vector<BodyDescription> expanded{read};
-    if (!labels.empty()) {  // an image with `labels:`: one body per label, named <name>_<label>
+    if (!several.empty()) {  // a shape that makes several bodies (an image with `labels:`), named <name>_<suffix>
       expanded.clear();
-      for (const double label : labels) {
+      for (auto& [suffix, spec] : several) {
         BodyDescription body = read;
-        body.name = fmt::format("{}_{}", read.name, label);
-        body.shape.label = label;
+        body.name = fmt::format("{}_{}", read.name, suffix);
+        body.shape.spec = std::move(spec);
         expanded.push_back(std::move(body));
       }
     }

@@ -13,7 +13,8 @@
 /// and says what it holds after the colon:
 ///   - `keys of PATH`: the keys of the section at the dotted PATH (`output`, `output.checkpoint`, `bodies`, an
 ///     entry of a list: `contact.planes`), `top-level keys`: the sections;
-///   - `output fields`, `history kinds`: the tables of those registries;
+///   - `output fields`, `history kinds`, `shape kinds`: the tables of those registries; `keys of shape KIND`: the keys
+///     of a body shape kind (body_shape/shape_kind.hpp);
 ///   - `parameters of A, B, ...`, `parameters specific to A, B, ...`, `parameters added to every model`: the
 ///     material tables (material_reference.hpp).
 /// `mpm reference docs/scene-reference.md` (the CMake target `scene_reference`) rewrites the blocks; the test

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/primitive_filler.hpp"
 #include "mpm/geometry/region.hpp"
 
@@ -31,10 +32,10 @@ Image read_image(const std::string& file);
 /// The region of the selected pixels. Throws GeometryError when the selection is empty (naming the
 /// threshold or label and the range of values in the image) or the image has another dimension.
 template <int Dim>
-std::unique_ptr<Region<Dim>> make_image_region(const ShapeDescription& shape);
+std::unique_ptr<Region<Dim>> make_image_region(const ImageShape& shape);
 
 /// One particle at the centre of every selected pixel, with the pixel's volume (`resolution: pixel`).
 template <int Dim>
-ParticleSeeds<Dim> fill_image_pixels(const ShapeDescription& shape);
+ParticleSeeds<Dim> fill_image_pixels(const ImageShape& shape);
 
 }  // namespace mpm::geometry

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/region.hpp"
 
 namespace mpm::geometry {
@@ -22,11 +23,11 @@ struct MeshSummary {
 };
 
 /// The 3D region inside the mesh of `shape.file`. Throws GeometryError naming the file and the problem.
-std::unique_ptr<Region<3>> make_mesh_region(const ShapeDescription& shape, std::vector<std::string>* warnings,
+std::unique_ptr<Region<3>> make_mesh_region(const MeshShape& shape, std::vector<std::string>* warnings,
                                             MeshSummary* summary = nullptr);
 
 /// The 2D region cut from the mesh by the plane z = *shape.section (after the transform): the polygon
 /// loops of the section, even-odd inside. Throws GeometryError when the plane misses the mesh.
-std::unique_ptr<Region<2>> make_mesh_section(const ShapeDescription& shape, std::vector<std::string>* warnings);
+std::unique_ptr<Region<2>> make_mesh_section(const MeshShape& shape, std::vector<std::string>* warnings);
 
 }  // namespace mpm::geometry

@@ -61,33 +61,23 @@ struct MaterialDescription {
   SourceLocation failure_where;  ///< the `failure:` key
 };
 
-/// The shape a body is filled from (docs/scene-reference.md, bodies[].shape): a primitive, a polygon, a CAD
-/// mesh, an image, or the union / intersection / difference of shapes (filled by geometry/).
+/// The shape a body is filled from (docs/scene-reference.md, bodies[].shape): the name of its kind (the registry
+/// of body_shape/shape_kind.hpp, whose entry reads, bounds and fills it) and what the kind's parser read (its own
+/// plain description: BoxShape, DiskShape, ... of body_shape/primitive_shapes.hpp, geometry's MeshShape, ...).
 struct ShapeDescription {
-  /// "box", "disk" (2D), "sphere" (3D), "cylinder" (3D), "polygon" (2D), "mesh", "image", "particles" (a
-  /// particle file), "union", "intersection", "difference"
-  std::string type;
-  std::array<double, 3> min{0, 0, 0}, max{0, 0, 0};  ///< box corners, m
-  std::array<double, 3> center{0, 0, 0};             ///< disk/sphere centre, cylinder base centre, m
-  double radius = 0;                                 ///< m
-  int axis = 2;                                      ///< cylinder axis (0 = x, 1 = y, 2 = z; -1 = oblique)
-  double length = 0;                                 ///< cylinder length along its axis, m
-  std::array<double, 3> direction{0, 0, 1};          ///< cylinder axis as a unit vector (any direction)
-  std::vector<std::array<double, 2>> vertices;       ///< polygon corners, m (either orientation)
-  std::vector<ShapeDescription> parts;  ///< union/intersection/difference operands (difference: first minus the rest)
-  // CAD meshes and images
-  std::string file;                         ///< mesh, image or particle file (made relative to the working directory)
-  double scale = 1;                         ///< mesh: factor on the file's coordinates (1e-3 for mm), applied first
-  std::array<double, 3> rotation{0, 0, 0};  ///< mesh: rotation angles about x, then y, then z, degrees
-  std::array<double, 3> translation{0, 0, 0};         ///< mesh: added last, m
-  std::optional<double> section;                      ///< 2D scene: the mesh is cut by the plane z = section, m
-  std::array<double, 3> pixel_size{0, 0, 0};          ///< image: pixel/voxel size per axis, m (0: the .vti's spacing)
-  std::optional<std::array<double, 3>> image_origin;  ///< image: lower corner of the image, m
-  std::optional<double> threshold;                    ///< image: pixels with value >= threshold form the body
-  std::optional<double> label;                        ///< image: pixels with exactly this value form the body
-  bool pixel_particles = false;      ///< image: one particle per selected pixel instead of the grid lattice
-  std::optional<int> particle_body;  ///< particles: only the rows whose field `body` has this value
-  SourceLocation where;              ///< of the shape, for errors found while filling it
+  std::string kind;
+  std::any spec;
+  SourceLocation where;  ///< of the shape, for errors found while filling it
+
+  /// The kind's description (std::bad_any_cast when it is another type).
+  template <class Spec>
+  const Spec& as() const {
+    return std::any_cast<const Spec&>(spec);
+  }
+  template <class Spec>
+  Spec& as() {
+    return std::any_cast<Spec&>(spec);
+  }
 };
 
 /// A body: a set of particles with one material.
@@ -101,6 +91,9 @@ struct BodyDescription {
   /// CPDI particle elements: "lattice" (every particle sub-cell split into elements) or "conforming" (a CGAL
   /// triangle or tetrahedron mesh of the shape, cpdi_t3 / cpdi_tet4 only).
   std::string domains = "lattice";
+  /// `volume: exact`: the particles share the shape's exact volume (ShapeTraits::exact_volume) instead of each
+  /// having its lattice sub-cell's; the default is the kind's (ShapeTraits::exact_by_default).
+  bool exact_volume = false;
   SourceLocation where;
 };
 

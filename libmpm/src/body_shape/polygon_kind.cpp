@@ -1,5 +1,6 @@
-// `type: polygon` (2D): corners from the scene or from a text file, checked to form a simple polygon of
-// non-zero area.
+// `type: polygon` (2D; docs/scene-reference.md, bodies[].shape): corners from the scene or from a text file, checked
+// to form a simple polygon of non-zero area. Its area is known exactly (the shoelace formula), and `volume` defaults
+// to it; `domains: conforming` meshes it.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -8,9 +9,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "shapes.hpp"
+#include "kinds.hpp"
+#include "mpm/body_shape/polygon_region.hpp"
+#include "mpm/scene/yaml_reader.hpp"
 
-namespace mpm::sections {
+namespace mpm::shapes {
 namespace {
 
 using Point = std::array<double, 2>;
@@ -34,7 +37,7 @@ bool segments_meet(const Point& a, const Point& b, const Point& c, const Point& 
 /// Corners from a polygon file: one corner "x y" (or "x, y") per line, in m; blank lines and lines starting
 /// with '#' are skipped.
 void read_polygon_file(const io::YamlReader& reader, const io::YamlValue& value, const std::string& scene_file,
-                       ShapeDescription& shape) {
+                       std::vector<Point>& vertices) {
   const std::string name = reader.name(value);
   std::filesystem::path path(name);
   if (path.is_relative()) path = std::filesystem::path(scene_file).parent_path() / path;
@@ -52,7 +55,7 @@ void read_polygon_file(const io::YamlReader& reader, const io::YamlValue& value,
     if (!x || !y || !extra.empty())
       reader.fail(value, fmt::format("polygon file '{}', line {}: expected two numbers \"x y\" (m), got \"{}\"", name,
                                      number, line));
-    shape.vertices.push_back({*x, *y});
+    vertices.push_back({*x, *y});
   }
 }
 
@@ -77,27 +80,77 @@ void check_simple(const io::YamlReader& reader, const io::YamlValue& where, cons
     reader.fail(where, "the polygon has zero area");
 }
 
-}  // namespace
+const std::vector<io::KeySpec>& keys() {
+  using io::KeyType;
+  static const std::vector<io::KeySpec> k{
+      {.name = "vertices",
+       .type = KeyType::list,
+       .unit = "m",
+       .absent = "required unless `file`",
+       .description = "the corners, either orientation, not crossing itself, non-zero area (a repeated closing "
+                      "corner is dropped)",
+       .type_text = "list of at least 3 `[x, y]`"},
+      {.name = "file",
+       .type = KeyType::name,
+       .absent = "instead of `vertices`",
+       .description = "a text file of corners, one `x y` (or `x, y`) per line in m, blank lines and lines starting "
+                      "with `#` skipped, relative to the scene file's folder"},
+  };
+  return k;
+}
 
-void read_polygon(const io::YamlReader& reader, const io::YamlMap& map, const std::string& scene_file,
-                  ShapeDescription& shape) {
-  map.allow({"type", "vertices", "file"});
+std::any parse(const io::YamlReader& reader, const io::YamlMap& map, const ShapeContext& context) {
+  map.allow(typed_keys(keys()));
+  PolygonShape polygon;
   const auto vertices = map.find("vertices"), file = map.find("file");
   if (vertices && file) reader.fail(*file, "give the corners either as vertices or in a file, not both");
   if (!vertices && !file) map.required("vertices", "key", " (or file: a text file of corners)");
   const io::YamlValue list = vertices ? *vertices : *file;
   if (file) {
-    read_polygon_file(reader, *file, scene_file, shape);
+    read_polygon_file(reader, *file, context.scene_file, polygon.vertices);
   } else {
     for (const auto& item : reader.list(list, std::nullopt, "[x, y] corners")) {
       const auto xy = reader.vector(item, 2, io::Range::any(), "m");
-      shape.vertices.push_back({xy[0], xy[1]});
+      polygon.vertices.push_back({xy[0], xy[1]});
     }
   }
-  auto& corners = shape.vertices;
+  auto& corners = polygon.vertices;
   if (corners.size() > 3 && corners.front() == corners.back()) corners.pop_back();  // a closing corner repeated
   if (corners.size() < 3) reader.fail(list, fmt::format("a polygon needs at least 3 corners, got {}", corners.size()));
   check_simple(reader, list, corners);
+  return polygon;
 }
 
-}  // namespace mpm::sections
+std::optional<ShapeBoundingBox> bounds(const std::any& spec, int) {
+  const auto& vertices = std::any_cast<const PolygonShape&>(spec).vertices;
+  std::array<double, 3> lo{vertices[0][0], vertices[0][1], 0}, hi = lo;
+  for (const auto& corner : vertices)
+    for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], corner[d]), hi[d] = std::max(hi[d], corner[d]);
+  return ShapeBoundingBox{lo, hi};
+}
+
+std::unique_ptr<Region<2>> region(const std::any& spec, std::vector<std::string>*) {
+  PolygonRegion::Loop loop;
+  for (const auto& v : std::any_cast<const PolygonShape&>(spec).vertices) loop.emplace_back(v[0], v[1]);
+  return std::make_unique<PolygonRegion>(std::vector<PolygonRegion::Loop>{loop});
+}
+
+}  // namespace
+
+ShapeKind polygon_kind() {
+  ShapeKind k;
+  k.name = "polygon";
+  k.noun = "a polygon";
+  k.description = "a simple polygon from its corners (in the scene or a text file)";
+  k.keys = keys();
+  k.traits.dimensions = {false, true, false};
+  k.traits.exact_volume = true;
+  k.traits.exact_by_default = true;
+  k.traits.conforming_mesh = true;
+  k.parse = parse;
+  k.bounds = bounds;
+  k.region_2d = region;
+  return k;
+}
+
+}  // namespace mpm::shapes

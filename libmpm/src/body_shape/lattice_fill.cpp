@@ -1,12 +1,14 @@
-#include "mpm/geometry/primitive_filler.hpp"
+// The lattice fill (mpm/body_shape/lattice_fill.hpp).
+#include "mpm/body_shape/lattice_fill.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace mpm::geometry {
+namespace mpm {
 
 template <int Dim>
-ParticleSeeds<Dim> fill_region(const Region<Dim>& region, const GridGeometry<Dim>& g, const std::array<int, 3>& ppc) {
+ParticleSeeds<Dim> fill_region(const Region<Dim>& region, const GridGeometry<Dim>& g, const std::array<int, 3>& ppc,
+                               bool exact) {
   ParticleSeeds<Dim> seeds;
   const Box<Dim> box = region.bounds();
   std::array<int, 3> first{0, 0, 0}, last{0, 0, 0};  // cell range touching the bounding box
@@ -28,13 +30,13 @@ ParticleSeeds<Dim> fill_region(const Region<Dim>& region, const GridGeometry<Dim
               if (region.contains(x)) seeds.positions.push_back(x);
             }
   seeds.volume = seeds.sub_cell_volume;
-  if (const auto exact = region.exact_volume(); exact && !seeds.positions.empty())
-    seeds.volume = *exact / static_cast<Real>(seeds.positions.size());
+  if (const auto volume = exact ? region.exact_volume() : std::nullopt; volume && !seeds.positions.empty())
+    seeds.volume = *volume / static_cast<Real>(seeds.positions.size());
   return seeds;
 }
 
-template ParticleSeeds<1> fill_region<1>(const Region<1>&, const GridGeometry<1>&, const std::array<int, 3>&);
-template ParticleSeeds<2> fill_region<2>(const Region<2>&, const GridGeometry<2>&, const std::array<int, 3>&);
-template ParticleSeeds<3> fill_region<3>(const Region<3>&, const GridGeometry<3>&, const std::array<int, 3>&);
+template ParticleSeeds<1> fill_region<1>(const Region<1>&, const GridGeometry<1>&, const std::array<int, 3>&, bool);
+template ParticleSeeds<2> fill_region<2>(const Region<2>&, const GridGeometry<2>&, const std::array<int, 3>&, bool);
+template ParticleSeeds<3> fill_region<3>(const Region<3>&, const GridGeometry<3>&, const std::array<int, 3>&, bool);
 
-}  // namespace mpm::geometry
+}  // namespace mpm
