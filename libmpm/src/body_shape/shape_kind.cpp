@@ -9,22 +9,18 @@
 #include <cctype>
 #include <deque>
 #include <filesystem>
-#include <mutex>
 #include <system_error>
 
 #include "kinds.hpp"
+#include "mpm/core/kind_table.hpp"
 #include "mpm/scene/yaml_reader.hpp"
 
 namespace mpm {
 namespace {
 
-std::mutex& table_mutex() {
-  static std::mutex m;
-  return m;
-}
-/// A deque: entries never move, so find_shape_kind's pointers stay valid as modules register.
-std::deque<ShapeKind>& table() {
-  static std::deque<ShapeKind> t = shapes::core_shape_kinds();
+/// The core's kinds, then the modules' (core/kind_table.hpp).
+KindTable<ShapeKind>& table() {
+  static KindTable<ShapeKind> t{shapes::core_shape_kinds()};
   return t;
 }
 
@@ -80,29 +76,11 @@ std::string lower_case(std::string text) {
 
 }  // namespace
 
-void register_shape_kind(ShapeKind kind) {
-  std::lock_guard lock(table_mutex());
-  for (auto& k : table())
-    if (k.name == kind.name) {
-      k = std::move(kind);
-      return;
-    }
-  table().push_back(std::move(kind));
-}
+void register_shape_kind(ShapeKind kind) { table().add(std::move(kind)); }
 
-const ShapeKind* find_shape_kind(std::string_view name) {
-  std::lock_guard lock(table_mutex());
-  for (const auto& k : table())
-    if (k.name == name) return &k;
-  return nullptr;
-}
+const ShapeKind* find_shape_kind(std::string_view name) { return table().find(name); }
 
-std::vector<std::string> shape_kind_names() {
-  std::lock_guard lock(table_mutex());
-  std::vector<std::string> names;
-  for (const auto& k : table()) names.push_back(k.name);
-  return names;
-}
+std::vector<std::string> shape_kind_names() { return table().names(); }
 
 const ShapeKind& shape_kind(const ShapeDescription& shape) {
   const ShapeKind* kind = find_shape_kind(shape.kind);

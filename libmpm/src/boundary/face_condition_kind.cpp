@@ -6,9 +6,9 @@
 #include <fmt/ranges.h>
 
 #include <deque>
-#include <mutex>
 
 #include "kinds.hpp"
+#include "mpm/core/kind_table.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/yaml_reader.hpp"
 #include "mpm/schemes/scheme.hpp"
@@ -16,14 +16,11 @@
 namespace mpm {
 namespace {
 
-std::mutex& table_mutex() {
-  static std::mutex m;
-  return m;
-}
-/// A deque: entries never move, so find_face_condition_kind's pointers stay valid as modules register.
-std::deque<FaceConditionKind>& table() {
-  static std::deque<FaceConditionKind> t{boundary::fixed_kind(), boundary::slip_kind(),       boundary::free_kind(),
-                                         boundary::stop_kind(),  boundary::prescribed_kind(), boundary::outflow_kind()};
+/// The core's kinds, then the modules' (core/kind_table.hpp).
+KindTable<FaceConditionKind>& table() {
+  static KindTable<FaceConditionKind> t{
+      std::deque<FaceConditionKind>{boundary::fixed_kind(), boundary::slip_kind(), boundary::free_kind(),
+                                    boundary::stop_kind(), boundary::prescribed_kind(), boundary::outflow_kind()}};
   return t;
 }
 
@@ -35,29 +32,11 @@ const FaceConditionKind& kind_of(const FaceDescription& face) {
 
 }  // namespace
 
-void register_face_condition_kind(FaceConditionKind kind) {
-  std::lock_guard lock(table_mutex());
-  for (auto& k : table())
-    if (k.name == kind.name) {
-      k = std::move(kind);
-      return;
-    }
-  table().push_back(std::move(kind));
-}
+void register_face_condition_kind(FaceConditionKind kind) { table().add(std::move(kind)); }
 
-const FaceConditionKind* find_face_condition_kind(std::string_view name) {
-  std::lock_guard lock(table_mutex());
-  for (const auto& k : table())
-    if (k.name == name) return &k;
-  return nullptr;
-}
+const FaceConditionKind* find_face_condition_kind(std::string_view name) { return table().find(name); }
 
-std::vector<std::string> face_condition_kind_names() {
-  std::lock_guard lock(table_mutex());
-  std::vector<std::string> names;
-  for (const auto& k : table()) names.push_back(k.name);
-  return names;
-}
+std::vector<std::string> face_condition_kind_names() { return table().names(); }
 
 FaceDescription read_face_condition(const io::YamlReader& reader, const io::YamlValue& value, const FaceContext& face) {
   FaceDescription d;

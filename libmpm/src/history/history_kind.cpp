@@ -3,50 +3,28 @@
 #include "mpm/history/history_kind.hpp"
 
 #include <deque>
-#include <mutex>
 
 #include "history_support.hpp"
+#include "mpm/core/kind_table.hpp"
 #include "mpm/output/output_fields.hpp"
 
 namespace mpm {
 namespace {
 
-std::mutex& table_mutex() {
-  static std::mutex m;
-  return m;
-}
-/// A deque: entries never move, so find_history_kind's pointers stay valid as modules register.
-std::deque<HistoryKind>& table() {
-  static std::deque<HistoryKind> t{history::probe_kind(), history::reaction_kind(), history::energy_kind(),
-                                   history::extent_kind()};
+/// The core's kinds, then the modules' (core/kind_table.hpp), found by their `type`.
+KindTable<HistoryKind, &HistoryKind::type>& table() {
+  static KindTable<HistoryKind, &HistoryKind::type> t{std::deque<HistoryKind>{
+      history::probe_kind(), history::reaction_kind(), history::energy_kind(), history::extent_kind()}};
   return t;
 }
 
 }  // namespace
 
-void register_history_kind(HistoryKind kind) {
-  std::lock_guard lock(table_mutex());
-  for (auto& k : table())
-    if (k.type == kind.type) {
-      k = std::move(kind);
-      return;
-    }
-  table().push_back(std::move(kind));
-}
+void register_history_kind(HistoryKind kind) { table().add(std::move(kind)); }
 
-const HistoryKind* find_history_kind(std::string_view type) {
-  std::lock_guard lock(table_mutex());
-  for (const auto& k : table())
-    if (k.type == type) return &k;
-  return nullptr;
-}
+const HistoryKind* find_history_kind(std::string_view type) { return table().find(type); }
 
-std::vector<std::string> history_kind_names() {
-  std::lock_guard lock(table_mutex());
-  std::vector<std::string> names;
-  for (const auto& k : table()) names.push_back(k.type);
-  return names;
-}
+std::vector<std::string> history_kind_names() { return table().names(); }
 
 std::vector<std::string> history_output_fields(const OutputDescription& output) {
   std::vector<std::string> fields;
