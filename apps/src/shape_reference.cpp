@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "mpm/body_shape/shape_kind.hpp"
 #include "mpm/app/scene_reference.hpp"
+#include "mpm/body_shape/shape_kind.hpp"
 
 namespace mpm {
 namespace {
