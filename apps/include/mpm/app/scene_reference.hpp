@@ -60,4 +60,10 @@ std::string output_field_table();
 /// The history kinds (`output.histories[].type`): type, its own keys, description.
 std::string history_kind_table();
 
+/// The table of the shape kinds (docs/scene-reference.md, `shape kinds`): name, dimensions, traits, description
+/// (apps/src/shape_reference.cpp).
+std::string shape_kind_table();
+/// The keys of kind `name` as a table (the block `keys of shape NAME`), or nothing for an unregistered kind.
+std::optional<std::string> shape_key_table(const std::string& name);
+
 }  // namespace mpm

@@ -178,9 +178,4 @@ ParticleSeeds<Dim> fill_shape(const ShapeDescription& shape, const GridGeometry<
 std::string read_shape_file(const io::YamlReader& reader, const io::YamlValue& value, const std::string& scene_file,
                             const std::vector<std::string>& extensions, std::string_view what);
 
-/// The table of the shape kinds (docs/scene-reference.md, `shape kinds`): name, dimensions, traits, description.
-std::string shape_kind_table();
-/// The keys of kind `name` as a table (the block `keys of shape NAME`), or nothing for an unregistered kind.
-std::optional<std::string> shape_key_table(const std::string& name);
-
 }  // namespace mpm
