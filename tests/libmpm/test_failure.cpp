@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "mpm/diagnostics/energy_sentinel.hpp"
 #include "mpm/core/exact_sum.hpp"
+#include "mpm/core/state_archive.hpp"
+#include "mpm/diagnostics/energy_sentinel.hpp"
 #include "mpm/failure/failing_material.hpp"
 #include "mpm/failure/failure_module.hpp"
-#include "mpm/core/state_archive.hpp"
 #include "scene_fixture.hpp"
 
 namespace mpm {

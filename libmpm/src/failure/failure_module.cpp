@@ -6,9 +6,9 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-#include "mpm/schemes/axisymmetric.hpp"
-#include "mpm/particles/field_keys.hpp"
 #include "mpm/core/state_archive.hpp"
+#include "mpm/particles/field_keys.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm {
 

@@ -6,8 +6,8 @@
 #include <array>
 #include <cstdint>
 
-#include "mpm/simulation/energy_audit.hpp"
 #include "mpm/core/state_archive.hpp"
+#include "mpm/simulation/energy_audit.hpp"
 
 namespace mpm {
 namespace {

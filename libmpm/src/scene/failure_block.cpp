@@ -3,9 +3,9 @@
 // measure the model does not keep (plastic strain, damage) is refused by asking the model's traits.
 #include <fmt/format.h>
 
-#include "mpm/scene/spec_map.hpp"
 #include "mpm/materials/material_registry.hpp"
 #include "mpm/scene/scene_keys.hpp"
+#include "mpm/scene/spec_map.hpp"
 #include "sections.hpp"
 
 namespace mpm {

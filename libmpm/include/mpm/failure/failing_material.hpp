@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/failure/failure_criteria.hpp"
-#include "mpm/particles/field_keys.hpp"
 #include "mpm/materials/material.hpp"
+#include "mpm/particles/field_keys.hpp"
+#include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm {
 

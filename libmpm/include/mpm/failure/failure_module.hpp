@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "mpm/failure/failure_criteria.hpp"
-#include "mpm/simulation/module.hpp"
 #include "mpm/removal/removed_particles.hpp"
+#include "mpm/simulation/module.hpp"
 
 namespace mpm {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "mpm/particles/body.hpp"
 #include "mpm/parallel/communicator.hpp"
+#include "mpm/particles/body.hpp"
 #include "mpm/simulation/energy.hpp"
 #include "mpm/simulation/module.hpp"
 
