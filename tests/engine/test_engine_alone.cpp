@@ -58,13 +58,14 @@ TEST(EngineAlone, AFallingBlockFollowsTheClosedForm) {
   for (Index k = 0; k < p.size(); ++k) {
     EXPECT_NEAR(p.v[k][1], g * t, 1e-10) << "particle " << k;
     EXPECT_NEAR(p.v[k][0], 0, 1e-12) << "particle " << k;
-    EXPECT_NEAR(p.x[k][1] - x0[k][1], 0.5 * g * dt * dt * n * (n + 1), 1e-10) << "particle " << k;
+    // by id: the simulation reorders the particles by cell every sort_interval steps
+    EXPECT_NEAR(p.x[k][1] - x0[p.id[k]][1], 0.5 * g * dt * dt * n * (n + 1), 1e-10) << "particle " << p.id[k];
     momentum += p.mass[k] * p.v[k][1];
     mass += p.mass[k];
     largest_stress = std::max(largest_stress, p.stress[k].block().cwiseAbs().maxCoeff());
   }
   EXPECT_NEAR(momentum / (mass * g * t), 1, 1e-10);
-  EXPECT_LT(largest_stress, 1e-3);  // Pa: a uniform motion strains nothing (round-off of a 2e11 Pa modulus)
+  EXPECT_LT(largest_stress, 1e-6);  // Pa: a uniform motion strains nothing (round-off of a 2e7 Pa modulus)
 }
 
 }  // namespace
