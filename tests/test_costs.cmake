@@ -5,6 +5,8 @@
 # measured times replace them. Only the order depends on them: a stale or missing entry costs wall time, never a
 # result (a test that does not exist in this build, a module left out, is ignored).
 set(mpm_test_costs
+  Perforation.SphereThroughPlateRunsToItsEndWithClosedBooks 30
+  Perforation.FailedAndErodedParticlesLeaveTheTimeStep 8
   EnergySentinelDisks.CpGimpDoesNotWarn 46
   Verify.AxisymmetricTaylorAnvilBandHoldsTheErrorAgainstTheFinestRun 38
   MmsCpdi.TwoD 35

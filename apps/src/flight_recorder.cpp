@@ -288,7 +288,7 @@ FlightRecord record_failure(Simulation<Dim>& sim, const StabilityReport& report,
     record.frames = recorder.frames();
     record.first_step = sim.failure_replay_start();
     if (!writes) return record;
-    const EnergyHint& hint = find_energy_hint(context, trigger_guard);
+    const EnergyHint& hint = find_energy_hint(context, report.face.empty() ? trigger_guard : trigger_left_grid);
     std::ofstream d;
     d.exceptions(std::ios::failbit | std::ios::badbit);
     d.open(partial / "diagnosis.txt");

@@ -212,8 +212,12 @@ RunSummary summarise(RunSummary summary, const Run<Dim>& run, Index first_step, 
   if (const EnergySentinel<Dim>* sentinel = sim.energy_sentinel()) {
     summary.largest_energy_ratio = sentinel->largest_ratio();
     summary.largest_energy_ratio_step = sentinel->largest_ratio_step();
-    fmt::print(log, "energy sentinel: largest balance / tolerance {:.4g} (step {}), external work {:.6g} J\n",
-               summary.largest_energy_ratio, summary.largest_energy_ratio_step, sentinel->work());
+    if (summary.largest_energy_ratio > 0)
+      fmt::print(log, "energy sentinel: largest balance / tolerance {:.4g} (step {}), external work {:.6g} J\n",
+                 summary.largest_energy_ratio, summary.largest_energy_ratio_step, sentinel->work());
+    else  // the sentinel watches gains: a run that only lost energy has no largest ratio to report
+      fmt::print(log, "energy sentinel: the balance E(t) - E(0) - W never rose above 0, external work {:.6g} J\n",
+                 sentinel->work());
   }
   for (const auto& m : sim.modules())
     if (const auto* failure = dynamic_cast<const FailureModule<Dim>*>(m.get())) {

@@ -20,10 +20,10 @@ class StabilityError(RuntimeError):
     simulation was rolled back to the last good step (and, with output, that state was written). Or the energy
     sentinel did (``solver.on_energy_drift: stop``; field "energy_balance", particle -1): the state is that of the
     step it found the drift on. Where ``mpm run`` exits with status 3. Attributes: step (the step that failed),
-    time (s, at its start), body, particle (id: index at creation), field, detail; str() is the program's
-    message."""
+    time (s, at its start), body, particle (id: index at creation), field, detail, face (the face of the grid box
+    a particle left through, "y_min", or None); str() is the program's message."""
 
-    def __init__(self, text, step=None, time=None, body=None, particle=None, field=None, detail=None):
+    def __init__(self, text, step=None, time=None, body=None, particle=None, field=None, detail=None, face=None):
         super().__init__(text)
         self.step = step
         self.time = time
@@ -31,6 +31,7 @@ class StabilityError(RuntimeError):
         self.particle = particle
         self.field = field
         self.detail = detail
+        self.face = face
 
 
 class StaleViewError(RuntimeError):

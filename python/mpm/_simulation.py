@@ -141,6 +141,12 @@ class Simulation:
 
         return energy(self)
 
+    def removed(self):
+        """mpm.removed(self): what left through outflow faces and by erosion, per way."""
+        from ._energy import removed
+
+        return removed(self)
+
     def __repr__(self):
         return (f"<mpm.Simulation {self.dimension}D, {self.particle_count} particles in {len(self.bodies)} "
                 f"bodies, step {self.step_count}, t = {self.time:.6g} s of {self.end_time:.6g} s>")

@@ -54,7 +54,8 @@ void translate_exceptions() {
     } catch (const StabilityError& e) {
       const py::object cls = py::module_::import("mpm._errors").attr("StabilityError");
       const auto& r = e.report();
-      const py::object error = cls(e.what(), r.step, r.time, r.body, r.particle, r.field, r.detail);
+      const py::object error = cls(e.what(), r.step, r.time, r.body, r.particle, r.field, r.detail,
+                                   r.face.empty() ? py::object(py::none()) : py::object(py::str(r.face)));
       PyErr_SetObject(cls.ptr(), error.ptr());
     }
   });
@@ -137,6 +138,16 @@ void bind_simulation(py::module_& m) {
       .def_property_readonly("stable_time_step", &H::stable_time_step)
       .def_property_readonly("particle_count", &H::particle_count)
       .def("energy", [](const H& h) { return energy_dict(h.energy()); })
+      .def("removed",
+           [](const H& h) {
+             py::dict d;
+             for (const RemovedTotals& r : h.removed()) {
+               py::dict e = energy_dict(r.energy);
+               e["particles"] = static_cast<std::int64_t>(r.particles);
+               d[py::str(r.name)] = e;
+             }
+             return d;
+           })
       .def("write_frame", &H::write_frame, py::arg("directory"), py::call_guard<py::gil_scoped_release>())
       .def_property_readonly("output_directory", &H::output_directory)
       .def("body_names", &H::body_names)

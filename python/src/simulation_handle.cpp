@@ -6,9 +6,13 @@
 #include <iostream>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_description.hpp"
 #include "mpm/app/run_scene.hpp"
+#include "mpm/boundary/face_names.hpp"
+#include "mpm/failure/failure_module.hpp"
 #include "mpm/output/output_fields.hpp"
 #include "mpm/run/run.hpp"
 
@@ -156,6 +160,18 @@ class SimulationFor final : public SimulationHandle {
   }
   Index particle_count() const override { return sim().particle_count(); }
   EnergyBalance energy() const override { return sim().energy(); }
+  std::vector<RemovedTotals> removed() const override {
+    std::vector<RemovedTotals> out;
+    for (const auto& book : sim().boundary().outflow())
+      out.push_back({fmt::format("outflow_{}", face_names[static_cast<std::size_t>(book.face)]), book.value(),
+                     book.particle_count()});
+    for (const auto& m : sim().modules())
+      if (const auto* f = dynamic_cast<const FailureModule<Dim>*>(m.get()); f && f->erodes()) {
+        const RemovedBook book = f->eroded();
+        out.push_back({"eroded", book.value(), book.particle_count()});
+      }
+    return out;
+  }
 
   void write_frame(const std::string& directory) override {
     arena_.execute([&] { run_->write_frame(directory); });

@@ -19,6 +19,13 @@
 namespace mpm::python {
 
 /// A field's values in place, for a NumPy view.
+/// The books of particles that left the run one way (SimulationHandle::removed).
+struct RemovedTotals {
+  std::string name;  ///< "outflow_x_min", ..., or "eroded"
+  EnergyBalance energy;
+  double particles = 0;
+};
+
 struct FieldArray {
   FieldStorage storage;
   std::vector<Index> shape;    ///< of the whole array (particles or nodes first)
@@ -70,6 +77,9 @@ class SimulationHandle {
   virtual double stable_time_step() = 0;
   virtual Index particle_count() const = 0;
   virtual EnergyBalance energy() const = 0;
+  /// What left the run since t = 0, one entry per outflow face ("outflow_y_max") and, when a material erodes,
+  /// "eroded": the sums of energy.csv's outflow_F_* and eroded_* columns.
+  virtual std::vector<RemovedTotals> removed() const = 0;
   /// Writes a frame of the current state to `directory` (the scene's fields and prefix; a .pvd series and
   /// energy.csv per directory, continued by later calls).
   virtual void write_frame(const std::string& directory) = 0;

@@ -116,6 +116,7 @@ def test_the_guard_raises_stability_error_with_the_programs_report(tmp_path):
     e = caught.value
     assert str(e) == program
     assert e.body == "block" and e.field == "position" and "left the grid box" in e.detail
+    assert e.face == "x_max" and "through x_max" in e.detail
     # rolled back to the last good step, which was written (the same files as the program's)
     assert sim.step_count == e.step - 1
     x = sim.bodies["block"].field("position")

@@ -124,7 +124,8 @@ TEST(Simulation, GuardCatchesParticleLeavingTheGrid) {
   } catch (const StabilityError& e) {
     EXPECT_EQ(e.report().field, "position");
     EXPECT_EQ(e.report().body, "rod");
-    EXPECT_NE(std::string(e.what()).find("left the grid box"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("left the grid box through x_max"), std::string::npos) << e.what();
+    EXPECT_EQ(e.report().face, "x_max");
   }
   for (const auto& b : sim->bodies())
     for (Index i = 0; i < b.particles.size(); ++i) EXPECT_LE(b.particles.x[i][0], 1.0);

@@ -289,6 +289,29 @@ TEST(PlasticityPoint, MieGruneisenStartsWithTheBulkModulusOfTable7) {
   EXPECT_NEAR(printed.tangent_bulk_modulus(Real(1)), 1.5 * K, 1e-9 * K);
 }
 
+// The time-step speed of a failed point (eq. 16.5): a point with D = 1 carries only compressive pressure, so its
+// speed is the bulk one of the EOS at J' = min(J, 1), no shear term; an expanded failed point (J = 3.8, as the
+// debris of the 3D perforation) is bounded as one at rest, where the intact formula's c^2 grows with J. With D < 1
+// the intact speed is unchanged.
+TEST(PlasticityPoint, FailedPointKeepsThePressureOnlyWaveSpeed) {
+  JcShock::Params c;  // 6061-T6 of examples/19_plate_perforation
+  set_elastic(c, 2703, 69e9, 0.33);
+  c.eos = MieGruneisenEos{2703, 5240, 1.4, 1.97};
+  const Real K = c.bulk_modulus, G = c.shear_modulus, rho0 = c.density;
+  const Real K0 = std::max(c.eos.tangent_bulk_modulus(Real(1)), K);  // the larger of K and the EOS tangent at J = 1
+  EXPECT_NEAR(JcShock::wave_speed(c, 3.8, 1.0), std::sqrt(K0 / rho0), 1e-9 * std::sqrt(K0 / rho0));
+  EXPECT_NEAR(JcShock::wave_speed(c, 1.0, 1.0), std::sqrt(K0 / rho0), 1e-9 * std::sqrt(K0 / rho0));
+  // intact (and partly damaged): sqrt((K_t + 4 G / 3) J / rho0), as before
+  for (const Real D : {0.0, 0.5}) {
+    EXPECT_EQ(JcShock::wave_speed(c, 3.8, D), JcShock::wave_speed(c, 3.8));
+    EXPECT_GT(JcShock::wave_speed(c, 3.8, D), 2.0 * std::sqrt(K0 / rho0));  // 2.4x the failed point's
+  }
+  // compressed: the EOS stiffens, the failed point follows it without the shear term
+  const Real J = 0.8, Kt = std::max(c.eos.tangent_bulk_modulus(J), K);
+  EXPECT_NEAR(JcShock::wave_speed(c, J, 1.0), std::sqrt(Kt * J / rho0), 1e-9 * std::sqrt(Kt * J / rho0));
+  EXPECT_NEAR(JcShock::wave_speed(c, J, 0.0), std::sqrt((Kt + 4 * G / 3) * J / rho0), 1e-6);
+}
+
 // Johnson-Cook damage (eqs B.14-B.16, evolution factor 10 as in B.16, docs/errata.md #27) under constant
 // triaxiality: isochoric pure shear keeps p = 0, so sigma* = 0 and eps_f = D1 + D2 = 0.3, and
 // D_init = eps_p / eps_f exactly. D stays 0 until eps_p = eps_f (within one increment, 1e-4 here), then

@@ -23,12 +23,25 @@ bool is_explicit_updated_lagrangian(const HintContext& c) {
   return !c.scheme.total_lagrangian && !c.scheme.unconditionally_stable;
 }
 
-constexpr std::array<EnergyHint, 9> rows{{
-    {"contact module (multi-velocity contact)", trigger_energy, [](const HintContext& c) { return c.contact; },
-     "frictionless collisions of deformable bodies stay within +0.5% of E0 with either onset; contact with "
-     "a rigid plane or body, or friction, was not measured for energy: try `contact.onset: particle_gap`",
-     "with the paper's corrections Love & Sulsky's colliding cylinders gained +5.6% (plastic) and +22% (elastic, MUSL, "
-     "node criterion); now never above E0 with either onset (docs/theory.md §11, \"Energy\")"},
+constexpr std::array<EnergyHint, 11> rows{{
+    {"a particle left the grid through a face that does not let material out", trigger_left_grid,
+     [](const HintContext&) { return true; },
+     "the face the guard names holds material in (`stop`, the default of a face not listed, or `free`): give it "
+     "`outflow` (grid.boundary), so that what crosses it leaves the run with its mass, momentum and energy booked in "
+     "energy.csv, or enlarge the grid (`grid.extent`) if the material should stay",
+     "the axisymmetric sphere through a plate (docs/theory.md §16): debris leaving the grid stopped the run at 12.8 us "
+     "(a taller grid only moved the stop to 15.5 us); with `y_min: outflow` and `y_max: outflow` it runs to 40 us, "
+     "the departed material booked per face"},
+    {"Johnson-Cook damage without `failure:`", trigger_energy | trigger_guard,
+     [](const HintContext& c) { return c.damage_without_failure; },
+     "fully damaged particles (D = 1) carry no load and stretch without limit: their model books the energy of that "
+     "expansion as stored and they hold the time step small; give the material `failure: {damage: true}` (the "
+     "particles erode, their energy booked in energy.csv's eroded_* columns) or `failure: {damage: true, action: "
+     "fail}`",
+     "a 10 mm steel sphere at 800 m/s through a 4 mm 6061-T6 plate, 3D, 55,384 particles, hats, contact "
+     "(docs/theory.md "
+     "§16): without failure: +71.5 E0 and 1,676 steps; with erosion -3.8% and 540 steps (570 without damage); in 2D "
+     "with quadratic B-splines +390 E0 against +0.4%"},
     {"APIC with linear hats", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.transfer == VelocityTransfer::apic && is_linear(c); },
      "APIC with linear hats runs on free surfaces with MUSL and USF (the re-map takes C_p from the trial velocities, a "
@@ -45,7 +58,7 @@ constexpr std::array<EnergyHint, 9> rows{{
      [](const HintContext& c) { return c.transfer == VelocityTransfer::polypic; },
      "PolyPIC's transfer returns a node of full mass its velocity unchanged, so it keeps grid-scale velocity noise as "
      "FLIP does: where a splash breaks into spray it can gain energy and invert a particle: give the water "
-     "`cavitation_pressure: 0` (no tension) and `volumetric_deformation: 1`, halve `cfl`, or use "
+     "`cavitation_pressure: 0` (no tension) and keep `volumetric_deformation: 1` (the default), halve `cfl`, or use "
      "`velocity_transfer: apic` (both lose energy instead); MUSL or USF, not USL; 3 particles per cell per axis, not 2 "
      "(with 2 it loses energy in a surge)",
      "the dam break (examples/12) with PolyPIC and hats, MUSL, to 1.7 s: -5.61%/-1.75%/-1.14% at 35/70/140 cells, "
@@ -73,7 +86,14 @@ constexpr std::array<EnergyHint, 9> rows{{
      "(`flip_fraction: 0.99`), or use `shape_function: quadratic_bspline` or `cpgimp`",
      "the two disks of examples/02 at 200 cells per side, dt = 0.002 s, MUSL: total energy +37.3% at 3.5 s with FLIP "
      "and hats; flip_fraction 0.99: -19.6% (never above E0 by 1e-5), quadratic_bspline: +1.1% (largest +1.4%), cpgimp: "
-     "+2.0% (largest +2.1%) (docs/VERIFICATION.md, Energy sentinel)"},
+     "+2.0% (largest +2.1%) (docs/VERIFICATION.md, Energy sentinel); the axisymmetric sphere through a plate with "
+     "erosion (docs/theory.md §16), with contact: +7.3% with FLIP and hats, +4.0% with flip_fraction 0.99, -4.2% "
+     "with quadratic_bspline, +8.6% with contact.onset particle_gap"},
+    {"contact module (multi-velocity contact)", trigger_energy, [](const HintContext& c) { return c.contact; },
+     "frictionless collisions of deformable bodies stay within +0.5% of E0 with either onset; contact with "
+     "a rigid plane or body, or friction, was not measured for energy: try `contact.onset: particle_gap`",
+     "with the paper's corrections Love & Sulsky's colliding cylinders gained +5.6% (plastic) and +22% (elastic, MUSL, "
+     "node criterion); now never above E0 with either onset (docs/theory.md §11, \"Energy\")"},
     {"Bernstein functions with an explicit scheme", trigger_energy | trigger_guard,
      // two-cell elements with an explicit scheme: Bernstein (Lagrange's are total-Lagrangian only)
      [](const HintContext& c) { return shape_of(c).even_cells && is_explicit_updated_lagrangian(c); },
@@ -114,7 +134,8 @@ std::string energy_hint_table() {
     table += fmt::format("| {} | {} | {} | {} |\n", row.condition,
                          (row.triggers & trigger_energy) != 0 && (row.triggers & trigger_guard) != 0 ? "both"
                          : (row.triggers & trigger_energy) != 0                                      ? "energy"
-                                                                                                     : "guard",
+                         : (row.triggers & trigger_left_grid) != 0 ? "guard (left the grid)"
+                                                                   : "guard",
                          row.hint, row.measurement);
   return table;
 }

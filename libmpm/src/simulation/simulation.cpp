@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "mpm/boundary/face_names.hpp"
 #include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/simulation/energy_audit.hpp"
 
@@ -306,7 +307,15 @@ StabilityReport Simulation<Dim>::diagnose(Real dt) const {
         fail("position", "not finite");
       } else if (scheme_->positions_must_stay_in_grid() &&
                  ((x.array() < lower.array()).any() || (x.array() > upper.array()).any())) {
-        fail("position", fmt::format("x = ({}) left the grid box", fmt::join(x.data(), x.data() + Dim, ", ")));
+        int face = 0;  // the first face crossed, in face order
+        for (int d = Dim - 1; d >= 0; --d) {
+          if (x[d] > upper[d]) face = 2 * d + 1;
+          if (x[d] < lower[d]) face = 2 * d;
+        }
+        fail("position",
+             fmt::format("x = ({}) left the grid box through {}, a face that does not let material out",
+                         fmt::join(x.data(), x.data() + Dim, ", "), face_names[static_cast<std::size_t>(face)]));
+        r.face = face_names[static_cast<std::size_t>(face)];
       } else if (axisymmetric && scheme_->positions_must_stay_in_grid() && !(x[0] > 0)) {
         fail("position", fmt::format("r = {:.6g} m: on or across the axis of the axisymmetric grid", x[0]));
       } else if (!p.v[i].allFinite()) {

@@ -332,7 +332,7 @@ void Simulation<Dim>::share_report(StabilityReport& report) const {
   const int root = static_cast<int>(speaker[0]);
   std::string text;
   if (comm_->rank() == root)
-    text = fmt::format("{}\n{}\n{}\n{}", report.body, report.particle, report.field, report.detail);
+    text = fmt::format("{}\n{}\n{}\n{}\n{}", report.body, report.particle, report.field, report.face, report.detail);
   std::vector<std::byte> bytes(text.size());
   std::memcpy(bytes.data(), text.data(), text.size());
   comm_->broadcast(bytes, root);
@@ -347,6 +347,7 @@ void Simulation<Dim>::share_report(StabilityReport& report) const {
   report.body = line(at);
   report.particle = std::stoll(line(at));
   report.field = line(at);
+  report.face = line(at);
   report.detail = text.substr(std::min(at, text.size()));
 }
 

@@ -19,6 +19,7 @@ struct StabilityReport {
   Index particle = -1;  ///< particle id (its index at creation, stable under reordering)
   std::string field;    ///< "position", "velocity", "deformation_gradient", "stress", ..., "energy_balance"
   std::string detail;   ///< the offending value, e.g. "det F = -0.2"
+  std::string face;     ///< field "position": the face of the grid box the particle left through ("y_min"), or empty
 };
 
 class StabilityError : public std::runtime_error {

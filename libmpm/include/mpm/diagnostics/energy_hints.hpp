@@ -25,10 +25,13 @@ struct HintContext {
   Real flip_fraction = 1;
   bool contact = false;   ///< the multi-velocity contact module runs
   bool fixed_dt = false;  ///< solver.dt rather than solver.cfl
+  /// A material has Johnson-Cook damage (damage_d1) and no `failure:` block: its fully damaged particles stay.
+  bool damage_without_failure = false;
 };
 
-/// What went wrong: the energy balance grew (the sentinel) or the stability guard stopped the run.
-enum HintTrigger : unsigned { trigger_energy = 1u << 0, trigger_guard = 1u << 1 };
+/// What went wrong: the energy balance grew (the sentinel), the stability guard stopped the run, or it stopped it
+/// because a particle left the grid through a face that does not let material out (StabilityReport::face).
+enum HintTrigger : unsigned { trigger_energy = 1u << 0, trigger_guard = 1u << 1, trigger_left_grid = 1u << 2 };
 
 struct EnergyHint {
   std::string_view condition;           ///< the condition in words, for the docs

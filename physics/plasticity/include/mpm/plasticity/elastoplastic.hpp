@@ -382,6 +382,20 @@ struct Elastoplastic {
   }
   static inline Real wave_speed(const Params& c, Real J) { return std::sqrt(wave_speed_squared(c, J)); }
 
+  /// The wave speed squared of a point with damage D: the dilatational one above while D < 1; a failed point
+  /// (D >= 1) carries only compressive pressure (eq. 16.2), so its speed is the bulk one of that response,
+  /// K_t(J') J' / rho0 with J' = min(J, 1) (eq. 16.5): no shear, and an expanded failed point, which carries no
+  /// tension, is bounded as one at rest rather than by the growing J of its expansion.
+  template <class T>
+  static inline T wave_speed_squared(const Params& c, const T& J, const T& D) {
+    const T J1 = lanes::min(J, lanes::splat<T>(1));
+    const T failed =
+        lanes::max(c.eos.tangent_bulk_modulus(J1), c.bulk_modulus) * lanes::max(J1, Real(0)) * (1 / c.density);
+    const MaskOf<T> broken = D >= 1;
+    return lanes::select(broken, failed, wave_speed_squared(c, J));
+  }
+  static inline Real wave_speed(const Params& c, Real J, Real D) { return std::sqrt(wave_speed_squared(c, J, D)); }
+
   /// Stored elastic energy per reference volume: J dev(sigma):dev(sigma) / (4 G) + W_eos(J).
   static inline Real energy_density(const Params& c, Real J, const Mat3& stress) {
     const Mat3 dev = stress - stress.trace() / 3 * Mat3::Identity();

@@ -52,9 +52,10 @@ class PlasticBatch final : public Material<Dim> {
 
   WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override {
     const Real* hoop = axisym::hoop_stretch_of(p);
+    const auto& state = p.field(state_field);
     WaveSpeedBound<Dim> bound;
     for (Index i = 0; i < p.size(); ++i) {
-      const Real c = Model::wave_speed(params_, axisym::volume_ratio(p, i, hoop));
+      const Real c = Model::wave_speed(params_, axisym::volume_ratio(p, i, hoop), state[i].damage);
       bound.max_speed = bound.max_speed.cwiseMax((p.v[i].cwiseAbs().array() + c).matrix());
     }
     return bound;
@@ -62,9 +63,10 @@ class PlasticBatch final : public Material<Dim> {
 
   bool particle_wave_speeds(const ParticleSet<Dim>& p, std::vector<Real>& c) const override {
     const Real* hoop = axisym::hoop_stretch_of(p);
+    const auto& state = p.field(state_field);
     c.resize(static_cast<std::size_t>(p.size()));
     for (Index i = 0; i < p.size(); ++i)
-      c[static_cast<std::size_t>(i)] = Model::wave_speed(params_, axisym::volume_ratio(p, i, hoop));
+      c[static_cast<std::size_t>(i)] = Model::wave_speed(params_, axisym::volume_ratio(p, i, hoop), state[i].damage);
     return true;
   }
 
@@ -159,7 +161,7 @@ class PlasticBatch final : public Material<Dim> {
       if (temperature) temperature[k] = lanes.temperature[l];
       for (int c = 0; c < SymTensor<Dim>::size; ++c) p.stress[k].c[c] = lanes.stress[c][l];
     }
-    const Pack c = Model::wave_speed_squared(params_, lanes.J).sqrt();
+    const Pack c = Model::wave_speed_squared(params_, lanes.J, lanes.damage).sqrt();
     for (Index k = first; k < last; ++k)
       max_speed = max_speed.cwiseMax((p.v[k].cwiseAbs().array() + c[static_cast<int>(k - g)]).matrix());
   }
