@@ -8,6 +8,9 @@
 
 namespace mpm::shapes {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace ball {
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -85,9 +88,10 @@ ShapeKind ball_kind(const char* name, int dimension) {
   return k;
 }
 
+}  // namespace ball
 }  // namespace
 
-ShapeKind disk_kind() { return ball_kind("disk", 2); }
-ShapeKind sphere_kind() { return ball_kind("sphere", 3); }
+ShapeKind disk_kind() { return ball::ball_kind("disk", 2); }
+ShapeKind sphere_kind() { return ball::ball_kind("sphere", 3); }
 
 }  // namespace mpm::shapes

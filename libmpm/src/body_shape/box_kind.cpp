@@ -7,6 +7,9 @@
 
 namespace mpm::shapes {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace box {
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -51,9 +54,11 @@ std::unique_ptr<Region<Dim>> region(const std::any& spec, std::vector<std::strin
   return std::make_unique<BoxRegion<Dim>>(Box<Dim>{to_vec<Dim>(box.min), to_vec<Dim>(box.max)});
 }
 
+}  // namespace box
 }  // namespace
 
 ShapeKind box_kind() {
+  using namespace box;
   ShapeKind k;
   k.name = "box";
   k.noun = "a box";

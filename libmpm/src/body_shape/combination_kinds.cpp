@@ -11,6 +11,9 @@
 
 namespace mpm::shapes {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace combination {
 
 enum class Combination { union_of, intersection_of, difference_of };
 
@@ -130,13 +133,19 @@ ShapeKind combination_kind(const char* noun, const char* description) {
   return k;
 }
 
+}  // namespace combination
 }  // namespace
 
-ShapeKind union_kind() { return combination_kind<Combination::union_of>("a union", "inside any of the shapes"); }
+ShapeKind union_kind() {
+  using namespace combination;
+  return combination_kind<Combination::union_of>("a union", "inside any of the shapes");
+}
 ShapeKind intersection_kind() {
+  using namespace combination;
   return combination_kind<Combination::intersection_of>("an intersection", "inside all of the shapes");
 }
 ShapeKind difference_kind() {
+  using namespace combination;
   return combination_kind<Combination::difference_of>("a difference", "inside the first shape and none of the others");
 }
 

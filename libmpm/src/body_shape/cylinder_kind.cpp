@@ -8,6 +8,9 @@
 
 namespace mpm::shapes {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace cylinder {
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -84,9 +87,11 @@ std::unique_ptr<Region<3>> region(const std::any& spec, std::vector<std::string>
   return std::make_unique<CylinderRegion>(std::any_cast<const CylinderShape&>(spec));
 }
 
+}  // namespace cylinder
 }  // namespace
 
 ShapeKind cylinder_kind() {
+  using namespace cylinder;
   ShapeKind k;
   k.name = "cylinder";
   k.noun = "a cylinder";

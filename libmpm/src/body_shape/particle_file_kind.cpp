@@ -12,6 +12,9 @@
 
 namespace mpm::shapes {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace particle_file {
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -123,9 +126,11 @@ std::optional<ParticleSeeds<Dim>> fill(const std::any& spec, const GridGeometry<
 
 std::optional<OwnParticleCount> own_count(const std::any&, int) { return OwnParticleCount{}; }
 
+}  // namespace particle_file
 }  // namespace
 
 ShapeKind particle_file_kind() {
+  using namespace particle_file;
   ShapeKind k;
   k.name = "particles";
   k.noun = "a particle file";

@@ -15,6 +15,9 @@
 
 namespace mpm::shapes {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace polygon {
 
 using Point = std::array<double, 2>;
 
@@ -135,9 +138,11 @@ std::unique_ptr<Region<2>> region(const std::any& spec, std::vector<std::string>
   return std::make_unique<PolygonRegion>(std::vector<PolygonRegion::Loop>{loop});
 }
 
+}  // namespace polygon
 }  // namespace
 
 ShapeKind polygon_kind() {
+  using namespace polygon;
   ShapeKind k;
   k.name = "polygon";
   k.noun = "a polygon";

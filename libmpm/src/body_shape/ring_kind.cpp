@@ -11,6 +11,9 @@
 
 namespace mpm::shapes {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace ring {
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -124,9 +127,11 @@ std::unique_ptr<Region<Dim>> region(const std::any& spec, std::vector<std::strin
   return std::make_unique<RingRegion<Dim>>(std::any_cast<const RingShape&>(spec));
 }
 
+}  // namespace ring
 }  // namespace
 
 ShapeKind ring_kind() {
+  using namespace ring;
   ShapeKind k;
   k.name = "ring";
   k.noun = "a ring";

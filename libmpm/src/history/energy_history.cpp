@@ -9,6 +9,9 @@
 
 namespace mpm::history {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace energy {
 
 struct EnergySpec {
   int body = -1;  ///< -1: all bodies
@@ -68,9 +71,11 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
   return std::make_unique<EnergyHistory<Dim>>(std::any_cast<const EnergySpec&>(h.spec).body, scene.grid.coordinates);
 }
 
+}  // namespace energy
 }  // namespace
 
 HistoryKind energy_kind() {
+  using namespace energy;
   return history_kind("energy", "energies, momentum, mass and centre of mass of one body (or of all, as energy.csv)",
                       {"body"}, parse, make<1>, make<2>, make<3>);
 }

@@ -7,6 +7,9 @@
 
 namespace mpm::history {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace extent {
 
 struct ExtentSpec {
   int body = -1;  ///< -1: all bodies
@@ -104,9 +107,11 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
   return history;
 }
 
+}  // namespace extent
 }  // namespace
 
 HistoryKind extent_kind() {
+  using namespace extent;
   return history_kind("extent",
                       "smallest and largest coordinate of the particles along an axis (a front, a length), or distance "
                       "from an axis line (a radius), of one body or all, optionally within a box",

@@ -14,6 +14,9 @@
 
 namespace mpm::history {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace probe {
 
 enum class Where { particles, grid, box };
 const std::vector<std::string> statistic_names{"mean", "min", "max", "sum"};
@@ -380,9 +383,11 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
   return probe;
 }
 
+}  // namespace probe
 }  // namespace
 
 HistoryKind probe_kind() {
+  using namespace probe;
   return history_kind("probe",
                       "output fields at a point (from the particles within a radius, or from the grid) or over the "
                       "particles of a box (mean, min, max, sum)",

@@ -15,6 +15,9 @@
 
 namespace mpm::history {
 namespace {
+// The helpers are named in a namespace of this file's own, so that the folder's sources also compile as
+// one translation unit (scripts/tidy.sh).
+namespace reaction {
 
 struct ReactionSpec {
   int face = -1;            ///< a grid face (order of GridDescription::face_names), or -1
@@ -230,9 +233,11 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
                                                 scene.grid.coordinates);
 }
 
+}  // namespace reaction
 }  // namespace
 
 HistoryKind reaction_kind() {
+  using namespace reaction;
   return history_kind("reaction",
                       "the force (and moment about a point) a grid face with a velocity condition, a rigid plane or a "
                       "rigid body exerts on the bodies, mean over the interval",
