@@ -186,6 +186,37 @@ TEST(TaitFluid, VolumetricDeformationKeepsOnlyTheVolume) {
   EXPECT_NEAR(p[1].stress[0].full()(0, 0), p[0].stress[0].full()(0, 0), 1e-6 * 2.0e5);
 }
 
+// With the full F (volumetric_deformation 0) a fluid particle keeps its distortion until its determinant would be
+// round-off (eps ||F||^2 > 1e-8 J in 2D, ||F|| ~ 6.7e3 at J = 1): sheared at L_01 = 1e4 1/s for steps of 1e-4 s, its
+// shear F_01 grows by 1 a step up to ~6.7e3, then F is reset to J^(1/2) I with the same J, and grows again; det F
+// stays exact (the isochoric shear keeps J = 1) where the unbounded F of 1e8 would give a round-off determinant.
+TEST(TaitFluid, FullDeformationIsResetBeforeItsDeterminantIsRoundOff) {
+  fluids::TaitFluid::Params c{1000, 2.0e5, 7, 1.0e-3, 0};
+  Mat<2> L = Mat<2>::Zero();
+  L(0, 1) = 1e4;
+  const MatU<2> Lu = L;
+  ParticleSet<2> p;
+  MaterialBatch<2, fluids::TaitFluid> m(c);
+  p.add(Vec<2>::Zero(), 1, 1);
+  Real largest = 0;
+  int resets = 0;
+  for (int s = 0; s < 20000; ++s) {
+    p.F[0] = (Mat<2>::Identity() + 1e-4 * L) * Mat<2>(p.F[0]);
+    const Real before = std::abs(p.F[0](0, 1));
+    m.update_stress(p, 0, 1, &Lu, 1e-4);
+    largest = std::max(largest, before);
+    if (p.F[0](0, 1) == 0) {
+      ++resets;
+      EXPECT_GT(before, 6.0e3) << s;  // kept whole while det F is exact
+      EXPECT_EQ(p.F[0](0, 0), p.F[0](1, 1));
+    }
+  }
+  EXPECT_LT(largest, 7.1e3);
+  EXPECT_EQ(resets, 2);  // at ~6.7e3 and ~1.34e4 steps
+  EXPECT_NEAR(Mat<2>(p.F[0]).determinant(), 1, 1e-9);
+  EXPECT_NEAR(p.stress[0].full()(0, 0), 0, 1e-6);  // J = 1: no pressure (and the viscous stress is deviatoric)
+}
+
 // volumetric_deformation is a switch: 0 or 1, anything else refused at its key.
 TEST(NewtonianFluid, VolumetricDeformationIsZeroOrOne) {
   const std::string scene = R"(

@@ -58,7 +58,7 @@ constexpr std::array<EnergyHint, 11> rows{{
      [](const HintContext& c) { return c.transfer == VelocityTransfer::polypic; },
      "PolyPIC's transfer returns a node of full mass its velocity unchanged, so it keeps grid-scale velocity noise as "
      "FLIP does: where a splash breaks into spray it can gain energy and invert a particle: give the water "
-     "`cavitation_pressure: 0` (no tension) and keep `volumetric_deformation: 1` (the default), halve `cfl`, or use "
+     "`cavitation_pressure: 0` (no tension) and `volumetric_deformation: 1`, halve `cfl`, or use "
      "`velocity_transfer: apic` (both lose energy instead); MUSL or USF, not USL; 3 particles per cell per axis, not 2 "
      "(with 2 it loses energy in a surge)",
      "the dam break (examples/12) with PolyPIC and hats, MUSL, to 1.7 s: -5.61%/-1.75%/-1.14% at 35/70/140 cells, "

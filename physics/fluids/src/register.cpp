@@ -32,11 +32,11 @@ std::vector<ParameterSpec> newtonian_parameters() {
                               "p_c: the pressure never falls below it, p = max(K [(rho/rho0)^gamma - 1], p_c) (0: "
                               "water that cannot hold tension, a free surface separates; the density warning then "
                               "only watches compression)"),
-      ParameterSpec::with_default("volumetric_deformation", "-", 1, Range::closed(0, 1),
-                                  "1 (the default): F keeps only its volume, F = J^(1/dim) I after every step (the "
-                                  "law reads J alone); 0: the full F, whose entries grow without bound in a splash "
-                                  "(1e8 by 0.7 s in an open-tank dam break) until det F is round-off and a particle "
-                                  "inverts"),
+      ParameterSpec::with_default("volumetric_deformation", "-", 0, Range::closed(0, 1),
+                                  "1: F keeps only its volume, F = J^(1/dim) I after every step (the law reads J "
+                                  "alone); 0: the full F (the cpGIMP domains follow its stretch), reset to its volume "
+                                  "only for a particle so distorted that det F would be round-off (eps |F|^dim > "
+                                  "1e-8 J: in a splash F's entries grow without bound)"),
   };
 }
 

@@ -15,13 +15,17 @@
 /// in-plane storage; the batch loop then uses it (the elastic laws do: it avoids 3x3 round trips), and
 /// `update_packed_axisymmetric(params, F, L, F_tt, L_tt, J, dt, stress)` for axisymmetric bodies (else those
 /// take the 3x3 law with F_tt and L_tt on the diagonal, axisymmetric.hpp).
-/// Optional: `static bool volumetric_only(const Params&)`, true when the law reads F through J = det F alone (a
-/// fluid): the batch then replaces the in-plane F by J_p^(1/Dim) I before the update (J_p its determinant; the hoop
-/// stretch and so J unchanged), so that no isochoric distortion accumulates. A fluid sheared for long has F entries
-/// of 1e8 whose determinant is round-off (an inverted particle with det F computed from them).
+/// Optional: `static bool volumetric_only(const Params&)`, for a law that reads F through J = det F alone (a fluid);
+/// true when F is to keep its volume only: the batch then replaces the in-plane F by J_p^(1/Dim) I before the update
+/// (J_p its determinant; the hoop stretch and so J unchanged), so that no isochoric distortion accumulates. When it
+/// is false the batch still does so for a particle whose F is distorted beyond the precision of its determinant
+/// (eps ||F||_F^Dim > 1e-8 J_p, the round-off of det F above 1e-8 of its value): a fluid sheared for long
+/// has F entries of 1e8 whose determinant is round-off, and a particle "inverts" that was never compressed. Below
+/// that distortion F is kept whole (the cpGIMP domains follow it).
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "mpm/materials/material.hpp"
@@ -105,8 +109,8 @@ class MaterialBatch final : public Material<Dim> {
     Vec<Dim> max_speed = Vec<Dim>::Zero();
     for (Index i = begin; i != end; ++i) {
       if constexpr (requires(const Params& c) { Model::volumetric_only(c); })
-        if (Model::volumetric_only(params_))
-          if (const Real J_p = p.F[i].determinant(); J_p > 0)  // else the stability guard reports it
+        if (const Real J_p = p.F[i].determinant(); J_p > 0)  // else the stability guard reports it
+          if (Model::volumetric_only(params_) || determinant_is_round_off(p.F[i], J_p))
             p.F[i] = MatU<Dim>(std::pow(J_p, Real(1) / Dim) * Mat<Dim>::Identity());
       Real J = p.F[i].determinant();
       if constexpr (Hoop) J *= hoop.stretch[i];
@@ -133,6 +137,13 @@ class MaterialBatch final : public Material<Dim> {
     bound.max_speed = max_speed;
     bound.finite = finite;
     return bound;
+  }
+
+  /// Whether det F = J_p of an F with entries of size ||F||_F has lost its precision: its round-off,
+  /// eps ||F||_F^Dim, exceeds 1e-8 J_p (in 2D at ||F|| ~ 7e3 J^(1/2), in 3D at ~ 360 J^(1/3)).
+  static bool determinant_is_round_off(const MatU<Dim>& F, Real J_p) {
+    const Real size = std::pow(F.squaredNorm(), Real(0.5) * Dim);
+    return std::numeric_limits<Real>::epsilon() * size > 1e-8 * J_p;
   }
 
   Params params_;
