@@ -353,9 +353,13 @@ void add_energy_sentinel(const SceneDescription& scene, Simulation<Dim>& sim) {
   context.transfer = scene.solver.velocity_transfer;
   context.flip_fraction = scene.solver.flip_fraction;
   context.fixed_dt = scene.solver.dt.has_value();
-  for (const auto& [name, m] : scene.materials)
+  for (const auto& [name, m] : scene.materials) {
     context.damage_without_failure =
         context.damage_without_failure || (m.parameters.contains("damage_d1") && !m.failure);
+    const auto volumetric = m.parameters.find("volumetric_deformation");
+    context.fluid_full_deformation =
+        context.fluid_full_deformation || (volumetric != m.parameters.end() && volumetric->second == 0);
+  }
   std::vector<typename EnergySentinel<Dim>::Partner> partners;
   for (const auto& m : sim.modules()) {
     context.contact = context.contact || m->name() == "contact";

@@ -131,6 +131,13 @@ TEST(EnergyHints, RowsAndTheirMeasurements) {
   damage.damage_without_failure = true;
   EXPECT_NE(find_energy_hint(damage, trigger_energy).hint.find("failure: {damage: true}"), std::string_view::npos);
   EXPECT_EQ(find_energy_hint(damage, trigger_guard).condition, find_energy_hint(damage, trigger_energy).condition);
+  // a fluid keeping its full F with cpGIMP (the open tank): volume only; with hats and FLIP the FLIP row stays first
+  HintContext fluid;
+  fluid.shape_function = "cpgimp";
+  fluid.fluid_full_deformation = true;
+  EXPECT_NE(find_energy_hint(fluid, trigger_energy).hint.find("volumetric_deformation: 1"), std::string_view::npos);
+  fluid.shape_function = "linear";
+  EXPECT_EQ(find_energy_hint(fluid, trigger_energy).condition, "FLIP (flip_fraction 1) with linear hats");
   // a particle that left the grid: the face, whatever the method
   for (const HintContext& c : {disks, contact, damage}) {
     const EnergyHint& left = find_energy_hint(c, trigger_left_grid);

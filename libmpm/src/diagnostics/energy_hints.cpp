@@ -23,15 +23,15 @@ bool is_explicit_updated_lagrangian(const HintContext& c) {
   return !c.scheme.total_lagrangian && !c.scheme.unconditionally_stable;
 }
 
-constexpr std::array<EnergyHint, 11> rows{{
+constexpr std::array<EnergyHint, 12> rows{{
     {"a particle left the grid through a face that does not let material out", trigger_left_grid,
      [](const HintContext&) { return true; },
      "the face the guard names holds material in (`stop`, the default of a face not listed, or `free`): give it "
      "`outflow` (grid.boundary), so that what crosses it leaves the run with its mass, momentum and energy booked in "
      "energy.csv, or enlarge the grid (`grid.extent`) if the material should stay",
-     "the axisymmetric sphere through a plate (docs/theory.md §16): debris leaving the grid stopped the run at 12.8 us "
-     "(a taller grid only moved the stop to 15.5 us); with `y_min: outflow` and `y_max: outflow` it runs to 40 us, "
-     "the departed material booked per face"},
+     "the axisymmetric sphere through a plate (examples/19_plate_perforation, hats, 0.25 mm cells): with the faces "
+     "below and above the plate `stop` (the default) a plate particle leaving through y_min stopped the run at 30.4 "
+     "us; with them `outflow` it runs to 40 us, 1,624 particles (2.75 g) booked as they left (docs/theory.md §16)"},
     {"Johnson-Cook damage without `failure:`", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.damage_without_failure; },
      "fully damaged particles (D = 1) carry no load and stretch without limit: their model books the energy of that "
@@ -89,6 +89,15 @@ constexpr std::array<EnergyHint, 11> rows{{
      "+2.0% (largest +2.1%) (docs/VERIFICATION.md, Energy sentinel); the axisymmetric sphere through a plate with "
      "erosion (docs/theory.md §16), with contact: +7.3% with FLIP and hats, +4.0% with flip_fraction 0.99, -4.2% "
      "with quadratic_bspline, +8.6% with contact.onset particle_gap"},
+    {"a fluid keeping its full F (volumetric_deformation: 0)", trigger_energy,
+     [](const HintContext& c) { return c.fluid_full_deformation; },
+     "the fluid's F keeps the shear of the flow (its cpGIMP domains follow it): in a long splash the spray particles' "
+     "distorted F and domains gain energy; give the water `volumetric_deformation: 1` (F keeps its volume only), which "
+     "costs energy in a collapsing column with cpGIMP instead",
+     "the open-tank dam break (examples/20_open_tank, cpGIMP, FLIP, 40 cells, to 1.5 s): full F +58.4% (warning at "
+     "0.48 s), volume only -1.93%; the Martin & Moyce column (examples/12_dam_break/martin_moyce.yaml, cpGIMP): full F "
+     "-0.013%, volume only +5.2%; examples/14_fsi_obstacle/scene.yaml to 0.5 s: full F +2.7%, volume only +12.8% "
+     "(physics/fluids/README.md)"},
     {"contact module (multi-velocity contact)", trigger_energy, [](const HintContext& c) { return c.contact; },
      "frictionless collisions of deformable bodies stay within +0.5% of E0 with either onset; contact with "
      "a rigid plane or body, or friction, was not measured for energy: try `contact.onset: particle_gap`",
