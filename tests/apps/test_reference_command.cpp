@@ -19,9 +19,13 @@ TEST(ReferenceCommand, PrintsOneSectionsKeys) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("| Key | Type | Unit | Default | Allowed values | Description |\n", 0), 0u) << r.out;
   EXPECT_NE(r.out.find("| `keep` | integer |  | 2 | >= 1 |"), std::string::npos) << r.out;
+  r = cli::mpm("reference --section grid", dir);  // grid: read through its key specs
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("| `cell_size` | number, or list of `dimension` numbers | m | required |"), std::string::npos)
+      << r.out;
   r = cli::mpm("reference --section grid.nowhere", dir);
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("error: no section 'grid.nowhere' declares its keys; sections that do: materials, "),
+  EXPECT_NE(r.err.find("error: no section 'grid.nowhere' declares its keys; sections that do: grid, materials, "),
             std::string::npos)
       << r.err;
   fs::remove_all(dir);

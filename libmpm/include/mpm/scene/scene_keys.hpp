@@ -11,6 +11,8 @@
 
 namespace mpm {
 
+/// `grid:` (src/scene/grid_section.cpp); its `boundary:` holds per face a condition of a registered kind.
+const std::vector<io::KeySpec>& grid_keys();
 /// `output:` (src/scene/output_section.cpp), with `checkpoint:` and the common keys of `histories:` entries.
 const std::vector<io::KeySpec>& output_keys();
 /// One entry of `output.histories` (src/scene/histories_section.cpp): the keys every history kind takes.
