@@ -187,11 +187,15 @@ bool add_domain_fields(Body<Dim>& body, const SceneDescription& scene, const Bod
   return track_corners;
 }
 
-/// The material of a body: its model's, wrapped when the scene material has a `failure:` block (failing_material.hpp).
+/// The material of a body: its model's, wrapped when the scene material has a `failure:` block or Johnson-Cook
+/// damage (failing_material.hpp): its strain energy is then the work its stress did (eq. 16.4), so that a fully
+/// damaged point, which carries no shear and no tension but whose model's energy density grows with its expansion,
+/// books only what its stress received.
 template <int Dim>
 std::shared_ptr<Material<Dim>> body_material(const MaterialDescription& description) {
   std::unique_ptr<Material<Dim>> material = make_material<Dim>(description);
-  if (description.failure) return std::make_shared<FailingMaterial<Dim>>(std::move(material));
+  if (description.failure || description.parameters.contains("damage_d1"))
+    return std::make_shared<FailingMaterial<Dim>>(std::move(material));
   return material;
 }
 
@@ -354,8 +358,6 @@ void add_energy_sentinel(const SceneDescription& scene, Simulation<Dim>& sim) {
   context.flip_fraction = scene.solver.flip_fraction;
   context.fixed_dt = scene.solver.dt.has_value();
   for (const auto& [name, m] : scene.materials) {
-    context.damage_without_failure =
-        context.damage_without_failure || (m.parameters.contains("damage_d1") && !m.failure);
     const auto volumetric = m.parameters.find("volumetric_deformation");
     context.fluid_full_deformation =
         context.fluid_full_deformation || (volumetric != m.parameters.end() && volumetric->second == 0);

@@ -114,7 +114,7 @@ TEST(EnergySentinel, TheExampleOfTwoDisksRaisesNoAlarm) {
 
 // The hint for the reference case (FLIP, hats, MUSL) is the FLIP row, with contact too (pure FLIP with hats gained
 // +7.3% in the axisymmetric perforation with contact, the contact onset particle_gap +8.6%); contact with other
-// functions, APIC with hats, damage without failure and a particle leaving the grid have their own; every row says
+// functions, APIC with hats, a fluid with its full F and a particle leaving the grid have their own; every row says
 // what it rests on and where that is documented; the last row answers everything.
 TEST(EnergyHints, RowsAndTheirMeasurements) {
   HintContext disks;
@@ -127,10 +127,6 @@ TEST(EnergyHints, RowsAndTheirMeasurements) {
   EXPECT_NE(find_energy_hint(contact, trigger_energy).hint.find("particle_gap"), std::string_view::npos);
   // the contact row is about energy only: a guard stop with contact gets the method's row
   EXPECT_EQ(find_energy_hint(contact, trigger_guard).condition, "fixed time step (solver.dt)");
-  HintContext damage = contact;
-  damage.damage_without_failure = true;
-  EXPECT_NE(find_energy_hint(damage, trigger_energy).hint.find("failure: {damage: true}"), std::string_view::npos);
-  EXPECT_EQ(find_energy_hint(damage, trigger_guard).condition, find_energy_hint(damage, trigger_energy).condition);
   // a fluid keeping its full F with cpGIMP (the open tank): volume only; with hats and FLIP the FLIP row stays first
   HintContext fluid;
   fluid.shape_function = "cpgimp";
@@ -139,7 +135,7 @@ TEST(EnergyHints, RowsAndTheirMeasurements) {
   fluid.shape_function = "linear";
   EXPECT_EQ(find_energy_hint(fluid, trigger_energy).condition, "FLIP (flip_fraction 1) with linear hats");
   // a particle that left the grid: the face, whatever the method
-  for (const HintContext& c : {disks, contact, damage}) {
+  for (const HintContext& c : {disks, contact}) {
     const EnergyHint& left = find_energy_hint(c, trigger_left_grid);
     EXPECT_NE(left.hint.find("`outflow`"), std::string_view::npos) << left.hint;
     EXPECT_EQ(left.hint.find("flip"), std::string_view::npos) << left.hint;

@@ -23,7 +23,7 @@ bool is_explicit_updated_lagrangian(const HintContext& c) {
   return !c.scheme.total_lagrangian && !c.scheme.unconditionally_stable;
 }
 
-constexpr std::array<EnergyHint, 12> rows{{
+constexpr std::array<EnergyHint, 11> rows{{
     {"a particle left the grid through a face that does not let material out", trigger_left_grid,
      [](const HintContext&) { return true; },
      "the face the guard names holds material in (`stop`, the default of a face not listed, or `free`): give it "
@@ -32,16 +32,6 @@ constexpr std::array<EnergyHint, 12> rows{{
      "the axisymmetric sphere through a plate (examples/19_plate_perforation, hats, 0.25 mm cells): with the faces "
      "below and above the plate `stop` (the default) a plate particle leaving through y_min stopped the run at 30.4 "
      "us; with them `outflow` it runs to 40 us, 1,624 particles (2.75 g) booked as they left (docs/theory.md §16)"},
-    {"Johnson-Cook damage without `failure:`", trigger_energy | trigger_guard,
-     [](const HintContext& c) { return c.damage_without_failure; },
-     "fully damaged particles (D = 1) carry no load and stretch without limit: their model books the energy of that "
-     "expansion as stored and they hold the time step small; give the material `failure: {damage: true}` (the "
-     "particles erode, their energy booked in energy.csv's eroded_* columns) or `failure: {damage: true, action: "
-     "fail}`",
-     "a 10 mm steel sphere at 800 m/s through a 4 mm 6061-T6 plate, 3D, 55,384 particles, hats, contact "
-     "(docs/theory.md "
-     "§16): without failure: +71.5 E0 and 1,676 steps; with erosion -3.8% and 540 steps (570 without damage); in 2D "
-     "with quadratic B-splines +390 E0 against +0.4%"},
     {"APIC with linear hats", trigger_energy | trigger_guard,
      [](const HintContext& c) { return c.transfer == VelocityTransfer::apic && is_linear(c); },
      "APIC with linear hats runs on free surfaces with MUSL and USF (the re-map takes C_p from the trial velocities, a "

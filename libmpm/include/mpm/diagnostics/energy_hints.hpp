@@ -25,8 +25,6 @@ struct HintContext {
   Real flip_fraction = 1;
   bool contact = false;   ///< the multi-velocity contact module runs
   bool fixed_dt = false;  ///< solver.dt rather than solver.cfl
-  /// A material has Johnson-Cook damage (damage_d1) and no `failure:` block: its fully damaged particles stay.
-  bool damage_without_failure = false;
   /// A material keeps the full F of a law that reads J alone (volumetric_deformation: 0, a fluid's default).
   bool fluid_full_deformation = false;
 };
