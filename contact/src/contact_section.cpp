@@ -224,6 +224,11 @@ std::any parse_contact_section(const YamlReader& reader, const YamlValue& sectio
   return contact;
 }
 
+void complete_contact_defaults(SceneDescription& scene) {
+  if (!scene.solver.velocity_transfer_given && scheme_of(scene.solver).traits.affine_transfers)
+    scene.solver.velocity_transfer = VelocityTransfer::apic;
+}
+
 namespace {
 
 /// The pairs' thermal contact conductances (n x n, W/(m^2 K)), or none when every pair is perfect (the default:

@@ -36,6 +36,7 @@ void register_module() {
     register_material_model(rigid_model());
     register_scene_extension({.key = "contact",
                               .parse = &parse_contact_section,
+                              .complete = &complete_contact_defaults,
                               .build_1d = &build_contact<1>,
                               .build_2d = &build_contact<2>,
                               .build_3d = &build_contact<3>,

@@ -112,19 +112,22 @@ TEST(EnergySentinel, TheExampleOfTwoDisksRaisesNoAlarm) {
   fs::remove_all(dir);
 }
 
-// The hint for the reference case (FLIP, hats, MUSL) is the FLIP row, with contact too (pure FLIP with hats gained
-// +7.3% in the axisymmetric perforation with contact, the contact onset particle_gap +8.6%); contact with other
-// functions, APIC with hats, a fluid with its full F and a particle leaving the grid have their own; every row says
+// The hint for the reference case (FLIP, hats, MUSL) is the FLIP row; with contact and FLIP the contact FLIP row
+// (stacked blocks and impacts on planes gain with FLIP, contact/README.md "Defaults"), with contact's default APIC the
+// contact row; APIC with hats, a fluid with its full F and a particle leaving the grid have their own; every row says
 // what it rests on and where that is documented; the last row answers everything.
 TEST(EnergyHints, RowsAndTheirMeasurements) {
   HintContext disks;
   disks.fixed_dt = true;
   EXPECT_NE(find_energy_hint(disks, trigger_energy).hint.find("flip_fraction: 0.99"), std::string_view::npos);
   HintContext contact = disks;
-  contact.contact = true;
-  EXPECT_NE(find_energy_hint(contact, trigger_energy).hint.find("flip_fraction: 0.99"), std::string_view::npos);
+  contact.contact = true;  // with FLIP (given by the scene: the contact default is APIC): the contact FLIP row
+  EXPECT_EQ(find_energy_hint(contact, trigger_energy).condition, "contact with the FLIP transfer");
+  EXPECT_NE(find_energy_hint(contact, trigger_energy).hint.find("`apic`"), std::string_view::npos);
   contact.shape_function = "quadratic_bspline";
-  EXPECT_NE(find_energy_hint(contact, trigger_energy).hint.find("particle_gap"), std::string_view::npos);
+  EXPECT_EQ(find_energy_hint(contact, trigger_energy).condition, "contact with the FLIP transfer");
+  contact.transfer = VelocityTransfer::apic;  // the defaults: the contact row, which warns against onset grid
+  EXPECT_NE(find_energy_hint(contact, trigger_energy).hint.find("`contact.onset: grid`"), std::string_view::npos);
   // the contact row is about energy only: a guard stop with contact gets the method's row
   EXPECT_EQ(find_energy_hint(contact, trigger_guard).condition, "fixed time step (solver.dt)");
   // a fluid keeping its full F with cpGIMP (the open tank): volume only; with hats and FLIP the FLIP row stays first

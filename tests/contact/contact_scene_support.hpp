@@ -26,6 +26,12 @@ solver: {scheme: @SCHEME@, shape_function: @SHAPE@, dt: 0.001, end_time: 3.5}
 contact: {onset: @ONSET@, friction: @MU@, normals: @NORMALS@}
 )";
 
+/// `scheme` (the value of @SCHEME@, which may carry more solver keys) with the papers' transfer, pure FLIP, unless
+/// it gives one: a scene with contact otherwise takes APIC (contact/README.md, "Defaults").
+inline std::string with_paper_transfer(const std::string& scheme) {
+  return scheme.find("velocity_transfer") == std::string::npos ? scheme + ", velocity_transfer: flip" : scheme;
+}
+
 template <int Dim>
 contact::MultiVelocityContact<Dim>* contact_module(Simulation<Dim>& sim) {
   for (const auto& m : sim.modules())

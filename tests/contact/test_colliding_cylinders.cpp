@@ -27,7 +27,7 @@ bodies:
   - {name: left, material: metal, shape: {type: disk, center: [-1.05, 0], radius: 1}, particles_per_cell: 2,
      velocity: [1.0, -0.1]}
   - {name: right, material: metal, shape: {type: disk, center: [1.05, 0], radius: 1}, particles_per_cell: 2}
-solver: {scheme: musl, shape_function: linear, dt: 0.015, end_time: 1.8}
+solver: {scheme: musl, shape_function: linear, velocity_transfer: flip, dt: 0.015, end_time: 1.8}
 contact: {onset: @ONSET@}
 )";
 

@@ -44,7 +44,9 @@ bodies:
      particles_per_cell: 3}
 solver: {scheme: musl, shape_function: linear, velocity_transfer: @TRANSFER@, cfl: 0.5, gravity: [0, -9.81],
          end_time: 0.5}
-contact: {@CONTACT@}
+contact:
+  onset: grid
+  @CONTACT@
 )";
 
 const std::string elastic = "{model: neo_hookean, density: 2500, youngs_modulus: 1.0e6, poisson_ratio: 0.0}";

@@ -24,6 +24,7 @@ bodies:
 solver: {scheme: @SCHEME@, shape_function: @FUNCTION@, flip_fraction: @FLIP@, cfl: 0.4, end_time: @END@,
          gravity: [@GX@, @GY@]}
 contact:
+  onset: grid  # the paper's criterion; with particle_gap the rolling disk accelerates at 4.365 m/s^2 (-5.6%)
   planes: [{name: floor, point: [0, 0], normal: [0, 1], friction: @MU@}]
 )";
 

@@ -22,7 +22,7 @@ DiskRun run_disks(const std::string& scheme, const std::string& shape, const std
                   const std::string& normals = "mass_gradient") {
   auto sim = simulation_from_yaml<2>(
       fill(disks,
-           {{"SCHEME", scheme}, {"SHAPE", shape}, {"ONSET", onset}, {"MU", std::to_string(mu)}, {"NORMALS", normals}}));
+           {{"SCHEME", with_paper_transfer(scheme)}, {"SHAPE", shape}, {"ONSET", onset}, {"MU", std::to_string(mu)}, {"NORMALS", normals}}));
   auto* contact = contact_module(*sim);
   EXPECT_NE(contact, nullptr);
   const double e0 = sim->energy().total();

@@ -99,6 +99,9 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   for (const auto& key : scene_extension_keys())  // module sections last: they may refer to bodies
     if (const auto section = top.find(key))
       scene.extensions[key] = find_scene_extension(key)->parse(reader, *section, scene);
+  for (const auto& key : scene_extension_keys())  // then the defaults a present section implies for the others
+    if (const auto complete = find_scene_extension(key)->complete; complete && scene.extensions.count(key))
+      complete(scene);
   if (const auto check = scheme_of(scene.solver).check)  // the scheme checks the whole scene last
     check(reader, top.map(), scene);
   return scene;

@@ -67,6 +67,7 @@ void read_cpdi_domain_update(const YamlReader& reader, const YamlMap& map, Solve
 }
 
 void read_velocity_transfer(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {
+  solver.velocity_transfer_given = map.find("flip_fraction") || map.find("velocity_transfer");
   if (const auto flip = map.find("flip_fraction")) solver.flip_fraction = reader.number(*flip, Range::closed(0, 1), "");
   const auto transfer = map.find("velocity_transfer");
   if (!transfer) return;

@@ -55,7 +55,7 @@ struct ContactDescription {
   SourceLocation thermal_conductance_where;  ///< of the section's `thermal_conductance` value
   std::vector<PairFriction> pairs;
   std::string normals = "mass_gradient";  ///< "mass_gradient" (eq. 5.12) or "density" (eqs 5.9-5.11)
-  std::string onset = "grid";             ///< "grid" (contact nodes, the paper) or "particle_gap"
+  std::string onset = "particle_gap";     ///< "particle_gap" (the default) or "grid" (contact nodes, the paper)
   std::vector<RigidBodyDescription> rigid_bodies;
   std::vector<PlaneDescription> planes;
   std::vector<BodyBoundaryDescription> body_boundaries;

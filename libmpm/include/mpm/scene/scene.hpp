@@ -106,6 +106,9 @@ struct SolverDescription {
   std::string shape_function = "linear";  ///< a name of shape_function_names() (scheme.hpp)
   VelocityTransfer velocity_transfer = VelocityTransfer::flip;
   double flip_fraction = 1.0;  ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
+  /// The scene gives `velocity_transfer` or `flip_fraction`; if not, a module's section may choose the transfer
+  /// its physics needs (SceneExtension::complete: `contact:` takes `apic`).
+  bool velocity_transfer_given = false;
   /// CPDI shape functions only (empty otherwise): corners from F (eq. 3.27) or tracked (eq. 3.38)
   std::optional<CpdiDomainUpdate> cpdi_domain_update;
   std::optional<double> dt;                ///< s, fixed time step (exclusive with cfl)

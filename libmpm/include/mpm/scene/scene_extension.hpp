@@ -36,6 +36,9 @@ class Simulation;
 /// value is stored in SceneDescription::extensions[key].
 using SectionParser = std::any (*)(const io::YamlReader& reader, const io::YamlValue& section,
                                    const SceneDescription& scene);
+/// Sets the defaults the section implies for keys of other sections that the scene does not give (contact: the
+/// velocity transfer); called after every section is read, only when the scene has the section.
+using SectionCompleter = void (*)(SceneDescription& scene);
 /// Adds the module to a simulation built from `scene`; throws SceneError for what needs the built bodies.
 template <int Dim>
 using SectionBuilder = void (*)(const SceneDescription& scene, Simulation<Dim>& simulation);
@@ -47,6 +50,7 @@ using SectionPreparer = std::shared_ptr<Module<Dim>> (*)(const SceneDescription&
 struct SceneExtension {
   std::string key;  ///< top-level YAML key
   SectionParser parse = nullptr;
+  SectionCompleter complete = nullptr;
   SectionPreparer<1> prepare_1d = nullptr;
   SectionPreparer<2> prepare_2d = nullptr;
   SectionPreparer<3> prepare_3d = nullptr;
