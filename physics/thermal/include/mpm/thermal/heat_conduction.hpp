@@ -6,7 +6,9 @@
 ///   C_I = sum phi m c (eq. 5.24);  T_I = sum phi (m c T)_p / C_I (eq. 5.25);
 ///   Q_I = sum V_p [gamma* phi_I + q_p . grad phi_I] - sum_faces q* A_I (eqs 5.21-5.23);
 ///   T~_I = T_I + dt Q_I / C_I, Dirichlet nodes T_I = T~_I = T*;
-///   T_p += sum phi (T~_I - T_I) (FLIP-type);  T_I^{t+dt} = sum phi (m c T)_p / C_I (second mapping);
+///   T_p += sum phi (T~_I - T_I) (FLIP-type), relaxed towards the consistent projection P of T~ over
+///   tau = particle_relaxation h^2 rho c / k (docs/theory.md eqs TP.1-TP.2: the FLIP-type update alone keeps the
+///   part of an initial jump that maps to nothing on the grid);  T_I^{t+dt} = sum phi (m c T)_p / C_I (second mapping);
 ///   q_p = -k grad T with grad T = sum grad phi_I T_I^{t+dt}: the flux of the next step comes from the
 ///   re-mapped grid temperature, not from T~ (the double mapping of Alg. 8).
 /// It runs in the phase after P2G, so the stress update of the same step sees T^{t+dt} (Alg. 9). The shared
