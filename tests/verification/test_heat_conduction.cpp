@@ -85,14 +85,17 @@ TEST(HeatConduction, Bar1dWithTheTwoCellElementsAndCpdi) {
   // quadratic and CPDI-L2 with reference weights (TLMPM), at 100 and 200 cells. The error is that of the grid
   // field at the nodes (Bernstein's mid-node values are coefficients, not temperatures: their nodal error is 2.3x
   // larger, 1.64e-3 at 1 PPC); it must fall as h^2. Bounds a little above the measured values (in brackets).
-  // (With 1 particle at each cell centre, Lagrange and CPDI-L2 give the hat's numbers: 1.51e-4.)
+  // (With 1 particle at each cell centre and particle_relaxation: 0, Lagrange and CPDI-L2 give the hat's numbers:
+  // 1.51e-4.) The default relaxation of the particle temperatures (eqs TP.1-TP.2) changes the errors to the numbers
+  // after the bracket's `/`: a two-node-per-cell element with one particle per cell leaves the target's projection
+  // under-determined (200 nodes, 100 particles), which costs Lagrange a factor 2.4; the order stays 2.
   for (const auto& [scheme, shape, ppc, bound] :
-       {std::tuple<const char*, const char*, int, double>{"musl", "bernstein", 1, 8e-4},  // [7.07e-4]
-        {"musl", "bernstein", 2, 2e-4},                                                   // [1.47e-4]
-        {"tlmpm", "lagrange_quadratic", 1, 2e-4},                                         // [1.51e-4]
-        {"tlmpm", "lagrange_quadratic", 2, 1.3e-4},                                       // [1.07e-4]
-        {"musl", "cpdi_l2", 1, 2e-4},                                                     // [1.51e-4]
-        {"tlmpm", "cpdi_l2", 1, 2e-4}}) {                                                 // [1.51e-4]
+       {std::tuple<const char*, const char*, int, double>{"musl", "bernstein", 1, 8e-4},  // [7.07e-4 / 1.21e-4]
+        {"musl", "bernstein", 2, 2e-4},                                                   // [1.47e-4 / 1.28e-4]
+        {"tlmpm", "lagrange_quadratic", 1, 4.5e-4},                                       // [1.51e-4 / 3.67e-4]
+        {"tlmpm", "lagrange_quadratic", 2, 1.3e-4},                                       // [1.07e-4 / 1.18e-4]
+        {"musl", "cpdi_l2", 1, 2e-4},                                                     // [1.51e-4 / 7.53e-5]
+        {"tlmpm", "cpdi_l2", 1, 2e-4}}) {                                                 // [1.51e-4 / 7.53e-5]
     HeatSpec s;
     s.dimension = 1;
     s.scheme = scheme;
@@ -149,7 +152,9 @@ TEST(HeatConduction, Plate2dWithTheTwoCellElementsAndCpdi) {
   EXPECT_LT(coarse.max_field_error, 1.2e-2);  // [1.07e-2]
   EXPECT_LT(fine.max_field_error, 2.5e-3);    // [1.95e-3]
   EXPECT_GT(coarse.max_field_error / fine.max_field_error, 3.0);
-  EXPECT_NEAR(coarse.probe, 40.354, 0.1);  // [40.424]
+  // [40.424 with particle_relaxation: 0; 40.128 with the default relaxation, whose nodal errors are 7.53e-3 and
+  // 1.89e-3 (the field at the nodes 5.11e-3 and 1.26e-3 against 1.07e-2 and 1.95e-3)]
+  EXPECT_NEAR(coarse.probe, 40.354, 0.3);
 }
 
 TEST(HeatConduction, StretchingBarWithTheTlmpmReferenceDomains) {
@@ -248,14 +253,17 @@ TEST(HeatConduction, FaceFluxWithTheTwoCellElements) {
   // capacities; the hat's shares (h per node) leave the vertex and mid nodes at different temperatures.
   // Measured in brackets; with the hat's shares: Bernstein spread 2.53e-2 K, field error 4.1e-2; Lagrange 2.72e-2 K,
   // 7.6e-2. The remaining spread is the particles' quadrature of the capacities (2 per cell: Bernstein's
-  // vertex:mid shares 0.656:0.344 instead of 2/3:1/3).
+  // vertex:mid shares 0.656:0.344 instead of 2/3:1/3). The field errors in brackets are those of
+  // particle_relaxation: 0; the default relaxation (eqs TP.1-TP.2) gives 1.24e-2, 3.06e-2 and 6.51e-3: it pulls the
+  // particles next to the heated face towards the grid field, whose one-sided face node lies O(h dT/dx) off (here
+  // dt / tau = 0.4 per step, the strongest relaxation of these cases).
   struct Bound {
     double spread, field;
   };
   for (const auto& [scheme, shape, bound] :
-       {std::tuple<std::string, std::string, Bound>{"musl", "linear", {1e-9, 5e-3}},  // [1.7e-13 K, 4.28e-3]
-        {"musl", "bernstein", {2.5e-3, 9e-3}},                                        // [1.69e-3 K, 7.62e-3]
-        {"tlmpm", "lagrange_quadratic", {4e-3, 1.2e-2}}}) {                           // [3.03e-3 K, 1.04e-2]
+       {std::tuple<std::string, std::string, Bound>{"musl", "linear", {1e-9, 1.6e-2}},  // [1.7e-13 K, 4.28e-3]
+        {"musl", "bernstein", {2.5e-3, 4e-2}},                                          // [1.69e-3 K, 7.62e-3]
+        {"tlmpm", "lagrange_quadratic", {4e-3, 1.2e-2}}}) {                             // [3.03e-3 K, 1.04e-2]
     const FluxSlab r = run_flux_slab(scheme, shape);
     EXPECT_LT(r.face_spread, bound.spread) << shape;
     EXPECT_LT(r.field_error, bound.field) << shape;
@@ -302,7 +310,8 @@ TEST(HeatConduction, Plate2dWithTheBoundaryOnTheParticles) {
 }
 
 TEST(HeatConduction, Example10PlateGivesTheNumbersOfItsReadme) {
-  // examples/10_heat_plate/plate.yaml (20 x 20 cells, 4 PPC): centre 40.124 against the exact 40.354.
+  // examples/10_heat_plate/plate.yaml (20 x 20 cells, 4 PPC): centre 40.263 against the exact 40.354 (40.124 with
+  // particle_relaxation: 0: the particles next to the held faces keep their initial jump without the relaxation).
   app::register_modules();
   auto sim = app::build_simulation<2>(load_scene(std::string(MPM_SOURCE_DIR) + "/examples/10_heat_plate/plate.yaml"));
   EXPECT_EQ(sim->particle_count(), 1600);
@@ -311,7 +320,7 @@ TEST(HeatConduction, Example10PlateGivesTheNumbersOfItsReadme) {
   const auto& T = sim->grid().node_fields.at("temperature");
   const double centre = T[10 + 21 * 10];
   std::printf("[ measured ] example 10: centre %.4f (exact %.4f)\n", centre, heat_plate_exact(0.5, 0.5, 0.05));
-  EXPECT_NEAR(centre, 40.124, 0.01);
+  EXPECT_NEAR(centre, 40.263, 0.01);
 }
 
 #ifdef MPM_WITH_PLASTICITY

@@ -126,6 +126,8 @@ std::shared_ptr<Module<Dim>> build_heat_conduction(const SceneDescription& scene
   ConductionSetup<Dim> setup;
   setup.source = td.source;
   setup.total_lagrangian = scheme_of(scene.solver).traits.total_lagrangian;
+  setup.particle_relaxation = td.particle_relaxation;
+  setup.projection_iterations = td.projection_iterations;
   for (int f = 0; f < 2 * Dim; ++f) {
     setup.face_temperature[f] = td.boundary[f].temperature;
     setup.face_flux[f] = td.boundary[f].flux;

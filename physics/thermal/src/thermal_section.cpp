@@ -116,6 +116,18 @@ const std::vector<KeySpec>& thermal_keys() {
                       "`temperature` (expression of t); `max` > `min` on every axis",
        .type_text = "list of `{min, max, temperature}`",
        .keys = region_keys()},
+      {.name = "particle_relaxation",
+       .type = KeyType::number,
+       .unit = "-",
+       .range = io::Range::at_least(0),
+       .default_value = 0.5,
+       .description = "the particles' relaxation time towards the grid temperature (eqs TP.1-TP.2), in cell diffusion "
+                      "times h^2 rho c / k; 0: the FLIP-type update alone, which keeps an initial jump's offsets"},
+      {.name = "projection_iterations",
+       .type = KeyType::integer,
+       .range = io::Range::closed(0, 20),
+       .default_value = 3.0,
+       .description = "Richardson steps of the relaxation target's projection (eq. TP.2); 0: T~ itself"},
   };
   return keys;
 }
@@ -129,6 +141,8 @@ std::any parse_thermal_section(const YamlReader& reader, const YamlValue& sectio
     thermal.initial_temperature = reader.expression(*initial, {"x", "y", "z"});
   thermal.source = map.expression("source", {"x", "y", "z", "t"});
   if (const auto boundary = map.find("boundary")) read_boundary(reader, *boundary, scene.dimension, thermal);
+  thermal.particle_relaxation = map.number("particle_relaxation");
+  thermal.projection_iterations = map.integer("projection_iterations");
   if (const auto fixed = map.find("fixed_temperature"))
     thermal.fixed_temperature = read_fixed_temperature(reader, *fixed, scene.dimension);
   return thermal;

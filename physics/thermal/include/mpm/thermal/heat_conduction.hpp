@@ -6,7 +6,9 @@
 ///   C_I = sum phi m c (eq. 5.24);  T_I = sum phi (m c T)_p / C_I (eq. 5.25);
 ///   Q_I = sum V_p [gamma* phi_I + q_p . grad phi_I] - sum_faces q* A_I (eqs 5.21-5.23);
 ///   T~_I = T_I + dt Q_I / C_I, Dirichlet nodes T_I = T~_I = T*;
-///   T_p += sum phi (T~_I - T_I) (FLIP-type);  T_I^{t+dt} = sum phi (m c T)_p / C_I (second mapping);
+///   T_p += sum phi (T~_I - T_I) (FLIP-type), relaxed towards the consistent projection P of T~ over
+///   tau = particle_relaxation h^2 rho c / k (docs/theory.md eqs TP.1-TP.2: the FLIP-type update alone keeps the
+///   part of an initial jump that maps to nothing on the grid);  T_I^{t+dt} = sum phi (m c T)_p / C_I (second mapping);
 ///   q_p = -k grad T with grad T = sum grad phi_I T_I^{t+dt}: the flux of the next step comes from the
 ///   re-mapped grid temperature, not from T~ (the double mapping of Alg. 8).
 /// It runs in the phase after P2G, so the stress update of the same step sees T^{t+dt} (Alg. 9). The shared
@@ -99,6 +101,10 @@ struct ConductionSetup {
   std::array<std::optional<std::string>, 2 * Dim> face_temperature, face_flux;
   std::vector<std::string> region_temperature;  ///< K, expressions of t; particle field keys::thermal_region
   bool total_lagrangian = false;                ///< TLMPM: weights at the reference positions
+  /// The particles' relaxation time towards the grid field, in cell diffusion times h^2 rho c / k (eq. TP.1); 0:
+  /// none (the FLIP-type update alone).
+  Real particle_relaxation = 0;
+  int projection_iterations = 1;  ///< Richardson steps of the target's projection (eq. TP.2); 0: T~ itself
 };
 
 template <int Dim, class Shape, class Coords = CartesianCoordinates>
@@ -193,8 +199,9 @@ class HeatConduction final : public Module<Dim> {
     predict(shared_, ctx.dt);
     hold_nodes(shared_.temperature, ctx.time);
     hold_nodes(shared_.updated, t1);
-    // T_p += sum phi (T~_I - T_I), then the second mapping gives T_I^{t+dt}
-    for (auto& body : ctx.bodies) update_particles(body, shared_, g, t1);
+    relaxation_target(ctx);
+    // T_p += sum phi (T~_I - T_I) (and the relaxation), then the second mapping gives T_I^{t+dt}
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_particles(ctx.bodies[b], b, shared_, g, t1, ctx.dt);
     map_temperature(ctx, false);
     flux_from_grid(ctx);
     grid.node_fields["temperature"] = shared_.temperature;
@@ -238,6 +245,8 @@ class HeatConduction final : public Module<Dim> {
   /// contact conductance, a_I = sum V_p grad phi_I (m^2 per unit thickness in 2D; the body's boundary share).
   struct NodalHeat {
     std::vector<Real> capacity, heat_content, heat_flow, temperature, updated;
+    std::vector<Real> target;      ///< the particles' relaxation target (eq. TP.2), K; only with a relaxation
+    std::vector<Real> round_trip;  ///< scratch of the target's iterations: sum phi m c (sum phi P)_p, J/K
     std::vector<VecU<Dim>> area;
     void assign(Index n, bool with_area) {
       for (auto* v : {&capacity, &heat_content, &heat_flow, &temperature, &updated}) v->assign(n, 0);
@@ -303,7 +312,8 @@ class HeatConduction final : public Module<Dim> {
       hold_nodes(own.temperature, ctx.time);
       hold_nodes(own.updated, t1);
     }
-    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_particles(ctx.bodies[b], own_[b], g, t1);
+    relaxation_target(ctx);
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_particles(ctx.bodies[b], b, own_[b], g, t1, ctx.dt);
     map_temperature(ctx, false);
     flux_from_grid(ctx);
     ctx.grid.node_fields["temperature"] = shared_.temperature;
@@ -567,9 +577,72 @@ class HeatConduction final : public Module<Dim> {
     });
   }
 
-  /// T_p += sum phi (T~_I - T_I); keeps the increment for the thermal expansion (field
-  /// keys::temperature_increment, only when a body expands).
-  void update_particles(Body<Dim>& body, const NodalHeat& f, const GridGeometry<Dim>& g, Real t1) {
+  /// The relaxation target P_I of eq. TP.2 in every nodal field (none without a relaxation): the nodal values whose
+  /// particle round trip S P = sum phi (m c sum_J phi_J P_J)_p / C_I is T~ (the consistent-mass projection), by
+  /// `projection_iterations` Richardson steps P <- P + T~ - S P from P = T~ (each one more gather and scatter, of
+  /// the arrays it names). Held nodes: T*.
+  void relaxation_target(StepContext<Dim>& ctx) {
+    if (!(setup_.particle_relaxation > 0)) return;
+    const auto& g = ctx.grid.geometry;
+    const bool separate = !own_.empty();
+    std::vector<NodalHeat*> fields;
+    if (separate)
+      for (auto& f : own_) fields.push_back(&f);
+    else
+      fields.push_back(&shared_);
+    for (NodalHeat* f : fields) {
+      f->target = f->updated;
+      hold_nodes(f->target, ctx.time + ctx.dt);
+    }
+    for (int iteration = 0; iteration < setup_.projection_iterations; ++iteration) {
+      for (NodalHeat* f : fields) f->round_trip.assign(f->updated.size(), 0);
+      for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
+        auto& body = ctx.bodies[b];
+        const auto& p = body.particles;
+        const Real c = setup_.bodies[b].specific_heat;
+        NodalHeat& f = separate ? own_[b] : shared_;
+        const Real* target = f.target.data();
+        Real* round_trip = f.round_trip.data();
+        const VecU<Dim>* x = positions(p);
+        const std::vector<HaloArray> written{HaloArray::of(f.round_trip)};
+        for_each_tile_coloured(body.bins, std::span<const HaloArray>(written), [&](const Index* index, Index count) {
+          axisym::StencilFor<Dim, Shape, Coords> st;
+          const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
+          for (Index k = 0; k < count; ++k) {
+            const Index i = index[k];
+            st.compute(x[i], g, domain(i));
+            Real value = 0;
+            for (int a = 0; a < st.count; ++a) value += st.w[a] * target[st.node[a]];
+            const Real mcT = p.mass[i] * c * value;
+            for (int a = 0; a < st.count; ++a) round_trip[st.node[a]] += st.w[a] * mcT;
+          }
+        });
+      }
+      for (NodalHeat* f : fields) {
+        tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(f->target.size()), 1 << 12),
+                          [&](const auto& r) {
+                            for (Index n = r.begin(); n != r.end(); ++n)
+                              if (f->capacity[n] > 0) f->target[n] += f->updated[n] - f->round_trip[n] / f->capacity[n];
+                          });
+        hold_nodes(f->target, ctx.time + ctx.dt);
+      }
+    }
+  }
+
+  /// The fraction of eq. TP.1 for body b: dt / tau, tau = particle_relaxation h^2 rho c / k_max (at most 1; 0 without
+  /// a relaxation or conduction).
+  Real relaxation_fraction(std::size_t b, Real dt) const {
+    const auto& tb = setup_.bodies[b];
+    if (!(setup_.particle_relaxation > 0) || !(tb.max_conductivity > 0)) return 0;
+    const Real tau = setup_.particle_relaxation * h_min_ * h_min_ * tb.density * tb.specific_heat / tb.max_conductivity;
+    return std::min<Real>(1, dt / tau);
+  }
+
+  /// T_p += sum phi (T~_I - T_I), relaxed towards the target (eq. TP.1): T_p = (1 - a) (T_p + sum phi (T~_I - T_I))
+  /// + a sum phi P_I; keeps the increment for the thermal expansion (field keys::temperature_increment, only when a
+  /// body expands).
+  void update_particles(Body<Dim>& body, std::size_t b, const NodalHeat& f, const GridGeometry<Dim>& g, Real t1,
+                        Real dt) {
     auto& p = body.particles;
     auto& T = p.field(mpm::keys::temperature);
     const VecU<Dim>* x = positions(p);
@@ -577,6 +650,8 @@ class HeatConduction final : public Module<Dim> {
     const int* region = region_.empty() ? nullptr : p.field(keys::thermal_region).data();
     std::vector<Real> held;
     for (const auto& r : region_) held.push_back(r(0, 0, 0, t1));
+    const Real alpha = relaxation_fraction(b, dt);
+    const Real* target = alpha > 0 ? f.target.data() : nullptr;
     tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
@@ -584,6 +659,11 @@ class HeatConduction final : public Module<Dim> {
         st.compute(x[i], g, domain(i));
         Real d = 0;
         for (int a = 0; a < st.count; ++a) d += st.w[a] * (f.updated[st.node[a]] - f.temperature[st.node[a]]);
+        if (target) {
+          Real relaxed = 0;
+          for (int a = 0; a < st.count; ++a) relaxed += st.w[a] * target[st.node[a]];
+          d = (1 - alpha) * d + alpha * (relaxed - T[i]);
+        }
         if (region && region[i] >= 0) d = held[static_cast<std::size_t>(region[i])] - T[i];
         T[i] += d;
         if (dT) dT[i] = d;

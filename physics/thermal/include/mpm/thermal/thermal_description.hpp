@@ -36,6 +36,9 @@ struct ThermalDescription {
   /// Faces x_min, x_max, y_min, y_max, z_min, z_max; no condition = insulated (zero flux).
   std::array<ThermalFace, 6> boundary;
   std::vector<FixedTemperatureRegion> fixed_temperature;
+  /// The particles' relaxation time towards the grid field in cell diffusion times (eq. TP.1); 0: none.
+  double particle_relaxation = 0.5;
+  int projection_iterations = 1;  ///< Richardson steps of the relaxation target (eq. TP.2)
   SourceLocation where;
 };
 
