@@ -149,9 +149,11 @@ TEST(ContactEnergy, CylindersNeverGainEnergy) {
 TEST(ContactEnergy, DisksNeverGainEnergy) {
   for (const std::string scheme : {"musl", "usl", "usf"})
     for (const std::string onset : {"grid", "particle_gap"}) {
-      const EnergyRun r = run<2>(
-          fill(two_disks_scene,
-               {{"SCHEME", with_paper_transfer(scheme)}, {"SHAPE", "linear"}, {"ONSET", onset}, {"MU", "0"}, {"NORMALS", "mass_gradient"}}));
+      const EnergyRun r = run<2>(fill(two_disks_scene, {{"SCHEME", with_paper_transfer(scheme)},
+                                                        {"SHAPE", "linear"},
+                                                        {"ONSET", onset},
+                                                        {"MU", "0"},
+                                                        {"NORMALS", "mass_gradient"}}));
       print("elastic disks, " + scheme + ", " + onset, r);
       EXPECT_LT(r.rise, 0.005) << scheme << " " << onset;  // largest: +0.025% (USL, before contact)
       EXPECT_GT(r.onset, 0);

@@ -20,9 +20,11 @@ struct DiskRun {
 
 DiskRun run_disks(const std::string& scheme, const std::string& shape, const std::string& onset, double mu = 0,
                   const std::string& normals = "mass_gradient") {
-  auto sim = simulation_from_yaml<2>(
-      fill(disks,
-           {{"SCHEME", with_paper_transfer(scheme)}, {"SHAPE", shape}, {"ONSET", onset}, {"MU", std::to_string(mu)}, {"NORMALS", normals}}));
+  auto sim = simulation_from_yaml<2>(fill(disks, {{"SCHEME", with_paper_transfer(scheme)},
+                                                  {"SHAPE", shape},
+                                                  {"ONSET", onset},
+                                                  {"MU", std::to_string(mu)},
+                                                  {"NORMALS", normals}}));
   auto* contact = contact_module(*sim);
   EXPECT_NE(contact, nullptr);
   const double e0 = sim->energy().total();
