@@ -32,6 +32,10 @@ void register_module() {
                      .traits = {.affine_transfers =
                                     Support::no("it updates particle velocities by the grid increment: eq. 92, FLIP"),
                                 .contact = Support::no("the implicit scheme does not support contact yet"),
+                                .local_damping = Support::no(
+                                    "its midpoint Newton step has no explicit momentum update to damp, and damping "
+                                    "would void its energy proof (Prop. 3.1); to reach a static state use an explicit "
+                                    "scheme (musl, usl, usf, tlmpm) with damping"),
                                 .contact_releases_separating_nodes = false,
                                 .unconditionally_stable = true,
                                 .runs_distributed = false}});

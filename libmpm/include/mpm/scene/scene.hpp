@@ -106,6 +106,8 @@ struct SolverDescription {
   std::string shape_function = "linear";  ///< a name of shape_function_names() (scheme.hpp)
   VelocityTransfer velocity_transfer = VelocityTransfer::flip;
   double flip_fraction = 1.0;  ///< PIC/FLIP blend alpha of eq. 2.53 (1 = FLIP, 0 = PIC)
+  /// Local non-viscous damping coefficient alpha of eq. 2.74, in [0, 1) (0: off)
+  double damping = 0;
   /// CPDI shape functions only (empty otherwise): corners from F (eq. 3.27) or tracked (eq. 3.38)
   std::optional<CpdiDomainUpdate> cpdi_domain_update;
   std::optional<double> dt;                ///< s, fixed time step (exclusive with cfl)
