@@ -328,6 +328,10 @@ template <int Dim>
 void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage stage) {
   const Real cutoff = ctx.settings.mass_cutoff, dt = ctx.dt, damping = ctx.settings.damping;
   const Vec<Dim> gravity = ctx.settings.gravity;
+  const auto deformable_fields = [&](auto&& visit) {
+    for (int j = 0; j < body_count_; ++j)
+      if (rigid_of_[j] < 0) visit(std::as_const(body_grids_[j]));
+  };
   const Real t = stage == GridStage::mapped ? ctx.time : ctx.time + ctx.dt;
   auto member = stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped;
   for (int k = 0; k < body_count_; ++k) {
@@ -349,8 +353,11 @@ void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage
           continue;
         }
         const Real inv_m = 1 / n.mass;
-        if (stage == GridStage::updated && damping > 0)  // eq. 5.1 with the local damping of eq. 2.74
-          v.updated = kernels::damped_velocity<Dim>(Vec<Dim>(v.mapped), n.force + n.mass * gravity, n.mass, dt, damping);
+        if (stage == GridStage::updated && damping > 0)  // eq. 5.1 with the local damping of the bodies' sum, eq. 2.74
+          v.updated = (n.momentum + dt * (n.force + n.mass * gravity +
+                                          n.mass * kernels::shared_damping_acceleration<Dim>(
+                                                       i, gravity, cutoff, damping, deformable_fields))) *
+                      inv_m;
         else if (stage == GridStage::updated)  // eq. 5.1: v~ = (mv + dt (f + m g)) / m
           v.updated = (n.momentum + dt * (n.force + n.mass * gravity)) * inv_m;
         else

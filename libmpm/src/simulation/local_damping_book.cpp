@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <span>
+#include <vector>
 
 #include "mpm/core/exact_sum.hpp"
 #include "mpm/core/state_archive.hpp"
@@ -10,24 +11,6 @@
 #include "mpm/schemes/local_damping.hpp"
 
 namespace mpm {
-namespace {
-
-/// Adds -dt f_d . (v^t + v^{t+dt})/2 of every node of `grid` in `nodes` this rank owns to `sum` (eq. 2.75).
-template <int Dim>
-void add_damping_work(const Grid<Dim>& grid, const StepContext<Dim>& ctx, Real alpha, ExactSum& sum) {
-  const Real cutoff = ctx.settings.mass_cutoff, dt = ctx.dt;
-  const Vec<Dim> gravity = ctx.settings.gravity;
-  for_each_node_in_order(grid.size(), ctx.active_nodes, [&](Index I) {
-    const NodeRecord<Dim>& n = grid.node[I];
-    if (!(n.mass > cutoff) || !ctx.owned_nodes.contains(I)) return;
-    const NodeVelocity<Dim>& v = grid.velocity[I];
-    const Vec<Dim> f_d =
-        kernels::local_damping_force<Dim>(n.force + n.mass * gravity, Vec<Dim>(v.mapped), alpha);
-    sum += -0.5 * dt * f_d.dot(Vec<Dim>(v.mapped) + Vec<Dim>(v.updated));
-  });
-}
-
-}  // namespace
 
 template <int Dim>
 LocalDampingBook<Dim>::LocalDampingBook(Real alpha, std::vector<int> undamped_bodies)
@@ -36,17 +19,33 @@ LocalDampingBook<Dim>::LocalDampingBook(Real alpha, std::vector<int> undamped_bo
 template <int Dim>
 void LocalDampingBook<Dim>::on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) {
   if (stage != GridStage::updated) return;
-  ExactSum work;
-  bool shared = false;
+  // The damped fields: the shared grid of the bodies that map to it, the own fields of the others (contact) but the
+  // rigid bodies'. At a node of several fields each got m_k a_d, a_d of the fields' sum (shared_damping_acceleration),
+  // as the contact module applied it; with one field that is eq. 2.74 itself.
+  std::vector<const Grid<Dim>*> fields;
   for (const auto& body : ctx.bodies) {
-    if (!body.separate_grid) {
-      shared = true;
-      continue;
-    }
-    if (std::find(undamped_bodies_.begin(), undamped_bodies_.end(), body.index) == undamped_bodies_.end())
-      add_damping_work(*body.separate_grid, ctx, alpha_, work);
+    const Grid<Dim>* grid = body.separate_grid ? body.separate_grid : &ctx.grid;
+    const bool undamped =
+        std::find(undamped_bodies_.begin(), undamped_bodies_.end(), body.index) != undamped_bodies_.end();
+    if (!undamped && std::find(fields.begin(), fields.end(), grid) == fields.end()) fields.push_back(grid);
   }
-  if (shared) add_damping_work(ctx.grid, ctx, alpha_, work);
+  const auto for_each_field = [&](auto&& visit) {
+    for (const Grid<Dim>* grid : fields) visit(*grid);
+  };
+  const Real cutoff = ctx.settings.mass_cutoff, dt = ctx.dt;
+  const Vec<Dim> gravity = ctx.settings.gravity;
+  ExactSum work;  // eq. 2.75: -dt sum_k m_k a_d . (v_k^t + v_k^{t+dt}) / 2 over the nodes this rank owns
+  for_each_node_in_order(ctx.grid.size(), ctx.active_nodes, [&](Index I) {
+    if (!ctx.owned_nodes.contains(I)) return;
+    const Vec<Dim> a = kernels::shared_damping_acceleration<Dim>(I, gravity, cutoff, alpha_, for_each_field);
+    if (a.isZero(0)) return;
+    for (const Grid<Dim>* grid : fields) {
+      const NodeRecord<Dim>& n = grid->node[I];
+      if (!(n.mass > cutoff)) continue;
+      const NodeVelocity<Dim>& v = grid->velocity[I];
+      work += -0.5 * dt * n.mass * a.dot(Vec<Dim>(v.mapped) + Vec<Dim>(v.updated));
+    }
+  });
   if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(&work, 1));  // each rank summed the nodes it owns
   dissipated_ += work.value();
 }
