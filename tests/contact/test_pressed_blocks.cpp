@@ -56,10 +56,11 @@ TEST(PressedBlocks, InterfacePressureEqualsTheTraction) {
       for (Index i = 0; i < p.size(); ++i) stress[b] += p.stress[i].c[1] / static_cast<double>(p.size());
     }
     const EnergySentinel<2>* sentinel = sim->energy_sentinel();
-    std::printf("%s: interface pressure %.6g Pa (traction %.6g, error %+.3f%%), mean sigma_yy lower %.6g upper %.6g Pa, "
-                "energy E - E0 %.6g J, external work %.6g J, largest balance / tolerance %.3g\n",
-                transfer, pressure, traction, 100 * (pressure / traction - 1), stress[0], stress[1],
-                sim->energy().total() - e0, sentinel->work(), sentinel->largest_ratio());
+    std::printf(
+        "%s: interface pressure %.6g Pa (traction %.6g, error %+.3f%%), mean sigma_yy lower %.6g upper %.6g Pa, "
+        "energy E - E0 %.6g J, external work %.6g J, largest balance / tolerance %.3g\n",
+        transfer, pressure, traction, 100 * (pressure / traction - 1), stress[0], stress[1], sim->energy().total() - e0,
+        sentinel->work(), sentinel->largest_ratio());
     EXPECT_NEAR(pressure / traction, 1, 0.02);
     EXPECT_NEAR(stress[0] / -traction, 1, 0.02);
     EXPECT_NEAR(stress[1] / -traction, 1, 0.02);

@@ -23,7 +23,7 @@ const std::string column_scene = std::string(MPM_SOURCE_DIR) + "/examples/21_gra
 
 constexpr double rho = 1000, g = 9.81, E = 1.0e7, nu = 0.25, H = 1.0;
 constexpr double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));  // constrained modulus, Pa
-constexpr double spacing = 0.025;                                // particle spacing: h = 0.05, 2 per cell per axis
+constexpr double spacing = 0.025;                               // particle spacing: h = 0.05, 2 per cell per axis
 
 /// The exact static displacement at height y (m), positive downwards.
 double exact_settlement(double y) { return rho * g / M * (H * y - 0.5 * y * y); }
@@ -68,14 +68,15 @@ ColumnResult settle(Simulation<Dim>& sim, int v) {
 
 /// The static values the tests compare with.
 const double top_exact = exact_settlement(H - 0.5 * spacing);  // 0.40867 mm
-const double middle_exact = -rho * g * (H - 0.5 * H);           // -4905 Pa
+const double middle_exact = -rho * g * (H - 0.5 * H);          // -4905 Pa
 
 void expect_static(const ColumnResult& r, const std::string& what) {
   SCOPED_TRACE(what);
-  std::printf("%s: top settlement %.6g mm (exact %.6g, error %+.3f%%), sigma_vv(H/2) %.6g Pa (exact %.6g, error %+.3f%%), "
-              "damped %.6g J, books E + D - E0 = %.3g J\n",
-              what.c_str(), 1e3 * r.top, 1e3 * top_exact, 100 * (r.top / top_exact - 1), r.middle, middle_exact,
-              100 * (r.middle / middle_exact - 1), r.dissipated, r.balance);
+  std::printf(
+      "%s: top settlement %.6g mm (exact %.6g, error %+.3f%%), sigma_vv(H/2) %.6g Pa (exact %.6g, error %+.3f%%), "
+      "damped %.6g J, books E + D - E0 = %.3g J\n",
+      what.c_str(), 1e3 * r.top, 1e3 * top_exact, 100 * (r.top / top_exact - 1), r.middle, middle_exact,
+      100 * (r.middle / middle_exact - 1), r.dissipated, r.balance);
   EXPECT_NEAR(r.top / top_exact, 1, 0.02);
   EXPECT_NEAR(r.middle / middle_exact, 1, 0.02);
   // The books close: what the potential lost is in the strain energy and the damping's books (eq. 8.4 with D), to

@@ -366,7 +366,7 @@ std::vector<double> OutputWriter<Dim>::energy_row(const Simulation<Dim>& sim) co
 
 template <int Dim>
 void OutputWriter<Dim>::append_energy_row(const Simulation<Dim>& sim, const std::vector<double>& row) {
-  // A scene with outflow faces, erosion or damping has their columns too: the first frame writes the header again with them.
+  // A scene with outflow faces, erosion or damping has their columns too: the first frame writes the header again.
   if (frame_ == 0 && energy_->columns().size() != row.size())
     energy_ = std::make_unique<io::CsvLog>(energy_->path(), energy_columns(sim));
   energy_->append(row);

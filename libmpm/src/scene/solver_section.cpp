@@ -133,8 +133,8 @@ void check_scheme_keys(const YamlReader& reader, const YamlMap& map, const Solve
 SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
   const YamlMap map = reader.map(value);
   std::vector<std::string> allowed{
-      "scheme",        "shape_function",     "velocity_transfer", "flip_fraction",  "dt",
-      "cfl",           "end_time",           "mass_cutoff",       "gravity",        "snapshot_interval",
+      "scheme",        "shape_function",     "velocity_transfer", "flip_fraction",   "dt",
+      "cfl",           "end_time",           "mass_cutoff",       "gravity",         "snapshot_interval",
       "sort_interval", "cpdi_domain_update", "energy_tolerance",  "on_energy_drift", "damping"};
   for (const auto& [key, owner] : scheme_solver_keys()) allowed.push_back(key);
   map.allow(allowed);

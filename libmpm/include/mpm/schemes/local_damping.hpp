@@ -32,8 +32,9 @@ inline Vec<Dim> damped_velocity(const Vec<Dim>& v, const Vec<Dim>& f, Real mass,
 }
 
 /// Multi-velocity fields (contact): the damping acceleration of node I, eq. 2.74 applied to the sum of the fields
-/// present there (mass above `cutoff`), a_d = f_d(F, V) / M with M = sum m_j, F = sum (f_j + m_j g) and V = sum m_j v_j^t
-/// / M (v^t: each field's `mapped` velocity); each field k gets f_d,k = m_k a_d. The contact forces between the fields
+/// present there (mass above `cutoff`),
+///   a_d = f_d(F, V) / M,  M = sum m_j,  F = sum (f_j + m_j g),  V = sum m_j v_j^t / M
+/// (v^t: each field's `mapped` velocity); each field k gets f_d,k = m_k a_d. The contact forces between the fields
 /// cancel in F, so the damping vanishes at equilibrium where the bodies press on each other (each field's own force
 /// does not: it lacks the contact force), and it gives every field at the node the same acceleration, so it makes no
 /// relative motion between bodies. Zero where no field has mass. `for_each_field(visit)` calls visit(grid) for every

@@ -1,12 +1,13 @@
 #pragma once
 /// \file local_damping_book.hpp
-/// The books of the local non-viscous damping (`solver.damping`; local_damping.hpp, docs/theory.md eqs 2.74-2.75): the
-/// energy the damping force took out of the run since t = 0, D = -sum over steps and nodes of dt f_d . (v^t + v^{t+dt})/2,
-/// with v the nodal velocities after the face conditions (a held component moves with its prescribed value, where the
-/// damping does not act: at rest on fixed and slip faces, so it adds nothing there). The energy sentinel adds D to its
-/// balance (Module::removed_energy, eq. 8.4), energy.csv writes it as `damped_energy`, and the run's relative energy
-/// change counts it: a damped run's total energy falls by D while its balance stays at the level of an undamped run.
-/// Rigid bodies (contact), which move with their prescribed velocity, are not damped and not booked.
+/// The books of the local non-viscous damping (`solver.damping`; local_damping.hpp, docs/theory.md eqs 2.74-2.75):
+/// the energy the damping force took out of the run since t = 0,
+///   D = -sum over steps, nodes and fields of dt f_d . (v^t + v^{t+dt}) / 2,
+/// with v the nodal velocities after the face conditions (a held component moves with its prescribed value, where
+/// the damping does not act: at rest on fixed and slip faces, so it adds nothing there). The energy sentinel adds D
+/// to its balance (Module::removed_energy, eq. 8.4), energy.csv writes it as `damped_energy`, and the run's relative
+/// energy change counts it: a damped run's total energy falls by D while its balance stays at the level of an
+/// undamped run. Rigid bodies (contact), which move with their prescribed velocity, are neither damped nor booked.
 
 #include <vector>
 
