@@ -27,6 +27,7 @@
 #include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/schemes/cpdi_corner_tracking.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
+#include "mpm/simulation/local_damping_book.hpp"
 #include "mpm/simulation/reaction_provider.hpp"
 #include "particle_file_body.hpp"
 
@@ -242,6 +243,7 @@ template <int Dim>
 SimulationSettings<Dim> simulation_settings(const SolverDescription& solver, Real max_particle_mass) {
   SimulationSettings<Dim> settings;
   settings.transfer.flip_fraction = solver.flip_fraction;
+  settings.transfer.damping = solver.damping;
   settings.transfer.mass_cutoff = solver.mass_cutoff * max_particle_mass;
   for (int d = 0; d < Dim; ++d) settings.transfer.gravity[d] = solver.gravity[d];
   settings.fixed_dt = solver.dt;
@@ -347,6 +349,20 @@ void add_failure_module(const SceneDescription& scene, Simulation<Dim>& sim, boo
   if (!bodies.empty()) sim.add_module(std::make_shared<FailureModule<Dim>>(std::move(bodies), sim.settings().cfl));
 }
 
+/// With `solver.damping`: the books of the damping's work (local_damping_book.hpp). The bodies a module moves with a
+/// prescribed velocity (a ReactionProvider's partners named like a body: contact's rigid bodies) are not damped.
+template <int Dim>
+void add_damping_book(const SceneDescription& scene, Simulation<Dim>& sim) {
+  if (!(scene.solver.damping > 0)) return;
+  std::vector<int> prescribed;
+  for (const auto& m : sim.modules())
+    if (const auto* provider = dynamic_cast<const ReactionProvider<Dim>*>(m.get()))
+      for (const auto& name : provider->reaction_partners())
+        for (const auto& b : sim.bodies())
+          if (b.name == name) prescribed.push_back(b.index);
+  sim.add_module(std::make_shared<LocalDampingBook<Dim>>(scene.solver.damping, std::move(prescribed)));
+}
+
 /// The energy sentinel of every run (energy_sentinel.hpp), with the rigid partners of the modules that hold the
 /// bodies (reaction_provider.hpp) and the method it quotes hints for.
 template <int Dim>
@@ -410,6 +426,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));
   add_failure_module<Dim>(scene, *sim, reorders_particles);
+  add_damping_book<Dim>(scene, *sim);     // after contact: it books the velocities contact corrected
   add_energy_sentinel<Dim>(scene, *sim);  // last: its E(0) is the audit of the complete initial state
   check_fixed_time_step<Dim>(scene, *sim);
   check_time_step(estimate_steps<Dim>(scene, *sim), scene);  // 0, infinite, or too small to reach end_time

@@ -14,6 +14,7 @@
 #include "mpm/contact/contact_law.hpp"
 #include "mpm/core/state_archive.hpp"
 #include "mpm/io/continued_file.hpp"
+#include "mpm/schemes/local_damping.hpp"
 #include "shape_passes.hpp"
 
 namespace mpm::contact {
@@ -184,7 +185,28 @@ void MultiVelocityContact<Dim>::after_p2g(StepContext<Dim>& ctx) {
       }
     }
   });
+  if (ctx.boundary.has_traction()) share_tractions(ctx);
   find_candidates(ctx);
+}
+
+template <int Dim>
+void MultiVelocityContact<Dim>::share_tractions(StepContext<Dim>& ctx) {
+  // GridBoundary ran before the bodies' fields were summed, when the shared grid had no mass: its tractions are added
+  // here, to the system's field as without contact, and to the deformable bodies' fields in proportion to their
+  // masses at the node (docs/theory.md §11, "Face tractions").
+  auto& shared = ctx.grid;
+  ctx.boundary.traction_forces(ctx.time, ctx.active_nodes, [&](Index I, int c, Real force) {
+    NodeRecord<Dim>& s = shared.node[I];
+    if (!(s.mass > 0)) return;
+    s.force[c] += force;
+    Real deformable = 0;
+    for (int k = 0; k < body_count_; ++k)
+      if (rigid_of_[k] < 0) deformable += body_grids_[k].node[I].mass;
+    if (!(deformable > 0)) return;  // a rigid body alone: it moves as prescribed whatever the force
+    for (int k = 0; k < body_count_; ++k)
+      if (NodeRecord<Dim>& own = body_grids_[k].node[I]; rigid_of_[k] < 0 && own.mass > 0)
+        own.force[c] += force * (own.mass / deformable);
+  });
 }
 
 template <int Dim>
@@ -304,8 +326,12 @@ void MultiVelocityContact<Dim>::plane_reach(const GridGeometry<Dim>& g, Communic
 
 template <int Dim>
 void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage stage) {
-  const Real cutoff = ctx.settings.mass_cutoff, dt = ctx.dt;
+  const Real cutoff = ctx.settings.mass_cutoff, dt = ctx.dt, damping = ctx.settings.damping;
   const Vec<Dim> gravity = ctx.settings.gravity;
+  const auto deformable_fields = [&](auto&& visit) {
+    for (int j = 0; j < body_count_; ++j)
+      if (rigid_of_[j] < 0) visit(std::as_const(body_grids_[j]));
+  };
   const Real t = stage == GridStage::mapped ? ctx.time : ctx.time + ctx.dt;
   auto member = stage == GridStage::updated ? &NodeVelocity<Dim>::updated : &NodeVelocity<Dim>::mapped;
   for (int k = 0; k < body_count_; ++k) {
@@ -327,7 +353,12 @@ void MultiVelocityContact<Dim>::body_velocities(StepContext<Dim>& ctx, GridStage
           continue;
         }
         const Real inv_m = 1 / n.mass;
-        if (stage == GridStage::updated)  // eq. 5.1: v~ = (mv + dt (f + m g)) / m
+        if (stage == GridStage::updated && damping > 0)  // eq. 5.1 with the local damping of the bodies' sum, eq. 2.74
+          v.updated = (n.momentum + dt * (n.force + n.mass * gravity +
+                                          n.mass * kernels::shared_damping_acceleration<Dim>(
+                                                       i, gravity, cutoff, damping, deformable_fields))) *
+                      inv_m;
+        else if (stage == GridStage::updated)  // eq. 5.1: v~ = (mv + dt (f + m g)) / m
           v.updated = (n.momentum + dt * (n.force + n.mass * gravity)) * inv_m;
         else
           v.mapped = n.momentum * inv_m;

@@ -80,6 +80,11 @@ void GridBoundary<Dim>::apply_traction(NodeArray<NodeRecord<Dim>>& node, Real t,
 }
 
 template <int Dim>
+void GridBoundary<Dim>::traction_forces(Real t, NodeRuns nodes, const std::function<void(Index, int, Real)>& f) const {
+  for (const auto& c : conditions_) c->traction_forces(t, nodes, f);
+}
+
+template <int Dim>
 void GridBoundary<Dim>::apply(NodeArray<NodeVelocity<Dim>>& velocity, VecU<Dim> NodeVelocity<Dim>::*member, Real t,
                               NodeRuns nodes) const {
   for (const auto& c : conditions_) c->constrain(velocity, member, t, nodes);

@@ -59,6 +59,14 @@ void VelocityFace<Dim>::add_traction(NodeArray<NodeRecord<Dim>>& node, Real t, N
 }
 
 template <int Dim>
+void VelocityFace<Dim>::traction_forces(Real t, NodeRuns nodes, const std::function<void(Index, int, Real)>& f) const {
+  for (const auto& k : traction_) {
+    const Real value = (*k.value)(0, 0, 0, t);
+    for_each_listed_node(nodes_, nodes, [&](std::size_t j) { f(nodes_[j], k.component, value * area_[j]); });
+  }
+}
+
+template <int Dim>
 bool VelocityFace<Dim>::does_work() const {
   return !traction_.empty() ||
          std::any_of(held_.begin(), held_.end(), [](const Held& k) { return k.value != nullptr; });

@@ -41,9 +41,6 @@ FaceTraits velocity_traits(const std::any& spec) {
     if (s.traction[d]) {
       t.traction = t.does_work = true;
       if (t.not_implicit.empty()) t.not_implicit = "scheme: implicit does not support tractions yet";
-      t.not_contact =
-          "face tractions (grid.boundary ... traction) are not supported together with contact: a traction acts on "
-          "the shared grid field, and contact gives every body its own";
     }
   }
   return t;

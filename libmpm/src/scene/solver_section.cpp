@@ -1,5 +1,6 @@
 // `solver:` (docs/scene-reference.md, solver): scheme, shape function (checked against the grid), velocity
-// transfer, CPDI domain update, time step, the intervals of the guard and the sorting, and the energy sentinel.
+// transfer, CPDI domain update, local damping, time step, the intervals of the guard and the sorting, and the energy
+// sentinel.
 #include <fmt/format.h>
 
 #include "mpm/schemes/scheme.hpp"
@@ -88,6 +89,16 @@ void read_velocity_transfer(const YamlReader& reader, const YamlMap& map, Solver
                     solver.shape_function + "); use apic with other shape functions");
 }
 
+/// `damping`: the local damping of the momentum update (eq. 2.74), alpha in [0, 1); refused by a scheme without an
+/// explicit momentum update.
+void read_damping(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {
+  const auto damping = map.find("damping");
+  if (!damping) return;
+  solver.damping = reader.number(*damping, Range{0, true, 1, false}, "");
+  if (const Support& local = scheme_of(solver).traits.local_damping; !local)
+    reader.fail(*damping, fmt::format("damping is not available with {} ({})", solver.scheme_name(), local.why_not));
+}
+
 /// Exactly one of dt (fixed) and cfl (adaptive).
 void read_time_step(const YamlReader& reader, const YamlMap& map, SolverDescription& solver) {
   const auto dt = map.find("dt");
@@ -123,9 +134,9 @@ void check_scheme_keys(const YamlReader& reader, const YamlMap& map, const Solve
 SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
   const YamlMap map = reader.map(value);
   std::vector<std::string> allowed{
-      "scheme",        "shape_function",     "velocity_transfer", "flip_fraction",  "dt",
-      "cfl",           "end_time",           "mass_cutoff",       "gravity",        "snapshot_interval",
-      "sort_interval", "cpdi_domain_update", "energy_tolerance",  "on_energy_drift"};
+      "scheme",        "shape_function",     "velocity_transfer", "flip_fraction",   "dt",
+      "cfl",           "end_time",           "mass_cutoff",       "gravity",         "snapshot_interval",
+      "sort_interval", "cpdi_domain_update", "energy_tolerance",  "on_energy_drift", "damping"};
   for (const auto& [key, owner] : scheme_solver_keys()) allowed.push_back(key);
   map.allow(allowed);
   SolverDescription solver;
@@ -137,6 +148,7 @@ SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, 
   }
   read_cpdi_domain_update(reader, map, solver);
   read_velocity_transfer(reader, map, solver);
+  read_damping(reader, map, solver);
   // before the time step: the scheme may refuse cfl with its own message
   if (const auto parse = scheme_of(solver).parse) solver.scheme_options = parse(reader, map, solver, scene);
   read_time_step(reader, map, solver);

@@ -155,6 +155,11 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   }
 
  private:
+  /// The face tractions (GridBoundary::traction_forces) on the shared field and, by mass share, on the deformable
+  /// bodies' own fields: every body at a loaded node gets the same acceleration from the traction, so the load makes
+  /// no relative motion between bodies there, and the momentum and the traction's power (booked on the shared field,
+  /// eq. 8.4) are those of the bodies' fields.
+  void share_tractions(StepContext<Dim>& ctx);
   void find_candidates(StepContext<Dim>& ctx);
   /// Onset particle_gap with planes: plane_reach_ of every deformable body at the candidate nodes behind each plane.
   void plane_reach(const GridGeometry<Dim>& g, Communicator* comm);

@@ -45,6 +45,11 @@ class FaceCondition {
   virtual bool has_traction() const { return false; }
   /// Adds the face's traction at time t to the nodal forces of its nodes in `nodes` that have mass.
   virtual void add_traction(NodeArray<NodeRecord<Dim>>& /*node*/, Real /*t*/, NodeRuns /*nodes*/) const {}
+  /// For every node of the face in `nodes` and every traction component, f(node, component, F) with F = t_c(t) A_I the
+  /// force add_traction() adds there (N; per radian in axisymmetric coordinates): for a module that shares it among
+  /// fields of its own (multi-velocity contact, GridBoundary::traction_forces).
+  virtual void traction_forces(Real /*t*/, NodeRuns /*nodes*/,
+                               const std::function<void(Index, int, Real)>& /*f*/) const {}
   /// Whether the condition can do work on the bodies (a moving velocity condition, a traction).
   virtual bool does_work() const { return false; }
   /// For every node of `nodes` with mass above `mass_cutoff` and every held component, f(node, component, R) with R

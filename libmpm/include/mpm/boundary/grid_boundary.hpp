@@ -56,6 +56,10 @@ class GridBoundary final : public Module<Dim> {
   /// Adds every face's traction at time t to the nodal forces (nodes with mass only; only the nodes of `nodes`,
   /// the step's StepContext::active_nodes: outside them no particle reaches a node).
   void apply_traction(NodeArray<NodeRecord<Dim>>& node, Real t, NodeRuns nodes = {}) const;
+  /// The forces apply_traction() adds, one call f(node, component, F) per face node of `nodes` and traction component
+  /// (FaceCondition::traction_forces), whatever the nodal masses: multi-velocity contact shares them among the bodies'
+  /// own fields.
+  void traction_forces(Real t, NodeRuns nodes, const std::function<void(Index, int, Real)>& f) const;
   /// Sets the held components of `member` of every face node of `nodes` to their value at time t, face after face
   /// (the contact module applies them to each body's own field with this; the implicit scheme probes the held
   /// components with it).

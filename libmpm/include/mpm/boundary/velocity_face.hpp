@@ -41,6 +41,7 @@ class VelocityFace final : public FaceCondition<Dim> {
   /// out-of-plane size in 1D/2D; in axisymmetric coordinates the revolved face, axisym::face_node_area). Nodes
   /// without mass get nothing (they are not part of the body).
   void add_traction(NodeArray<NodeRecord<Dim>>& node, Real t, NodeRuns nodes) const override;
+  void traction_forces(Real t, NodeRuns nodes, const std::function<void(Index, int, Real)>& f) const override;
   /// A prescribed velocity other than 0, or a traction.
   bool does_work() const override;
   /// R = m_I (v(t + dt) - v(t)) / dt - (f_I + m_I g)_c: what the condition adds to the nodal force (with gravity)

@@ -109,6 +109,8 @@ struct SolverDescription {
   /// The scene gives `velocity_transfer` or `flip_fraction`; if not, a module's section may choose the transfer
   /// its physics needs (SceneExtension::complete: `contact:` takes `apic`).
   bool velocity_transfer_given = false;
+  /// Local non-viscous damping coefficient alpha of eq. 2.74, in [0, 1) (0: off)
+  double damping = 0;
   /// CPDI shape functions only (empty otherwise): corners from F (eq. 3.27) or tracked (eq. 3.38)
   std::optional<CpdiDomainUpdate> cpdi_domain_update;
   std::optional<double> dt;                ///< s, fixed time step (exclusive with cfl)

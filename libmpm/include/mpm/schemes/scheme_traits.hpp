@@ -34,6 +34,8 @@ struct SchemeTraits {
   Support affine_transfers{};
   /// The multi-velocity contact module may run with it; else why not.
   Support contact{};
+  /// Takes `solver.damping`, the local damping of its explicit grid momentum update (eq. 2.74); else why not.
+  Support local_damping{};
   /// With contact's node criterion, a node whose two deformable bodies separate at v^t is released rather than
   /// corrected: true where the corrections' impulses would add energy (MUSL and USF, whose kinetic energy changes
   /// by J.v^t); false for USL, which is dissipative with contact (docs/theory.md §11, "Energy").

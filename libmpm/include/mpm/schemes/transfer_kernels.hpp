@@ -17,6 +17,7 @@
 #include "mpm/grid/active_tiles.hpp"
 #include "mpm/particles/field_keys.hpp"
 #include "mpm/schemes/axisymmetric.hpp"
+#include "mpm/schemes/local_damping.hpp"
 #include "mpm/shape/linear_hat.hpp"
 #include "mpm/shape/stencil.hpp"
 #include "mpm/simulation/step_context.hpp"
@@ -279,7 +280,8 @@ void particles_to_grid(Body<Dim>& body, Grid<Dim>& shared_grid) {
 }
 
 /// Nodal velocities before and after the momentum update (eqs 2.49-2.50 with the cut-off 2.63):
-/// mapped = (mv)/m, updated = (mv + dt (f + m g))/m. Nodes lighter than the cut-off get zero.
+/// mapped = (mv)/m, updated = (mv + dt (f + m g))/m, with the local damping of eq. 2.74 when settings.damping > 0.
+/// Nodes lighter than the cut-off get zero.
 template <int Dim>
 void update_grid_velocity(Grid<Dim>& grid, const TransferSettings<Dim>& s, Real dt, NodeRuns nodes = {}) {
   for_each_node_block(grid.size(), nodes, 1 << 12, [&](Index begin, Index end) {
@@ -289,7 +291,10 @@ void update_grid_velocity(Grid<Dim>& grid, const TransferSettings<Dim>& s, Real 
       if (n.mass > s.mass_cutoff) {
         const Real inv_m = 1 / n.mass;
         v.mapped = n.momentum * inv_m;
-        v.updated = v.mapped + dt * (n.force * inv_m + s.gravity);
+        if (s.damping > 0)  // eq. 2.74
+          v.updated = damped_velocity<Dim>(v.mapped, n.force + n.mass * s.gravity, n.mass, dt, s.damping);
+        else
+          v.updated = v.mapped + dt * (n.force * inv_m + s.gravity);
       } else {
         v.mapped.setZero();
         v.updated.setZero();

@@ -77,17 +77,20 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     return ok;
   }
 
-  /// updated = mapped + dt (f/m + g), with the small-mass cut-off.
+  /// updated = mapped + dt (f/m + g), with the small-mass cut-off and the local damping (eq. 2.74).
   static void momentum_update(StepContext<Dim>& ctx) {
     auto& grid = ctx.grid;
     for_each_node_block(grid.size(), ctx.active_nodes, 1 << 12, [&](Index begin, Index end) {
       for (Index i = begin; i != end; ++i) {
         const NodeRecord<Dim>& n = grid.node[i];
         NodeVelocity<Dim>& v = grid.velocity[i];
-        if (n.mass > ctx.settings.mass_cutoff)
-          v.updated = v.mapped + ctx.dt * (n.force / n.mass + ctx.settings.gravity);
-        else
+        if (!(n.mass > ctx.settings.mass_cutoff))
           v.updated.setZero();
+        else if (ctx.settings.damping > 0)  // eq. 2.74
+          v.updated = kernels::damped_velocity<Dim>(v.mapped, n.force + n.mass * ctx.settings.gravity, n.mass, ctx.dt,
+                                                    ctx.settings.damping);
+        else
+          v.updated = v.mapped + ctx.dt * (n.force / n.mass + ctx.settings.gravity);
       }
     });
   }

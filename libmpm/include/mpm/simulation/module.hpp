@@ -62,7 +62,8 @@ class Module {
   /// term per particle (called for every body in turn: energy.csv and the per-body energy histories).
   virtual void add_energy(const Body<Dim>&, EnergySums&) const {}
   /// J: the energy (EnergyBalance::total() terms) of the particles this module took out of the run since t = 0
-  /// (erosion), the same on every rank; the energy sentinel adds it to its balance (docs/theory.md eq. 8.4).
+  /// (erosion), or dissipated outside the audit (local damping, eq. 2.75), the same on every rank; the energy sentinel
+  /// adds it to its balance (docs/theory.md eq. 8.4).
   virtual Real removed_energy() const { return 0; }
   /// What the module carries from one step to the next outside the particle fields (positions of moving
   /// planes, force sums, the length of its CSV file, ...), as entries `prefix`NAME (state_archive.hpp): for

@@ -26,6 +26,8 @@ struct TransferSettings {
   Real flip_fraction = 1;               ///< alpha of eq. 2.53
   Real mass_cutoff = 0;                 ///< kg: nodes lighter than this get zero velocity (eq. 2.63)
   Vec<Dim> gravity = Vec<Dim>::Zero();  ///< m/s^2
+  /// alpha of the local non-viscous damping of the momentum update (eq. 2.74), in [0, 1); 0: undamped
+  Real damping = 0;
 };
 
 template <int Dim>
