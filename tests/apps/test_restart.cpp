@@ -198,6 +198,30 @@ Case thermal_coupling() {
 }
 #endif
 
+#if defined(MPM_WITH_THERMAL) && defined(MPM_WITH_CONTACT)
+/// The thermal analysis (`scheme: heat`) with a finite contact conductance: the conduction's and contact's state
+/// (first-step flux, the bodies' own nodal fields) across a restart.
+Case heat_analysis() {
+  return {"heat_analysis",
+          "dimension: 2\n"
+          "grid: {origin: [0, 0], extent: [0.004, 0.04], cell_size: 0.001}\n"
+          "materials:\n"
+          "  steel: {model: linear_elastic, density: 7850, youngs_modulus: 2.0e11, poisson_ratio: 0.3, "
+          "specific_heat: 460, thermal_conductivity: 45}\n"
+          "bodies:\n"
+          "  - {name: cold, material: steel, shape: {type: box, min: [0, 0], max: [0.004, 0.02]}}\n"
+          "  - {name: hot, material: steel, shape: {type: box, min: [0, 0.02], max: [0.004, 0.04]}}\n"
+          "solver: {scheme: heat, cfl: 0.8, end_time: 4}\n"
+          "thermal: {initial_temperature: \"y < 0.02 ? 300 : 800\"}\n"
+          "contact: {thermal_conductance: 1.0e4}\n"
+          "output:\n"
+          "  interval: 1\n"
+          "  fields: [temperature, heat_flux]\n"
+          "  grid: true\n" +
+              checkpoint_at(2)};
+}
+#endif
+
 #ifdef MPM_WITH_CONTACT
 Case contact_rigid() {
   return {"contact_rigid_platen",
@@ -307,6 +331,9 @@ std::vector<Case> cases() {
 #endif
 #ifdef MPM_WITH_CONTACT
   all.push_back(contact_rigid());
+#endif
+#if defined(MPM_WITH_THERMAL) && defined(MPM_WITH_CONTACT)
+  all.push_back(heat_analysis());
 #endif
   return all;
 }

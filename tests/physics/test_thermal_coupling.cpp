@@ -97,6 +97,26 @@ void expect_confined(const std::string& model, const std::string& grid, const st
   std::printf("[ measured ] %s confined in %dD: sigma = (%.6e, %.6e, %.6e) Pa (-3 K alpha dT = %.6e)\n", model.c_str(),
               Dim, m.stress(0, 0), m.stress(1, 1), m.stress(2, 2), expected);
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(m.stress(d, d), expected, 0.01 * std::abs(expected)) << "axis " << d;
+  if (model != "linear_elastic") return;
+  // The books: the work of the thermal strain, W_T = -sum V tr(sigma) alpha dT (the module's negative removed energy),
+  // is the strain energy the heating stored, 9/2 K (alpha dT)^2 V, so the run's balance E(t) - E(0) + removed
+  // closes.
+  double removed = 0;
+  for (const auto& module : sim->modules()) removed += module->removed_energy();
+  const EnergyBalance e = sim->energy();
+  const double volume = [&] {
+    double v = 0;
+    const auto& p = sim->bodies()[0].particles;
+    for (Index i = 0; i < p.size(); ++i) v += p.volume0[i];
+    return v;
+  }();
+  const double stored = 4.5 * K * alpha * m.dT * alpha * m.dT * volume;
+  std::printf(
+      "[ measured ] %dD: thermal expansion work %.6e J, strain energy %.6e J (9/2 K (alpha dT)^2 V = %.6e), "
+      "kinetic %.3e J\n",
+      Dim, -removed, e.strain, stored, e.kinetic);
+  EXPECT_NEAR(-removed, stored, 0.02 * stored);
+  EXPECT_NEAR(e.strain + e.kinetic + removed, 0, 1e-3 * stored);
 }
 
 TEST(ThermalExpansion, ConfinedInEveryDirectionReachesMinusThreeKAlphaDeltaT) {

@@ -42,7 +42,8 @@ template <int Dim>
 void Simulation<Dim>::particles_changed() {
   near_cut_known_ = false;
   wave_speed_ = WaveSpeedBound<Dim>{};
-  for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
+  if (scheme_->has_mechanics())
+    for (auto& b : bodies_) wave_speed_.merge(b.material->wave_speed_bound(b.particles));
   if (comm_) reduce_wave_speed(wave_speed_, *comm_);
   take_snapshot();
 }
@@ -60,7 +61,7 @@ Real Simulation<Dim>::stable_time_step() const {
   const auto& h = grid_.geometry.h;
   for (int d = 0; d < Dim; ++d)
     if (wave_speed_.max_speed[d] > 0) dt = std::min(dt, h[d] / wave_speed_.max_speed[d]);  // eq. 2.73
-  if (kinematic_viscosity_ > 0) {  // explicit viscous diffusion: dt <= h^2 / (2 Dim nu)
+  if (kinematic_viscosity_ > 0 && scheme_->has_mechanics()) {  // explicit viscous diffusion: dt <= h^2 / (2 Dim nu)
     const Real h_min = h.minCoeff();
     dt = std::min(dt, h_min * h_min / (2 * Dim * kinematic_viscosity_));
   }
@@ -75,7 +76,7 @@ std::string Simulation<Dim>::time_step_limiter() const {
   const auto& h = grid_.geometry.h;
   for (int d = 0; d < Dim; ++d)
     if (wave_speed_.max_speed[d] > 0) dt = std::min(dt, h[d] / wave_speed_.max_speed[d]);
-  if (kinematic_viscosity_ > 0)
+  if (kinematic_viscosity_ > 0 && scheme_->has_mechanics())
     if (const Real h_min = h.minCoeff(), bound = h_min * h_min / (2 * Dim * kinematic_viscosity_); bound < dt) {
       dt = bound;
       limiter = "viscous diffusion h^2 / (2 dim nu)";

@@ -2,6 +2,7 @@
 
 #include <mutex>
 
+#include "heat_scheme.hpp"
 #include "mpm/materials/material_registry.hpp"
 #include "mpm/scene/scene_extension.hpp"
 #include "mpm/thermal/output_fields.hpp"
@@ -55,6 +56,7 @@ void register_module() {
                               .description = "[Heat conduction](#thermal) (module `thermal`): its presence turns "
                                              "conduction on"});
     register_output_fields();
+    register_heat_scheme();
   });
 }
 

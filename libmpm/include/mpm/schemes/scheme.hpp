@@ -42,6 +42,9 @@ class Scheme {
   virtual bool positions_must_stay_in_grid() const { return true; }
   /// Whether the scheme runs on several ranks (its scatters exchange ghost nodes, tile_halo.hpp).
   virtual bool runs_distributed() const { return false; }
+  /// False for a scheme that moves nothing (the thermal module's `heat` analysis): the bodies' wave speeds and
+  /// viscosities then bound no time step (Simulation::stable_time_step), only the modules' bounds do.
+  virtual bool has_mechanics() const { return true; }
   /// Node layers a slab of cells reaches below its first cell and above its last (tile_halo.hpp).
   virtual std::pair<int, int> slab_reach() const { return {slab_cells(), slab_cells()}; }
   /// The scheme's own table of one row per step (the implicit scheme's solver.csv, written by `mpm run` beside

@@ -156,9 +156,11 @@ class HeatConduction final : public Module<Dim> {
   /// (temperature, heat_flux, temperature_increment) or recomputed every step.
   void save_state(StateArchive& archive, const std::string& prefix) const override {
     archive.put_integer(prefix + "flux_ready", flux_ready_ ? 1 : 0);
+    if (expands_) archive.put_number(prefix + "expansion_work", expansion_work_);
   }
   void restore_state(const StateArchive& archive, const std::string& prefix) override {
     flux_ready_ = archive.integer(prefix + "flux_ready") != 0;
+    if (expands_) expansion_work_ = archive.number(prefix + "expansion_work");
   }
 
   /// The grid temperature T_I^{t+dt} of the last step (K; zero on nodes without heat capacity). With a finite
@@ -209,6 +211,8 @@ class HeatConduction final : public Module<Dim> {
 
   /// Thermal expansion (eq. 5.26): L -= (alpha dT / dt) I before the stress update of linear_elastic bodies.
   void after_g2p(StepContext<Dim>& ctx) override {
+    step_expansion_work_ = ExactSum{};
+    book_expansion_work(ctx);  // the half of the trapezoid at the stress of the start of the step
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
       const Real alpha = setup_.bodies[b].expansion;
       if (alpha == 0) continue;
@@ -238,9 +242,37 @@ class HeatConduction final : public Module<Dim> {
         }
       }
     }
+    book_expansion_work(ctx);  // the half at the updated stress
+    if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(&step_expansion_work_, 1));
+    expansion_work_ += step_expansion_work_.value();
   }
 
+  /// J: the work the thermal strain did on the mechanics since t = 0 (eq. 5.26), W_T = -sum over steps and particles
+  /// of V tr(sigma) alpha dT (trapezoidal in sigma over the step; the 3D trace: the out-of-plane thermal strain works
+  /// too). Heat that becomes strain energy (a constrained body heated) enters the mechanical books through it, so
+  /// the energy sentinel and the run's energy change count it as supplied: a negative removed energy (eq. 8.4).
+  /// linear_elastic only (ThermalExpansion::by_heat_conduction); the plasticity models' expansion in their update
+  /// is not booked.
+  Real removed_energy() const override { return -expansion_work_; }
+  Real expansion_work() const { return expansion_work_; }
+
  private:
+  /// step_expansion_work_ += -1/2 sum_p V_p tr(sigma_p) alpha dT_p over the expanding bodies (this rank's particles).
+  void book_expansion_work(const StepContext<Dim>& ctx) {
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
+      const Real alpha = setup_.bodies[b].expansion;
+      if (alpha == 0) continue;
+      const auto& p = ctx.bodies[b].particles;
+      const auto& dT = p.field(keys::temperature_increment);
+      const Real* hoop = Coords::axisymmetric ? axisym::hoop_stretch_of(p) : nullptr;
+      for (Index i = 0; i < p.size(); ++i) {
+        const Real V = p.volume0[i] * axisym::volume_ratio(p, i, hoop);
+        const Real trace = p.stress[i].c[0] + p.stress[i].c[1] + p.stress[i].c[2];
+        step_expansion_work_ += -0.5 * V * trace * alpha * dT[i];
+      }
+    }
+  }
+
   /// Per node: C_I (J/K), sum phi m c T (J), Q_I (W), T_I (K; T_I^{t+dt} after the step), T~_I (K) and, for the
   /// contact conductance, a_I = sum V_p grad phi_I (m^2 per unit thickness in 2D; the body's boundary share).
   struct NodalHeat {
@@ -704,10 +736,12 @@ class HeatConduction final : public Module<Dim> {
   bool flux_ready_ = false;
   bool interfaces_resolved_ = false;
   Real h_min_ = 1;
-  NodalHeat shared_;               ///< all bodies on one field (perfect contact); with own fields, their sum
-  std::vector<NodalHeat> own_;     ///< per body, only when some pair has a finite contact conductance
-  std::vector<Real> conductance_;  ///< n x n, W/(m^2 K) (+infinity: perfect), from an InterfaceConductance
-  std::vector<Real> gamma_;        ///< scratch: W/m^3 per particle
+  NodalHeat shared_;                ///< all bodies on one field (perfect contact); with own fields, their sum
+  Real expansion_work_ = 0;         ///< J, W_T since t = 0 (expansion_work())
+  ExactSum step_expansion_work_{};  ///< J, this step's, summed between after_g2p and after_stress
+  std::vector<NodalHeat> own_;      ///< per body, only when some pair has a finite contact conductance
+  std::vector<Real> conductance_;   ///< n x n, W/(m^2 K) (+infinity: perfect), from an InterfaceConductance
+  std::vector<Real> gamma_;         ///< scratch: W/m^3 per particle
 };
 
 }  // namespace mpm::thermal
