@@ -223,6 +223,25 @@ Case heat_analysis() {
 #endif
 
 #ifdef MPM_WITH_CONTACT
+/// Contact with its defaults (onset: particle_gap, velocity_transfer: apic; contact/README.md, Defaults): two blocks
+/// stacked at rest under gravity.
+Case contact_defaults() {
+  return {"contact_defaults_stacked",
+          "dimension: 2\n"
+          "grid: {origin: [0, 0], extent: [0.2, 0.3], cell_size: 0.01, boundary: {x_min: slip, x_max: slip, y_min: "
+          "slip}}\n"
+          "materials: {rubber: {model: neo_hookean, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}\n"
+          "bodies:\n"
+          "  - {name: lower, material: rubber, shape: {type: box, min: [0, 0], max: [0.2, 0.1]}}\n"
+          "  - {name: upper, material: rubber, shape: {type: box, min: [0, 0.1], max: [0.2, 0.2]}}\n"
+          "solver: {scheme: musl, cfl: 0.5, gravity: [0, -9.81], end_time: 0.06}\n"
+          "contact: {force_file: forces.csv, force_interval: 0.005}\n"
+          "output:\n"
+          "  interval: 0.02\n"
+          "  fields: [velocity, stress]\n" +
+              checkpoint_at(0.03)};
+}
+
 Case contact_rigid() {
   return {"contact_rigid_platen",
           "dimension: 2\n"
@@ -331,6 +350,7 @@ std::vector<Case> cases() {
 #endif
 #ifdef MPM_WITH_CONTACT
   all.push_back(contact_rigid());
+  all.push_back(contact_defaults());
 #endif
 #if defined(MPM_WITH_THERMAL) && defined(MPM_WITH_CONTACT)
   all.push_back(heat_analysis());

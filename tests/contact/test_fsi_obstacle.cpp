@@ -136,8 +136,10 @@ TEST(FsiObstacle, RigidObstacleLosesInTheWaterNotInTheContact) {
 // in a tank twice as high: 6.7%), and that energy is lost where the spray strikes next: the ceiling, the obstacle's
 // foot (examples/14_fsi_obstacle/README.md, "The spray of the far wall"). Here at 10 cells with the example's 3 water
 // particles per cell per axis, every step sampled: before the impact no water particle is faster than 5 m/s
-// (measured 4.41 m/s), after it the fastest is 1.4 times as fast and the water faster than 5 m/s holds 4.3% of E0
-// (at 0.361 s), all of it at the far wall.
+// (measured 3.92 m/s), after it the fastest is 1.5 times as fast and the water faster than 5 m/s holds 1.0% of E0
+// (at 0.340 s), all of it at the far wall. (With the first form of APIC's light-node rule, m_I < 0.1 m_p, which with
+// 3 particles per cell per axis let nodes up to 0.967 h outside the water enter C_p: 4.41 m/s, 1.42x, 4.3% at
+// 0.361 s; docs/theory.md §2.)
 TEST(FsiObstacle, JetImpactOnTheFarWallThrowsFastSpray) {
   std::string yaml = fill(fsi, {{"TRANSFER", "polypic"}, {"OBSTACLE", elastic}, {"CONTACT", clamped}});
   const std::string two = "max: [0.146, 0.292]}, particles_per_cell: 2}";
@@ -167,10 +169,10 @@ TEST(FsiObstacle, JetImpactOnTheFarWallThrowsFastSpray) {
       "0.32 s %.3f m/s, after %.3f m/s; kinetic energy of the water faster than %.0f m/s: peak %.4f of E0 at "
       "t = %.4f s, %.3f of it at x > 0.5 m\n",
       before, after, fast, spray_peak / e0, spray_time, spray_near_wall / spray_peak);
-  EXPECT_LT(before, fast);                       // measured 4.41 m/s
-  EXPECT_GT(after, 1.25 * before);               // measured 6.26 m/s, 1.42x
-  EXPECT_GT(spray_peak / e0, 0.02);              // measured 0.0428
-  EXPECT_GT(spray_time, 0.33);                   // measured 0.3606 s
+  EXPECT_LT(before, fast);                       // measured 3.92 m/s
+  EXPECT_GT(after, 1.25 * before);               // measured 5.95 m/s, 1.52x
+  EXPECT_GT(spray_peak / e0, 0.005);             // measured 0.0101
+  EXPECT_GT(spray_time, 0.33);                   // measured 0.3400 s
   EXPECT_GT(spray_near_wall / spray_peak, 0.9);  // measured 1.000: all of it at the far wall
 }
 

@@ -40,7 +40,7 @@ constexpr std::array<EnergyHint, 12> rows{{
      "does not gain it; with 2 particles per cell per axis it loses more: use 3 or more",
      "the dam break (examples/12) with APIC and hats, to 1.7 s: energy change -4.85% (MUSL), -5.02% (USF), never above "
      "E0; at 35/140/280 cells instead of 70 (MUSL): -13.4%/-2.80%/-3.23%, density warnings only at the wall impact; "
-     "with 3/6/8 particles per cell per axis instead of 2: -3.86%/-3.08%/-2.84%, and -1.72% at 140 cells with 3 "
+     "with 3/6/8 particles per cell per axis instead of 2: -3.86%/-3.08%/-2.84%, and -1.76% at 140 cells with 3 "
      "(examples/12_dam_break/apic.yaml); USL inverts a particle at 0.065 s, "
      "FLIP with USL at 0.066 s; before the fix MUSL inverted at 0.093 s, USF at 0.068 s (physics/fluids/README.md, "
      "Limits)"},
@@ -55,7 +55,7 @@ constexpr std::array<EnergyHint, 12> rows{{
      "never above E0 (APIC -13.4%/-4.85%/-2.80%), -0.63% at 70 cells with 3 particles per cell per axis; the FSI "
      "example (examples/14) with hats: a spray particle inverts at 0.227 s (cfl 0.5), at cfl 0.25 -25.3% (APIC "
      "-46.1%); its contact set-up (contact.yaml: slip floor, cavitation_pressure 0, volumetric_deformation 1, 3 "
-     "particles per cell per axis) runs to 0.5 s, no inverted particle, -13.3% (APIC -17.7%) at 40 cells: the water "
+     "particles per cell per axis) runs to 0.5 s, no inverted particle, -13.5% (APIC -17.7%) at 40 cells: the water "
      "alone in that tank loses -1.9% (APIC -4.7%; with 2 per axis -5.7% and -10.9%), a rigid obstacle adds what a grid "
      "wall at its place costs, the elastic one inelastic contact corrections where water and obstacle approach, not "
      "the normals (examples/14 README, \"Where the rest goes\"), and 10 of the 13.3 points follow the jet's strike on "

@@ -14,7 +14,6 @@
 #include "mpm/io/collective_write.hpp"
 #include "mpm/io/pvtu_writer.hpp"
 #include "mpm/output/particle_domain_mesh.hpp"
-#include "mpm/simulation/local_damping_book.hpp"
 
 namespace mpm {
 namespace {
@@ -42,23 +41,11 @@ const std::vector<std::string> eroded_energy_columns{
     "total_energy",   "momentum_x",    "momentum_y",      "momentum_z",
     "mass",           "plastic_work",  "thermal_energy",  "particles"};
 
-/// With `solver.damping`: the energy the local damping dissipated since t = 0 (LocalDampingBook, docs/theory.md
-/// eq. 2.75). total_energy + damped_energy is E(0) + W.
-const std::string damped_energy_column = "damped_energy";
-
 /// The run's failure module when a material erodes, else null.
 template <int Dim>
 const FailureModule<Dim>* erosion_of(const Simulation<Dim>& sim) {
   for (const auto& m : sim.modules())
     if (const auto* f = dynamic_cast<const FailureModule<Dim>*>(m.get()); f && f->erodes()) return f;
-  return nullptr;
-}
-
-/// The run's damping books (`solver.damping`), else null.
-template <int Dim>
-const LocalDampingBook<Dim>* damping_of(const Simulation<Dim>& sim) {
-  for (const auto& m : sim.modules())
-    if (const auto* d = dynamic_cast<const LocalDampingBook<Dim>*>(m.get())) return d;
   return nullptr;
 }
 
@@ -70,11 +57,14 @@ std::vector<std::string> energy_columns(const Simulation<Dim>& sim) {
       columns.push_back(fmt::format("outflow_{}_{}", face_names[static_cast<std::size_t>(book.face)], c));
   if (erosion_of(sim))
     for (const auto& c : eroded_energy_columns) columns.push_back("eroded_" + c);
-  if (damping_of(sim)) columns.push_back(damped_energy_column);
+  // the modules' own books (Module::energy_column): local damping's damped_energy, the thermal strain's work
+  for (const auto& m : sim.modules())
+    if (!m->energy_column().empty()) columns.emplace_back(m->energy_column());
   return columns;
 }
 
-/// The columns of the energy.csv a restart continues: the base ones and the outflow and eroded ones its header has.
+/// The columns of the energy.csv a restart continues: the base ones and the outflow, eroded and modules' ones its
+/// header has (a restart continues the same scene: every column after the base ones is one of those).
 std::vector<std::string> continued_energy_columns(const io::FileMark& mark) {
   std::vector<std::string> columns = base_energy_columns;
   std::ifstream in(mark.path);
@@ -84,9 +74,7 @@ std::vector<std::string> continued_energy_columns(const io::FileMark& mark) {
   for (std::size_t k = 0; begin <= header.size(); ++k) {
     const std::size_t end = std::min(header.find(',', begin), header.size());
     const std::string name = header.substr(begin, end - begin);
-    if (k >= base_energy_columns.size() &&
-        (name.rfind("outflow_", 0) == 0 || name.rfind("eroded_", 0) == 0 || name == damped_energy_column))
-      columns.push_back(name);
+    if (k >= base_energy_columns.size()) columns.push_back(name);
     begin = end + 1;
   }
   return columns;
@@ -360,7 +348,8 @@ std::vector<double> OutputWriter<Dim>::energy_row(const Simulation<Dim>& sim) co
                {out.kinetic, out.strain, out.strain + out.thermal, out.gravity, out.total(), out.momentum[0],
                 out.momentum[1], out.momentum[2], out.mass, out.plastic_work, out.thermal, book.particle_count()});
   }
-  if (const auto* damping = damping_of(sim)) row.push_back(damping->dissipated());  // the same on every rank
+  for (const auto& m : sim.modules())  // the same on every rank
+    if (!m->energy_column().empty()) row.push_back(m->energy_column_value());
   return row;
 }
 

@@ -74,10 +74,11 @@ class Musl final : public ShapedScheme<Dim, Shape> {
           // last pass from the re-mapped v^{t+dt}, like L_p.
           p.v[i] = v_pic;
           const auto trial = [&](Index n) { return Vec<Dim>(vel[n].updated); };
-          const Mat<Dim> C = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic, trial);
+          const Real light = kernels::apic_light_node_mass<Dim, Coords>(p, i, g);
+          const Mat<Dim> C = kernels::affine_matrix_of_trial(st, node, light, v_pic, trial);
           if constexpr (std::is_same_v<Shape, LinearHat>) {
             if (poly) {  // PolyPIC: the higher modes from the same trial velocities
-              const keys::PolyModes<Dim> modes = kernels::polypic_modes_of_trial(st, g, node, p.mass[i], v_pic, trial);
+              const keys::PolyModes<Dim> modes = kernels::polypic_modes_of_trial(st, g, node, light, v_pic, trial);
               for (int a = 0; a < st.count; ++a) {
                 const Vec<Dim> r = st.node_offset(a);
                 node[st.node[a]].momentum +=

@@ -113,21 +113,39 @@ Mat<Dim> affine_matrix(const Stencil<Dim, Shape>& st, NodeVelocityOf&& velocity_
   }
 }
 
-/// A node lighter than this fraction of a particle's mass is "nearly empty" for APIC with hats (below).
-inline constexpr Real apic_light_node_fraction = 0.1;
+/// A node lighter than this fraction of a surface layer of particles is "nearly empty" for APIC with hats
+/// (apic_light_node_mass, affine_matrix_of_trial).
+inline constexpr Real apic_light_node_fraction = 0.05;
+
+/// The mass below which a node is nearly empty for APIC with hats: apic_light_node_fraction of a surface layer of
+/// particles, m_p n_face, with n_face = (h^dim / V_p0)^((dim-1)/dim) the particles per cell face (axisymmetric: the
+/// meridian area V_p0 / (2 pi r_p) for V_p0). A node a distance d outside a flat face of such particles weighs
+/// (1 - d/h) n_face m_p, so the rule takes the nodes with 1 - d/h < 0.05 in any dimension and at any particle
+/// density. (A threshold of 0.1 m_p, the same in every dimension, takes them in 2D with 2 particles per cell per axis
+/// but only below 0.025 in 3D and 0.011 with 3 per axis: a 10 mm steel cube striking a wall at 50 m/s then inverted a
+/// particle of its top face at 22 us, hats, MUSL; docs/theory.md §2, velocity transfers.)
+template <int Dim, class Coords = CartesianCoordinates>
+Real apic_light_node_mass(const ParticleSet<Dim>& p, Index i, const GridGeometry<Dim>& g) {
+  Real size = p.volume0[i];
+  if constexpr (Coords::axisymmetric) size = axisym::meridian_area(size, p.x[i][0]);
+  const Real per_cell = g.h.prod() / size;
+  Real per_face = 1;
+  if constexpr (Dim == 2) per_face = std::sqrt(per_cell);
+  if constexpr (Dim == 3) per_face = std::cbrt(per_cell) * std::cbrt(per_cell);
+  return apic_light_node_fraction * p.mass[i] * per_face;
+}
 
 /// C_p from the trial velocities v~_I = v_I^t + dt (f_I/m_I + g) (docs/theory.md §2, velocity transfers). For hats a
 /// node enters C_p = sum v_I (x) grad phi_I with the weight grad phi_I, not phi_I: a nearly empty node at a free
 /// surface (m_I = phi_I m_p -> 0) brings its trial velocity dt f_I/m_I unfiltered, the small-mass blow-up of
-/// eq. 2.62 that PIC/FLIP see only through phi_I. Such a node (m_I < apic_light_node_fraction m_p) enters
-/// C_p with the particle's own velocity v_p, i.e. without a gradient. Other shape functions weigh it by phi_I
-/// in B_p D_p^-1 and are left unchanged.
+/// eq. 2.62 that PIC/FLIP see only through phi_I. Such a node (m_I < light_mass, apic_light_node_mass) enters C_p
+/// with the particle's own velocity v_p, i.e. without a gradient. Other shape functions weigh it by phi_I in
+/// B_p D_p^-1 and are left unchanged.
 template <int Dim, class Shape, class NodeVelocityOf>
-Mat<Dim> affine_matrix_of_trial(const Stencil<Dim, Shape>& st, const NodeRecord<Dim>* node, Real particle_mass,
+Mat<Dim> affine_matrix_of_trial(const Stencil<Dim, Shape>& st, const NodeRecord<Dim>* node, Real light_mass,
                                 const Vec<Dim>& v_p, NodeVelocityOf&& velocity_of) {
   if constexpr (std::is_same_v<Shape, LinearHat>) {
-    const Real light = apic_light_node_fraction * particle_mass;
-    return affine_matrix(st, [&](Index n) { return node[n].mass < light ? v_p : Vec<Dim>(velocity_of(n)); });
+    return affine_matrix(st, [&](Index n) { return node[n].mass < light_mass ? v_p : Vec<Dim>(velocity_of(n)); });
   } else {
     return affine_matrix(st, velocity_of);
   }
@@ -200,10 +218,9 @@ keys::PolyModes<Dim> polypic_modes(const Stencil<Dim, Shape>& st, const GridGeom
 /// affine_matrix_of_trial (its trial velocity dt f_I/m_I would enter with the weight 1/h^|S|, not phi_I).
 template <int Dim, class Shape, class NodeVelocityOf>
 keys::PolyModes<Dim> polypic_modes_of_trial(const Stencil<Dim, Shape>& st, const GridGeometry<Dim>& g,
-                                            const NodeRecord<Dim>* node, Real particle_mass, const Vec<Dim>& v_p,
+                                            const NodeRecord<Dim>* node, Real light_mass, const Vec<Dim>& v_p,
                                             NodeVelocityOf&& velocity_of) {
-  const Real light = apic_light_node_fraction * particle_mass;
-  return polypic_modes(st, g, [&](Index n) { return node[n].mass < light ? v_p : Vec<Dim>(velocity_of(n)); });
+  return polypic_modes(st, g, [&](Index n) { return node[n].mass < light_mass ? v_p : Vec<Dim>(velocity_of(n)); });
 }
 
 /// P2G (eqs 2.40, 2.43, 2.36): nodal mass, momentum and internal force f_I = -sum V_p sigma_p grad phi.

@@ -61,9 +61,10 @@ class Usl final : public ShapedScheme<Dim, Shape> {
       if (affine) {  // APIC: PIC velocity plus the affine matrix (PolyPIC: and the higher modes)
         p.v[i] = v_pic;
         const auto trial = [&](Index n) { return Vec<Dim>(vel[n].updated); };
-        affine[i] = kernels::affine_matrix_of_trial(st, node, p.mass[i], v_pic, trial);
+        const Real light = kernels::apic_light_node_mass<Dim, Coords>(p, i, g);
+        affine[i] = kernels::affine_matrix_of_trial(st, node, light, v_pic, trial);
         if constexpr (std::is_same_v<Shape, LinearHat>)
-          if (poly) poly[i] = kernels::polypic_modes_of_trial(st, g, node, p.mass[i], v_pic, trial);
+          if (poly) poly[i] = kernels::polypic_modes_of_trial(st, g, node, light, v_pic, trial);
       } else {
         p.v[i] = alpha * (p.v[i] + dv) + (1 - alpha) * v_pic;
       }

@@ -29,6 +29,8 @@ class LocalDampingBook final : public Module<Dim> {
   void on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) override;
   /// J: D, the energy dissipated by the damping since t = 0 (the same on every rank).
   Real removed_energy() const override { return dissipated_; }
+  /// energy.csv's `damped_energy`: total_energy + damped_energy is E(0) + W.
+  std::string_view energy_column() const override { return "damped_energy"; }
   Real dissipated() const { return dissipated_; }
   Real alpha() const { return alpha_; }
   void save_state(StateArchive& archive, const std::string& prefix) const override;

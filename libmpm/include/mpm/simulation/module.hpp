@@ -65,6 +65,11 @@ class Module {
   /// (erosion), or dissipated outside the audit (local damping, eq. 2.75), the same on every rank; the energy sentinel
   /// adds it to its balance (docs/theory.md eq. 8.4).
   virtual Real removed_energy() const { return 0; }
+  /// The energy.csv column of the module's own books (local damping: `damped_energy`; the thermal strain's work:
+  /// `thermal_expansion_work`), empty when it keeps none; written after the outflow and eroded columns.
+  virtual std::string_view energy_column() const { return {}; }
+  /// J, that column's value, the same on every rank: by default removed_energy() (what the module took out).
+  virtual Real energy_column_value() const { return removed_energy(); }
   /// What the module carries from one step to the next outside the particle fields (positions of moving
   /// planes, force sums, the length of its CSV file, ...), as entries `prefix`NAME (state_archive.hpp): for
   /// checkpoints and for the stability guard's snapshots. A module whose state is all in particle fields

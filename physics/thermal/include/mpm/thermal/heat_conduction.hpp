@@ -254,6 +254,10 @@ class HeatConduction final : public Module<Dim> {
   /// linear_elastic only (ThermalExpansion::by_heat_conduction); the plasticity models' expansion in their update
   /// is not booked.
   Real removed_energy() const override { return -expansion_work_; }
+  /// energy.csv's `thermal_expansion_work` (J, W_T) when a body expands: total_energy - thermal_expansion_work is
+  /// E(0) + W.
+  std::string_view energy_column() const override { return expands_ ? "thermal_expansion_work" : ""; }
+  Real energy_column_value() const override { return expansion_work_; }
   Real expansion_work() const { return expansion_work_; }
 
  private:
