@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <string>
+
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/yaml_reader.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
@@ -30,6 +32,12 @@ std::unique_ptr<Scheme<Dim>> make_heat_only(const SceneDescription& scene) {
   return scheme;
 }
 
+/// The schemes that run the coupled analysis, for the refusals: those with an explicit momentum update (their traits
+/// take local damping), named by the registry.
+std::string coupled_schemes() {
+  return scheme_names_where([](const SchemeTraits& t) { return t.local_damping.yes; });
+}
+
 /// The scene keys a heat analysis cannot honour, refused where they are given: it needs the `thermal:` section,
 /// and its bodies neither move nor strain, so a thermal expansion or a gravity would be silently ignored.
 void check_heat_scene(const io::YamlReader& reader, const io::YamlMap& top, const SceneDescription& scene) {
@@ -41,15 +49,15 @@ void check_heat_scene(const io::YamlReader& reader, const io::YamlMap& top, cons
     if (const auto it = md.parameters.find("thermal_expansion"); it != md.parameters.end() && it->second != 0)
       throw SceneError(md.where, "materials." + name + ".thermal_expansion",
                        fmt::format("scheme: heat keeps the bodies still, so the thermal expansion of material '{}' "
-                                   "would be ignored: remove it, or take an explicit scheme (musl, usl, usf, tlmpm) "
-                                   "for the coupled analysis",
-                                   name));
+                                   "would be ignored: remove it, or take an explicit scheme ({}) for the coupled "
+                                   "analysis",
+                                   name, coupled_schemes()));
   if (const auto gravity = solver.find("gravity"))
     for (double g : scene.solver.gravity)
       if (g != 0)
-        reader.fail(*gravity,
-                    "scheme: heat keeps the bodies still, so gravity would be ignored: remove it, or take "
-                    "an explicit scheme (musl, usl, usf, tlmpm) for the coupled analysis");
+        reader.fail(*gravity, fmt::format("scheme: heat keeps the bodies still, so gravity would be ignored: remove "
+                                          "it, or take an explicit scheme ({}) for the coupled analysis",
+                                          coupled_schemes()));
 }
 
 }  // namespace
