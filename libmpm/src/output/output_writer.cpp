@@ -11,6 +11,7 @@
 
 #include "mpm/core/due_time.hpp"
 #include "mpm/failure/failure_module.hpp"
+#include "mpm/grid/node_volume.hpp"
 #include "mpm/io/collective_write.hpp"
 #include "mpm/io/pvtu_writer.hpp"
 #include "mpm/output/particle_domain_mesh.hpp"
@@ -266,10 +267,11 @@ io::ImageGrid OutputWriter<Dim>::grid_image(const Simulation<Dim>& sim, const io
     image.spacing[d] = g.geometry.h[d];
     image.nodes[d] = g.geometry.nodes[d];
   }
-  io::FieldArray mass{"mass", 1, {}}, velocity{"velocity", 3, {}}, force{"force", 3, {}};
+  io::FieldArray mass{"mass", 1, {}}, density{"density", 1, {}}, velocity{"velocity", 3, {}}, force{"force", 3, {}};
   const VecU<Dim> none = VecU<Dim>::Zero();
   for (Index n = 0; n < g.size(); ++n) {
     mass.values.push_back(g.node[n].mass);
+    density.values.push_back(g.node[n].mass / node_volume(g.geometry, n));
     // A node without mass has no velocity: zero there, whatever a face condition wrote. Kernels with sparse tiles
     // write a face's nodes only where particles reach (GridBoundary::apply), so without this the file would show
     // the prescribed velocities of the empty face nodes some particles once reached and not of the others.
@@ -278,7 +280,7 @@ io::ImageGrid OutputWriter<Dim>::grid_image(const Simulation<Dim>& sim, const io
   }
   if (g.geometry.coordinates == Coordinates::axisymmetric)
     velocity.component_names = force.component_names = io::cylindrical_component_names(3);
-  image.fields = {mass, velocity, force};
+  image.fields = {mass, density, velocity, force};
   image.field_data = data;
   for (const auto& [name, values] : g.node_fields)  // modules' nodal fields (thermal: temperature)
     if (static_cast<Index>(values.size()) == g.size()) image.fields.push_back({name, 1, values});

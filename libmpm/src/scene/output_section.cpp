@@ -68,7 +68,11 @@ const std::vector<io::KeySpec>& output_keys() {
       {.name = "grid",
        .type = KeyType::boolean,
        .default_value = false,
-       .description = "also write the grid at each frame"},
+       .description =
+           "also write the grid at each frame (PREFIX_grid_NNNNNN.vti): nodal `mass`, `density` (m_I / V_I, "
+           "V_I the volume a node stands for: a fluid's free surface is its contour at half the fluid's "
+           "density, physics/fluids/README.md), `velocity`, `force` and the modules' nodal fields; the first "
+           "frame's grid is empty (no step yet)"},
       {.name = "histories",
        .type = KeyType::list,
        .description = "probes, reactions, energies, extents: one CSV each, see [histories](#histories)",
