@@ -16,6 +16,7 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <system_error>
 
 #include "mpm/app/checkpoint_command.hpp"
 #include "mpm/app/diff_command.hpp"
@@ -59,6 +60,22 @@ std::string check_end_time(const std::string& text) {
 /// "rank R: ", the prefix of a message that one rank of a distributed run prints alone.
 std::string fmt_rank(int rank) { return "rank " + std::to_string(rank) + ": "; }
 
+/// CLI11's PositiveNumber / NonNegativeNumber with a message a user can read: "must be > 0, got 0" rather than a
+/// range up to 1.8e308 printed in full.
+CLI::Validator number_at_least_zero(bool strictly) {
+  return CLI::Validator(
+      [strictly](std::string& text) -> std::string {
+        double value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size()) return "expected a number, got '" + text + "'";
+        if (strictly ? value > 0 : value >= 0) return "";
+        return std::string("must be ") + (strictly ? "> 0" : ">= 0") + ", got " + text;
+      },
+      strictly ? "POSITIVE" : "NONNEGATIVE");
+}
+const CLI::Validator positive_number = number_at_least_zero(true);
+const CLI::Validator non_negative_number = number_at_least_zero(false);
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,13 +99,13 @@ int main(int argc, char** argv) {
       ->add_option("--threads", threads,
                    "number of threads (default: all cores; under mpirun: per rank, the node's cores shared by its "
                    "ranks)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number);
   int rebalance_every = 50;
   run_cmd
       ->add_option("--rebalance-every", rebalance_every,
                    "under mpirun: steps between balance checks; the ranks' boxes of tiles are dealt anew when the most "
                    "loaded rank exceeds the mean by more than 10% (0: never; results do not depend on it)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number);
   run_cmd->add_flag(
       "--profile", profile,
       "time the phases of every step (P2G, grid update, G2P, stress update, halo, migrate, rebalance, sort, "
@@ -118,7 +135,7 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--test-kill-in-checkpoint", test_kill_in_checkpoint,
                    "test only: SIGKILL halfway through writing the N-th checkpoint")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number)
       ->group("");
   bool exchange_every_scatter = false;
   run_cmd
@@ -142,19 +159,18 @@ int main(int argc, char** argv) {
       ->add_option("--ranks", ranks,
                    "also print what a distributed run on N ranks would hold: tiles, particles per rank, the "
                    "largest useful rank count, ghost nodes and halo bytes per step (docs/distributed.md)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number);
   ParticlesOptions particles;  // `mpm particles`: particle sets of meshes, images and scenes for ParaView
   auto* particles_cmd = cli.add_subcommand("particles", "write the particles of a mesh, an image or a scene (.vtu)");
   particles_cmd->add_option("input", particles.input, "mesh (.stl .obj .off .ply) or image (.png .pgm .vti)");
   particles_cmd->add_option("--scene", particles.scene, "scene: its grid for INPUT, or all its bodies without INPUT");
-  particles_cmd->add_option("--spacing", particles.spacing, "grid cell size around INPUT, m")
-      ->check(CLI::PositiveNumber);
+  particles_cmd->add_option("--spacing", particles.spacing, "grid cell size around INPUT, m")->check(positive_number);
   particles_cmd->add_option("--ppc", particles.particles_per_cell, "particles per cell per axis (default 2)");
-  particles_cmd->add_option("--pixel-size", particles.pixel_size, "image pixel size, m")->check(CLI::PositiveNumber);
+  particles_cmd->add_option("--pixel-size", particles.pixel_size, "image pixel size, m")->check(positive_number);
   particles_cmd->add_option("--threshold", particles.threshold, "image: pixels with a value >= threshold");
   particles_cmd->add_option("--label", particles.label, "image: pixels with this value");
   particles_cmd->add_option("--section", particles.section, "mesh: 2D particles of the plane z = section, m");
-  particles_cmd->add_option("--scale", particles.scale, "mesh: factor on the coordinates")->check(CLI::PositiveNumber);
+  particles_cmd->add_option("--scale", particles.scale, "mesh: factor on the coordinates")->check(positive_number);
   particles_cmd->add_option("--domains", particles.domains,
                             "also write CPDI domains to NAME_domains.vtu: lattice or conforming (INPUT), scene "
                             "(the scene's shape function)");
@@ -180,8 +196,8 @@ int main(int argc, char** argv) {
   diff_cmd->add_option("run_a", diff_a, "first output directory")->required();
   diff_cmd->add_option("run_b", diff_b, "second output directory")->required();
   diff_cmd->add_option("--tolerance", diff.relative, "relative tolerance: |a-b| <= REL * max|a| of the field (0)")
-      ->check(CLI::NonNegativeNumber);
-  diff_cmd->add_option("--absolute", diff.absolute, "absolute tolerance (0)")->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number);
+  diff_cmd->add_option("--absolute", diff.absolute, "absolute tolerance (0)")->check(non_negative_number);
   VerifyOptions verify;  // `mpm verify`: solution verification at several resolutions
   std::string verify_output;
   auto* verify_cmd = cli.add_subcommand("verify",
@@ -197,7 +213,7 @@ int main(int argc, char** argv) {
       ->required();
   verify_cmd->add_option("--order", verify.order, "assumed order of convergence (needed with --refine 2)");
   verify_cmd->add_option("-o,--output", verify_output, "report directory (default: verify)");
-  verify_cmd->add_option("--threads", threads, "number of threads (default: all cores)")->check(CLI::PositiveNumber);
+  verify_cmd->add_option("--threads", threads, "number of threads (default: all cores)")->check(positive_number);
   verify_cmd->add_flag(
       "--no-plot", [&](std::int64_t) { verify.plot = false; }, "do not draw verify.png");
   verify_cmd->add_flag("--finest", verify.scene_is_finest,

@@ -176,8 +176,8 @@ std::string write_scene(const ParticlesOptions& o, const SceneDescription& scene
   if (!o.domains.empty()) io::write_cells_vtu(domains_path(o.output), particle_domain_mesh(sim->bodies()));
   std::string bodies = body_summary<Dim>(*sim);  // one line per body
   bodies.pop_back();                             // the caller ends the text
-  return fmt::format("{}: {} particles in {} bodies ({}D), volume {:.10g} m^{}\n{}", o.output.string(), cloud.size(),
-                     sim->bodies().size(), Dim, total, Dim, bodies);
+  return fmt::format("{}: {} particles in {} {} ({}D), volume {:.10g} m^{}\n{}", o.output.string(), cloud.size(),
+                     sim->bodies().size(), sim->bodies().size() == 1 ? "body" : "bodies", Dim, total, Dim, bodies);
 }
 
 std::string run(const ParticlesOptions& o, std::ostream& err) {

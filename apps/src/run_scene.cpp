@@ -70,15 +70,16 @@ void check(const SceneDescription& scene, std::ostream& out, int ranks) {
     fmt::print(out, "warning: {}\n", w);
   const Real dt = sim->next_time_step();
   fmt::print(out,
-             "{}: valid. {}D{}, {} particles in {} bodies, {} nodes; {} with {} functions; dt = {:.6g} s "
-             "(stable bound {:.6g} s, {}); about {} steps to t = {:.6g} s\n",
+             "{}: valid. {}D{}, {} particles in {} {}, {} nodes; {} with {} functions; dt = {:.6g} s "
+             "(stable bound {:.6g} s, {}); about {} steps to t = {:.6g} s{}\n",
              scene.file, Dim,
              scene.grid.coordinates == Coordinates::axisymmetric
                  ? " axisymmetric (x = r, y = z; masses, energies and forces per full revolution)"
                  : "",
-             sim->particle_count(), sim->bodies().size(), sim->grid().size(), scene.solver.scheme_name(),
-             scene.solver.shape_function, dt, sim->stable_time_step(), sim->time_step_limiter(),
-             static_cast<long long>(std::ceil(scene.solver.end_time / dt)), scene.solver.end_time);
+             sim->particle_count(), sim->bodies().size(), sim->bodies().size() == 1 ? "body" : "bodies",
+             sim->grid().size(), scene.solver.scheme_name(), scene.solver.shape_function, dt, sim->stable_time_step(),
+             sim->time_step_limiter(), static_cast<long long>(std::ceil(scene.solver.end_time / dt)),
+             scene.solver.end_time, scene.solver.dt ? "" : " at this first dt (the adaptive step follows the run)");
   fmt::print(out, "{}", body_summary<Dim>(*sim));
   const MemoryEstimate memory = estimate_memory<Dim>(scene, sim->grid().geometry, true);
   const MemoryBudget budget = available_memory();

@@ -11,6 +11,7 @@
 
 #include "mpm/boundary/face_condition_kind.hpp"
 #include "mpm/contact/multi_velocity_contact.hpp"
+#include "mpm/core/closest_name.hpp"
 #include "mpm/core/expression.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/spec_map.hpp"
@@ -38,7 +39,8 @@ std::string body_name(const YamlReader& reader, const YamlValue& value, const Sc
   if (body_index(scene, name) < 0) {
     std::vector<std::string> names;
     for (const auto& body : scene.bodies) names.push_back(body.name);
-    reader.fail(value, fmt::format("unknown body '{}'; bodies: {}", name, fmt::join(names, ", ")));
+    reader.fail(
+        value, fmt::format("unknown body '{}'{}; bodies: {}", name, did_you_mean(name, names), fmt::join(names, ", ")));
   }
   return name;
 }

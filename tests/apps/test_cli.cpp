@@ -51,9 +51,14 @@ TEST(Cli, BadCommandLineExitsWithTwo) {
   r = mpm("run " + (data / "good_scene_2d.yaml").string() + " --threads 0", dir);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("must be > 0, got 0"), std::string::npos) << r.err;  // not a range up to 1.8e308
+  EXPECT_LT(r.err.size(), 200u) << r.err;
   r = mpm("run " + (data / "good_scene_2d.yaml").string() + " --rebalance-every -1", dir);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--rebalance-every"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("must be >= 0, got -1"), std::string::npos) << r.err;
+  r = mpm("run " + (data / "good_scene_2d.yaml").string() + " --end-time 1e-3x", dir);
+  EXPECT_EQ(r.status, 2);
   fs::remove_all(dir);
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include "mpm/body_shape/shape_kind.hpp"
+#include "mpm/core/closest_name.hpp"
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/scene_limits.hpp"
 #include "mpm/scene/spec_map.hpp"
@@ -114,8 +115,8 @@ BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std:
   if (!scene.materials.count(body.material)) {
     std::vector<std::string> defined;
     for (const auto& [name, description] : scene.materials) defined.push_back(name);
-    reader.fail(material,
-                fmt::format("unknown material '{}'; defined materials: {}", body.material, fmt::join(defined, ", ")));
+    reader.fail(material, fmt::format("unknown material '{}'{}; defined materials: {}", body.material,
+                                      did_you_mean(body.material, defined), fmt::join(defined, ", ")));
   }
 
   const YamlValue shape = map.required("shape");

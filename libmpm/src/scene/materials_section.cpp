@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpm/core/closest_name.hpp"
 #include "mpm/materials/material_registry.hpp"
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/spec_map.hpp"
@@ -39,7 +40,8 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
   material.model = reader.string(model_key);
   const MaterialModel* model = find_material_model(material.model);
   if (!model)
-    reader.fail(model_key, fmt::format("unknown material model '{}'; valid models: {}", material.model,
+    reader.fail(model_key, fmt::format("unknown material model '{}'{}; valid models: {}", material.model,
+                                       did_you_mean(material.model, material_model_names()),
                                        fmt::join(material_model_names(), ", ")));
   const std::vector<ParameterSpec> parameters = material_parameters(*model);
   std::vector<std::string> keys;

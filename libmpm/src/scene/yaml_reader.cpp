@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "mpm/core/closest_name.hpp"
 #include "mpm/core/expression.hpp"
 #include "mpm/scene/scene_error.hpp"
 
@@ -90,7 +91,9 @@ std::string YamlReader::choice(const YamlValue& value, const std::vector<std::st
   const bool ok =
       value.node.IsScalar() && std::find(allowed.begin(), allowed.end(), value.node.Scalar()) != allowed.end();
   if (!ok)
-    fail(value, fmt::format("invalid value {}; valid values: {}", describe(value.node), fmt::join(allowed, ", ")));
+    fail(value, fmt::format("invalid value {}{}; valid values: {}", describe(value.node),
+                            value.node.IsScalar() ? did_you_mean(value.node.Scalar(), allowed) : "",
+                            fmt::join(allowed, ", ")));
   return value.node.Scalar();
 }
 
@@ -170,9 +173,10 @@ YamlMap::YamlMap(const YamlReader& reader, YamlValue value) : reader_(reader), s
 void YamlMap::allow(const std::vector<std::string>& allowed, std::string_view noun, std::string_view context) const {
   for (const auto& e : entries_)
     if (std::find(allowed.begin(), allowed.end(), e.key) == allowed.end())
-      reader_.fail(
-          e.key_mark, e.value.path,
-          fmt::format("unknown {} '{}'{}; valid {}s: {}", noun, e.key, context, noun, fmt::join(allowed, ", ")));
+      reader_.fail(e.key_mark, e.value.path,
+                   fmt::format("unknown {} '{}'{}{}; valid {}s: {}", noun, e.key, context,
+                               noun == "face" ? "" : did_you_mean(e.key, allowed),  // y_min in 1D: no slip of x_min
+                               noun, fmt::join(allowed, ", ")));
 }
 
 std::optional<YamlValue> YamlMap::find(std::string_view key) const {

@@ -1,5 +1,7 @@
 #include "thermal_section.hpp"
 
+#include <fmt/format.h>
+
 #include "mpm/scene/spec_map.hpp"
 #include "mpm/thermal/thermal_description.hpp"
 
@@ -51,7 +53,8 @@ std::vector<KeySpec> region_keys() {
 void read_boundary(const YamlReader& reader, const YamlValue& value, int dimension, ThermalDescription& thermal) {
   const io::YamlMap faces = reader.map(value);
   const auto& names = GridDescription::face_names;
-  faces.allow(std::vector<std::string>(names.begin(), names.begin() + 2 * dimension));
+  faces.allow(std::vector<std::string>(names.begin(), names.begin() + 2 * dimension), "face",
+              fmt::format(" in {}D", dimension));
   for (int f = 0; f < 2 * dimension; ++f) {
     const auto face = faces.find(names[f]);
     if (!face) continue;
