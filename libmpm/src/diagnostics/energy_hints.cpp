@@ -98,14 +98,17 @@ constexpr std::array<EnergyHint, 12> rows{{
      "-0.013%, volume only +5.2%; examples/14_fsi_obstacle/scene.yaml to 0.5 s: full F +2.7%, volume only +12.8% "
      "(physics/fluids/README.md)"},
     {"contact module (multi-velocity contact)", trigger_energy, [](const HintContext& c) { return c.contact; },
-     "with the defaults (`onset: particle_gap`, `apic`) frictionless contact was measured never above E0 by more "
-     "than 0.05% (collisions, resting, stacking, rigid planes and bodies); `contact.onset: grid` pushes bodies a shape "
-     "function's reach before they touch a plane or rigid body and gains energy there: remove it; friction was not "
-     "measured for energy",
-     "contact/README.md, Defaults (MUSL, 2D): a steel block at 50 m/s on a rigid plane or rigid body, 1 and 0.5 mm "
-     "cells, hats, quadratic and cubic B-splines, cpGIMP: apic and particle_gap never above E0 (vibration energy "
-     "dissipated: -8% to -36% at the end), onset grid +20% to +217%; stacked rubber blocks to 1 s: apic -0.001% to "
-     "-0.045%; Love & Sulsky's colliding cylinders never above E0 with either onset (docs/theory.md §11, \"Energy\")"},
+     "with the defaults (`onset: particle_gap`, `apic`) contact was measured never above E0 by more than 0.05% "
+     "(collisions, resting, stacking, rigid planes and bodies, with and without friction); `contact.onset: grid` "
+     "pushes bodies a shape function's reach before they touch a plane or rigid body and gains energy there: remove "
+     "it",
+     "contact/README.md, Defaults (MUSL, energy read every step): a steel block at 50 m/s on a rigid plane or rigid "
+     "body, 1 and 0.5 mm cells, hats, quadratic and cubic B-splines, cpGIMP: apic and particle_gap never above E0 "
+     "(vibration energy dissipated: -8% to -36% at the end), onset grid +20% to +217%; the same in 3D (a 10 mm cube, "
+     "hats and cubic) never above E0; stacked rubber blocks to 1 s: apic -0.001% to -0.045%; friction (hats and "
+     "cubic): the block striking the plane obliquely at (20, -50) m/s with mu 0.3, a rubber block sliding at 2 m/s "
+     "on a rigid plane (mu 0.2, decelerating at mu g within 0.3%) and on a rubber slab, never above E0; Love & "
+     "Sulsky's colliding cylinders never above E0 with either onset (docs/theory.md §11, \"Energy\")"},
     {"Bernstein functions with an explicit scheme", trigger_energy | trigger_guard,
      // two-cell elements with an explicit scheme: Bernstein (Lagrange's are total-Lagrangian only)
      [](const HintContext& c) { return shape_of(c).even_cells && is_explicit_updated_lagrangian(c); },
