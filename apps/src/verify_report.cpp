@@ -114,6 +114,7 @@ std::string markdown(const VerifyReport& r, const std::string& plot_note) {
                run.seconds);
   }
   if (!r.stopped.empty()) fmt::print(md, "\n**Stopped:** {}\n", r.stopped);
+  for (const auto& w : r.warnings) fmt::print(md, "\n**Warning:** {}\n", w);
   for (std::size_t qi = 0; qi < r.quantities.size(); ++qi) {
     const auto& q = r.quantities[qi];
     const auto& res = q.result;
@@ -184,6 +185,7 @@ void write_verify_report(const fs::path& dir, const VerifyReport& r, bool plot, 
     else
       fmt::print(out, "{}: not in the asymptotic range: {}\n", q.name, q.result.verdict);
   }
+  for (const auto& w : r.warnings) fmt::print(out, "warning: {}\n", w);
   fmt::print(out, "report: {}\n", (dir / "verify.md").string());
 }
 

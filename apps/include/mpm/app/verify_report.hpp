@@ -19,8 +19,9 @@ struct VerifyRun {
   std::array<int, 3> cells{1, 1, 1};
   double h = 0;  ///< representative cell size (geometric mean over the axes), m
   long long particles = 0, steps = 0;
-  double seconds = 0;          ///< wall time of the run (building and stepping)
-  std::vector<double> values;  ///< one per quantity
+  double seconds = 0;               ///< wall time of the run (building and stepping)
+  std::vector<double> values;       ///< one per quantity
+  std::vector<double> body_masses;  ///< kg (per unit length in 2D, per area in 1D), per body at t = 0
 };
 
 struct VerifyQuantity {
@@ -38,7 +39,8 @@ struct VerifyReport {
   double ratio = 2;
   std::vector<VerifyRun> runs;  ///< coarsest first
   std::vector<VerifyQuantity> quantities;
-  std::string stopped;  ///< why fewer runs than asked finished (the guard's message), or empty
+  std::string stopped;                ///< why fewer runs than asked finished (the guard's message), or empty
+  std::vector<std::string> warnings;  ///< what makes the runs differ besides the resolution (a body's mass)
 };
 
 /// Writes DIR/verify.md, DIR/verify_runs.csv and, with `plot`, DIR/plot_verify.py and DIR/verify.png (the
