@@ -196,6 +196,7 @@ std::vector<std::vector<std::string>> read_csv(const fs::path& file) {
     std::stringstream s(line);
     std::string cell;
     while (std::getline(s, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();  // a last cell with no data
     rows.push_back(std::move(cells));
   }
   return rows;
@@ -223,6 +224,12 @@ void compare_csv(Comparison& c, const fs::path& a_dir, const fs::path& b_dir, co
       if (col < a[r].size()) scale = std::max(scale, std::abs(std::strtod(a[r][col].c_str(), nullptr)));
     for (std::size_t r = 1; r < std::min(a.size(), b.size()); ++r) {
       if (col >= a[r].size() || col >= b[r].size()) continue;
+      if (a[r][col].empty() || b[r][col].empty()) {  // no data (an empty probe, a particle that has left)
+        if (a[r][col].empty() != b[r][col].empty())
+          c.structure(name, header[col], static_cast<int>(r) - 1,
+                      a[r][col].empty() ? "(no data in A)" : "(no data in B)");
+        continue;
+      }
       char* end_a = nullptr;
       char* end_b = nullptr;
       const double x = std::strtod(a[r][col].c_str(), &end_a), y = std::strtod(b[r][col].c_str(), &end_b);

@@ -14,6 +14,7 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/core/stability_error.hpp"
 #include "mpm/history/history_writer.hpp"
+#include "mpm/io/csv_log.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/scene_loader.hpp"
 
@@ -162,6 +163,11 @@ VerifyRun run_once(const SceneDescription& scene, const std::vector<Quantity>& q
     writer.write(*sim);  // a row of every history at T
     for (std::size_t q = 0; q < quantities.size(); ++q) {
       const double value = writer.last_row(where[q].first)[where[q].second];
+      if (io::is_no_data(value))
+        throw BadOption(
+            fmt::format("--quantity {}: history '{}' has no data at t = {:.9g} s (no particle in its "
+                        "region, or the particle followed has left the run)",
+                        quantities[q].text, quantities[q].history, T));
       if (quantities[q].start == T) start_values[q] = value;
       if (quantities[q].time.value_or(scene.solver.end_time) == T) run.values[q] = value - start_values[q];
     }

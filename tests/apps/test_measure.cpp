@@ -92,6 +92,12 @@ TEST(Histories, WrittenWithUnitsAndBodiesSumToEnergyCsv) {
   EXPECT_EQ(front.columns,
             (std::vector<std::string>{"time [s]", "step", "x_min [m]", "x_max [m]", "x_span [m]", "count [-]"}));
   EXPECT_GT(front.at(10, "x_max [m]"), front.at(0, "x_max [m]") + 0.05);
+  // The empty region writes no data, empty cells, and its count (never a 0 that reads like a measurement).
+  std::ifstream corner(dir / "out" / "corner.csv");
+  std::string line;
+  std::getline(corner, line);
+  std::getline(corner, line);
+  EXPECT_EQ(line, "0,0,,,,,,,0");  // time, step, the mean, min and max of velocity_x and _y, count
   // `check` builds the histories too: the same warning, on standard output.
   const auto c = mpm("check " + (dir / "disks.yaml").string(), dir);
   EXPECT_EQ(c.status, 0);
@@ -192,6 +198,37 @@ TEST(Diff, SkipsTheWallTimeColumn) {
   const auto other = mpm("diff " + (dir / "a").string() + " " + (dir / "c").string(), dir);
   EXPECT_EQ(other.status, 1) << other.out << other.err;
   EXPECT_NE(other.out.find("newton_iterations"), std::string::npos) << other.out;
+  fs::remove_all(dir);
+}
+
+TEST(Diff, ComparesCellsWithNoData) {
+  const auto dir = scratch("diff_no_data");
+  for (const char* run : {"a", "b", "c"}) fs::create_directories(dir / run);
+  const std::string header = "time [s],step,x [m],count [-]\n";
+  std::ofstream(dir / "a" / "tip.csv") << header << "0,0,0.5,1\n0.1,10,,0\n0.2,20,,\n";
+  std::ofstream(dir / "b" / "tip.csv") << header << "0,0,0.5,1\n0.1,10,,0\n0.2,20,,\n";
+  std::ofstream(dir / "c" / "tip.csv") << header << "0,0,0.5,1\n0.1,10,0,0\n0.2,20,,0\n";
+  const auto same = mpm("diff " + (dir / "a").string() + " " + (dir / "b").string(), dir);
+  EXPECT_EQ(same.status, 0) << same.out << same.err;
+  const auto other = mpm("diff " + (dir / "a").string() + " " + (dir / "c").string(), dir);
+  EXPECT_EQ(other.status, 1) << other.out << other.err;
+  EXPECT_NE(other.out.find("(no data in A)"), std::string::npos) << other.out;
+  EXPECT_NE(other.out.find("count"), std::string::npos) << other.out;  // the last cell, empty in A, 0 in C
+  fs::remove_all(dir);
+}
+
+TEST(VerifyCommand, AQuantityWithNoDataIsRefused) {
+  const auto dir = scratch("verify_no_data");
+  std::ofstream(dir / "disks.yaml") << disks;
+  const auto r = mpm("verify " + (dir / "disks.yaml").string() +
+                         " --refine 2 --order 1 --quantity "
+                         "corner.velocity_x_mean -o " +
+                         (dir / "v").string(),
+                     dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--quantity corner.velocity_x_mean: history 'corner' has no data at t = 0.1 s"),
+            std::string::npos)
+      << r.err;
   fs::remove_all(dir);
 }
 

@@ -309,7 +309,8 @@ Case outflow() {
 // Erosion (materials.NAME.failure): block a erodes whole at step 51 (t = 0.051 s: its particles' own time step
 // falls to the floor as it falls, tests/libmpm/test_failure.cpp), after the checkpoint at 0.03 s, and block b of
 // the pulled-apart cut erodes at its first steps, before it; the eroded books and energy.csv's eroded_* columns
-// continue from the checkpoint.
+// continue from the checkpoint; so do the histories of a particle at the cut and of the cut's region, with the
+// empty cells of a particle that has eroded.
 Case erosion() {
   return {"erosion",
           "dimension: 2\n"
@@ -326,7 +327,12 @@ Case erosion() {
           "solver: {scheme: usl, dt: 1.0e-3, end_time: 0.08, gravity: [0, -9.81]}\n"
           "output:\n"
           "  interval: 0.01\n"
-          "  fields: [velocity, stress, failed]\n" +
+          "  fields: [velocity, stress, failed]\n"
+          "  histories:\n"
+          "    - {name: at_cut, type: particle, body: left, nearest: [1.19, 0.26], fields: [velocity, stress], "
+          "interval: 0.004}\n"
+          "    - {name: peak, type: probe, body: left, fields: [von_mises_stress], statistics: [max, max_at]}\n"
+          "    - {name: cut, type: probe, box: {min: [1.1, 0.1], max: [1.3, 0.4]}, fields: [velocity]}\n" +
               checkpoint_at(0.03)};
 }
 

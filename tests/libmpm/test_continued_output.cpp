@@ -81,6 +81,19 @@ TEST_F(ContinuedOutput, CsvLogContinuesWithTheSameBytesAsAnUninterruptedOne) {
   EXPECT_THROW(mpm::io::CsvLog(dir_ / "cut.csv", {"time", "other"}, resumed.mark()), std::runtime_error);
 }
 
+TEST_F(ContinuedOutput, CsvLogContinuesATableWithEmptyCells) {
+  const std::vector<std::string> columns{"time", "value", "count"};
+  mpm::io::CsvLog cut(dir_ / "cut.csv", columns);
+  cut.append({0.0, mpm::io::no_data(), 0});
+  cut.append({0.1, 2.5, 1});
+  mpm::io::CsvLog resumed(dir_ / "cut.csv", columns, cut.mark());
+  resumed.append({0.2, mpm::io::no_data(), 0});
+  EXPECT_EQ(read(dir_ / "cut.csv"), "time,value,count\n0,,0\n0.10000000000000001,2.5,1\n0.20000000000000001,,0\n");
+  // a cell that is neither a number nor empty is still refused
+  std::ofstream(dir_ / "bad.csv") << "time,value,count\n0,x,0\n";
+  EXPECT_THROW(mpm::io::CsvLog(dir_ / "cut.csv", columns, mpm::io::mark_file(dir_ / "bad.csv")), std::runtime_error);
+}
+
 TEST_F(ContinuedOutput, PvdFramesComeBackAsAbsolutePaths) {
   mpm::io::PvdCollection pvd(dir_ / "particles.pvd");
   pvd.add(0.5, dir_ / "frames" / "particles_000001.vtu");

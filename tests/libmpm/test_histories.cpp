@@ -12,11 +12,13 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "history_fixture.hpp"
 #include "mpm/core/exact_sum.hpp"
+#include "mpm/io/csv_log.hpp"
 #include "two_disks_scene.hpp"
 
 namespace mpm::test {
@@ -123,10 +125,173 @@ TEST(Probe, LinearFieldIsReproducedExactly) {
   EXPECT_NEAR(box[3], 64 * centre[0], 1e-11);
   EXPECT_NEAR(box[4], centre[1], 1e-13);
   EXPECT_EQ(box[8], 64);
-  // A region with no particle: a warning when built, zeros and a count of 0.
+  // A region with no particle: a warning when built, no data (empty cells, never a 0 that reads like a
+  // measurement) and a count of 0.
   ASSERT_EQ(m->warnings.size(), 1u);
   EXPECT_NE(m->warnings[0].find("output.histories[4]"), std::string::npos) << m->warnings[0];
-  EXPECT_EQ(m->sample(4), std::vector<double>(7, 0.0));  // mean, min, max of 2 components, count
+  const auto empty = m->sample(4);
+  ASSERT_EQ(empty.size(), 7u);  // mean, min, max of 2 components, count
+  for (std::size_t k = 0; k < 6; ++k) EXPECT_TRUE(io::is_no_data(empty[k])) << k;
+  EXPECT_EQ(empty[6], 0);
+}
+
+// A point probe with no particle within its radius, from the particles or from the grid: no data either.
+TEST(Probe, APointWithoutParticlesHasNoData) {
+  auto m = measured<2>(R"(
+dimension: 2
+grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}
+materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}
+bodies:
+  - {name: block, material: m, shape: {type: box, min: [0.2, 0.2], max: [0.4, 0.4]}}
+solver: {scheme: musl, cfl: 0.4, end_time: 0.01}
+output:
+  interval: 0.001
+  histories:
+    - {name: far, type: probe, point: [0.8, 0.8], radius: 0.05, fields: [velocity]}
+    - {name: far_grid, type: probe, point: [0.8, 0.8], from: grid, fields: [velocity]}
+)");
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto row = m->sample(k);
+    ASSERT_EQ(row.size(), 3u);
+    EXPECT_TRUE(io::is_no_data(row[0]) && io::is_no_data(row[1])) << k;
+    EXPECT_EQ(row[2], 0);
+  }
+}
+
+/// The (body, id) and position of the particle of `bodies` where f is least (greatest), by brute force.
+template <class F>
+std::tuple<int, double, double, double> brute_extreme(const Simulation<2>& sim, const std::vector<int>& bodies, F f,
+                                                      bool greatest) {
+  std::tuple<int, double, double, double> best{-1, 0, 0, greatest ? -1e300 : 1e300};
+  for (int b : bodies) {
+    const auto& p = sim.bodies()[static_cast<std::size_t>(b)].particles;
+    for (Index i = 0; i < p.size(); ++i) {
+      const double v = f(p.x[i][0], p.x[i][1]);
+      if (greatest ? v > std::get<3>(best) : v < std::get<3>(best))
+        best = {b, static_cast<double>(p.id[static_cast<std::size_t>(i)]) + 1e6 * b, p.x[i][0], v};
+    }
+  }
+  return best;
+}
+
+// Statistics over whole bodies (no point, no box), and where the extremes lie: the particle's id and position
+// (and its body when the probe reads several). v_x = 1 + 2x - 3y is greatest at the corner particle of largest
+// x and least y, least at the opposite corner: the ones a brute-force search finds.
+TEST(Probe, WholeBodyStatisticsNameTheParticleOfTheExtremes) {
+  auto m = measured<2>(R"(
+dimension: 2
+grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}
+materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}
+bodies:
+  - {name: block, material: m, shape: {type: box, min: [0.2, 0.2], max: [0.8, 0.6]}, velocity: ["1 + 2*x - 3*y", 0]}
+  - {name: disk, material: m, shape: {type: disk, center: [0.5, 0.8], radius: 0.1}, velocity: ["1 + 2*x - 3*y", 0]}
+solver: {scheme: musl, cfl: 0.4, end_time: 0.01}
+output:
+  interval: 0.001
+  histories:
+    - {name: block, type: probe, body: block, fields: [velocity], statistics: [max, max_at, min_at, mean]}
+    - {name: all, type: probe, fields: [velocity], statistics: [max_at]}
+)");
+  const auto columns = m->columns(0);
+  EXPECT_EQ(columns[0], "velocity_x_max [m/s]");
+  EXPECT_EQ(columns[1], "velocity_x_max_id [-]");
+  EXPECT_EQ(columns[2], "velocity_x_max_x [m]");
+  EXPECT_EQ(columns[3], "velocity_x_max_y [m]");
+  EXPECT_EQ(columns[4], "velocity_x_min_id [-]");
+  EXPECT_EQ(columns.size(), 2u * (1 + 3 + 3 + 1) + 1);  // 2 components, count
+  auto vx = [](double x, double y) { return 1 + 2 * x - 3 * y; };
+  const auto row = m->sample(0);
+  const auto hi = brute_extreme(*m->sim, {0}, vx, true), lo = brute_extreme(*m->sim, {0}, vx, false);
+  EXPECT_NEAR(row[0], std::get<3>(hi), 1e-14);
+  EXPECT_EQ(row[1], std::get<1>(hi));
+  EXPECT_DOUBLE_EQ(row[2], 0.7875);
+  EXPECT_DOUBLE_EQ(row[3], 0.2125);
+  EXPECT_EQ(row[4], std::get<1>(lo));
+  EXPECT_DOUBLE_EQ(row[5], 0.2125);
+  EXPECT_DOUBLE_EQ(row[6], 0.5875);
+  EXPECT_NEAR(row[7], vx(0.5, 0.4), 1e-13);  // the volume-weighted mean of a linear field over the box
+  EXPECT_EQ(row.back(), 24 * 16);            // every particle of the block
+  // Over both bodies the greatest v_x is still the block's corner: body 0, with the body column.
+  EXPECT_EQ(m->columns(1)[0], "velocity_x_max_body [-]");
+  const auto all = m->sample(1);
+  EXPECT_EQ(all[0], 0);
+  EXPECT_EQ(all[1], std::get<1>(hi));
+  // Ties go to the smaller id: v_y = 0 everywhere, so its min and max are at particle 0 of body 0.
+  EXPECT_EQ(all[4], 0);
+  EXPECT_EQ(all[5], 0);
+}
+
+// A material-point history (type: particle) follows the particle nearest to a point at t = 0 wherever it
+// goes; a spatial probe at that point loses it (at t = 0.25 s the block has moved past the point). In free flight at 1
+// m/s the particle's x grows by t exactly (a rigid translation is integrated exactly by MPM with a uniform velocity
+// field). When the particle leaves through an outflow face its columns have no data.
+const std::string flying_block = R"(
+dimension: 2
+grid:
+  origin: [0, 0]
+  extent: [1, 0.5]
+  cell_size: 0.05
+  boundary: {x_max: outflow}
+materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}
+bodies:
+  - {name: a, material: m, shape: {type: box, min: [0.5, 0.1], max: [0.7, 0.3]}, velocity: [1, 0]}
+  - {name: b, material: m, shape: {type: disk, center: [0.2, 0.25], radius: 0.1}}
+solver: {scheme: musl, cfl: 0.5, end_time: 0.5}
+output:
+  interval: 0.01
+  histories:
+    - {name: tip, type: particle, body: a, nearest: [0.69, 0.29], fields: [velocity, displacement]}
+    - {name: two, type: particle, body: a, ids: [0, 5], fields: [velocity]}
+    - {name: probe, type: probe, point: [0.6875, 0.2875], radius: 0.01, fields: [velocity]}
+)";
+
+TEST(ParticleHistory, FollowsAParticleWhereverItGoes) {
+  auto m = measured<2>(flying_block);
+  EXPECT_EQ(m->columns(0), (std::vector<std::string>{"id [-]", "x [m]", "y [m]", "velocity_x [m/s]", "velocity_y [m/s]",
+                                                     "displacement_x [m]", "displacement_y [m]"}));
+  EXPECT_EQ(m->columns(1)[0], "p0_x [m]");
+  EXPECT_EQ(m->columns(1)[4], "p5_x [m]");
+  const auto start = m->sample(0);
+  const auto& p = m->sim->bodies()[0].particles;
+  Index corner = -1;
+  for (Index i = 0; i < p.size(); ++i)
+    if (std::abs(p.x[i][0] - 0.6875) < 1e-12 && std::abs(p.x[i][1] - 0.2875) < 1e-12) corner = i;
+  ASSERT_GE(corner, 0);
+  EXPECT_EQ(start[0], p.id[static_cast<std::size_t>(corner)]);
+  EXPECT_EQ(start[1], p.x[corner][0]);
+  EXPECT_EQ(start[2], p.x[corner][1]);
+  const auto ids = m->sample(1);
+  EXPECT_NEAR(ids[0], 0.5125, 1e-12);  // particle 0: the first of the lattice, at the lower left
+  EXPECT_NEAR(ids[1], 0.1125, 1e-12);
+  EXPECT_EQ(ids[2], 1);  // velocity_x
+  while (m->sim->time() < 0.25 - 1e-12)
+    m->sim->advance(std::min<Real>(m->sim->next_time_step(), 0.25 - m->sim->time()));
+  const auto later = m->sample(0);
+  EXPECT_EQ(later[0], start[0]);
+  EXPECT_NEAR(later[1], 0.6875 + m->sim->time(), 1e-12);
+  EXPECT_NEAR(later[3], 1, 1e-12);
+  EXPECT_NEAR(later[5], m->sim->time(), 1e-12);  // displacement_x
+  EXPECT_TRUE(io::is_no_data(m->sample(2)[0]));  // the probe at the start point: nothing there any more
+  // Past the outflow face: the block has left the run, and the history says so.
+  while (m->sim->time() < 0.45 - 1e-12)
+    m->sim->advance(std::min<Real>(m->sim->next_time_step(), 0.45 - m->sim->time()));
+  const auto gone = m->sample(0);
+  EXPECT_EQ(gone[0], start[0]);
+  for (std::size_t k = 1; k < gone.size(); ++k) EXPECT_TRUE(io::is_no_data(gone[k])) << k;
+}
+
+// A restart follows the particles the run chose at t = 0 (saved with the history), not the ones nearest to the
+// point in the restored state.
+TEST(ParticleHistory, TheChosenParticleIsCheckpointed) {
+  auto m = measured<2>(flying_block);
+  StateArchive archive;
+  m->histories[0].history->save_state(archive, "h/");
+  std::string other = flying_block;
+  other.replace(other.find("nearest: [0.69, 0.29]"), 21, "nearest: [0.51, 0.11]");
+  auto restored = measured<2>(other);
+  EXPECT_NE(restored->sample(0)[0], m->sample(0)[0]);
+  restored->histories[0].history->restore_state(archive, "h/");
+  EXPECT_EQ(restored->sample(0), m->sample(0));
 }
 
 TEST(Extent, FollowsABodyInFreeFlight) {

@@ -288,6 +288,17 @@ TEST_F(IoTest, CsvHeaderAndRows) {
   EXPECT_EQ(entries(), std::vector<std::string>{"energy.csv"});
 }
 
+TEST_F(IoTest, CsvNoDataIsAnEmptyCellAndAnyOtherNanIsRefused) {
+  const auto file = dir_ / "probe.csv";
+  mpm::io::CsvLog log(file, {"time", "value", "count"});
+  log.append({0.0, mpm::io::no_data(), 0.0});
+  log.append({0.5, mpm::io::no_data(), mpm::io::no_data()});
+  EXPECT_THROW(log.append({1.0, std::numeric_limits<double>::quiet_NaN(), 0.0}), std::invalid_argument);
+  EXPECT_EQ(read_text(file), "time,value,count\n0,,0\n0.5,,\n");
+  EXPECT_TRUE(mpm::io::is_no_data(mpm::io::no_data()));
+  EXPECT_FALSE(mpm::io::is_no_data(std::numeric_limits<double>::quiet_NaN()));
+}
+
 TEST_F(IoTest, AtomicWriteKeepsOldFileWhenWriterThrows) {
   const auto file = dir_ / "state.txt";
   write_text(file, "old content");

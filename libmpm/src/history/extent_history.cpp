@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "history_support.hpp"
+#include "mpm/io/csv_log.hpp"
 
 namespace mpm::history {
 namespace {
@@ -76,9 +77,9 @@ class ExtentHistory final : public History<Dim> {
       comm->sum(n);
       lo = low[0], hi = high[0], count = static_cast<Index>(n[0]);
     }
-    row.push_back(count ? lo : 0);
-    row.push_back(count ? hi : 0);
-    if (!s_.radial) row.push_back(count ? hi - lo : 0);  // the length along the axis
+    row.push_back(count ? lo : io::no_data());  // no particle: no data (empty cells), not a 0 that reads as a length
+    row.push_back(count ? hi : io::no_data());
+    if (!s_.radial) row.push_back(count ? hi - lo : io::no_data());  // the length along the axis
     row.push_back(static_cast<double>(count));
   }
 
@@ -103,7 +104,7 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
   history->sample(sim, cache, row);
   if (row.back() == 0)
     warnings.push_back(h.path + ": history '" + h.name +
-                       "': no particle in its box at t = 0 (its values are 0 while count is 0)");
+                       "': no particle in its box at t = 0 (its rows have no data, empty cells, while count is 0)");
   return history;
 }
 

@@ -1,4 +1,4 @@
-// The registry of history kinds (history_kind.hpp): the core's four, then whatever modules register; and the
+// The registry of history kinds (history_kind.hpp): the core's five, then whatever modules register; and the
 // pieces every kind shares (the output-field cache, units, building a scene's histories).
 #include "mpm/history/history_kind.hpp"
 
@@ -14,7 +14,8 @@ namespace {
 /// The core's kinds, then the modules' (core/kind_table.hpp), found by their `type`.
 KindTable<HistoryKind, &HistoryKind::type>& table() {
   static KindTable<HistoryKind, &HistoryKind::type> t{std::deque<HistoryKind>{
-      history::probe_kind(), history::reaction_kind(), history::energy_kind(), history::extent_kind()}};
+      history::probe_kind(), history::reaction_kind(), history::energy_kind(), history::extent_kind(),
+      history::particle_kind()}};
   return t;
 }
 

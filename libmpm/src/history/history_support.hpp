@@ -39,6 +39,7 @@ HistoryKind probe_kind();
 HistoryKind reaction_kind();
 HistoryKind energy_kind();
 HistoryKind extent_kind();
+HistoryKind particle_kind();
 
 /// An axis-aligned box of the scene (`{min: [...], max: [...]}`), m; coordinates beyond the dimension are 0.
 struct Box {

@@ -1,6 +1,7 @@
 // `type: probe` (docs/scene-reference.md#histories): output fields (the one table of output_fields.hpp, so a
 // module's fields are probe-able too) at a point, from the particles within a radius or from the grid, or
-// over the particles of a box (mean, min, max, sum).
+// statistics over the particles of a box or of whole bodies (mean, min, max, sum; where the min and max are).
+// A probe that reads no particle writes no data (empty cells), never a 0 that reads like a measurement.
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
@@ -10,6 +11,7 @@
 
 #include "history_support.hpp"
 #include "mpm/core/exact_sum.hpp"
+#include "mpm/io/csv_log.hpp"
 #include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm::history {
@@ -18,18 +20,19 @@ namespace {
 // one translation unit (scripts/tidy.sh).
 namespace probe {
 
-enum class Where { particles, grid, box };
-const std::vector<std::string> statistic_names{"mean", "min", "max", "sum"};
-enum Statistic { stat_mean, stat_min, stat_max, stat_sum };
+enum class Where { particles, grid, region };
+const std::vector<std::string> statistic_names{"mean", "min", "max", "sum", "min_at", "max_at"};
+/// min_at, max_at: the particle holding the min (max): its body (when the probe reads several), id and position.
+enum Statistic { stat_mean, stat_min, stat_max, stat_sum, stat_min_at, stat_max_at };
 
 struct ProbeSpec {
   std::vector<std::string> fields;
   int body = -1;  ///< -1: every body that defines the fields
   Where where = Where::particles;
   std::array<double, 3> point{0, 0, 0};
-  double radius = 0;  ///< m (from: particles); 0: the largest cell size of the built grid (follows refinement)
-  Box box;
-  std::vector<int> statistics;  ///< box: indices into statistic_names
+  double radius = 0;       ///< m (from: particles); 0: the largest cell size of the built grid (follows refinement)
+  std::optional<Box> box;  ///< region: the particles inside it; none: every particle of the bodies
+  std::vector<int> statistics;  ///< region: indices into statistic_names
 };
 
 /// The fields a probe can read: every selectable output field with point values (not `domains`).
@@ -54,11 +57,9 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
   const auto point = entry.find("point"), box = entry.find("box"), from = entry.find("from"),
              radius = entry.find("radius"), statistics = entry.find("statistics");
   if (point && box) reader.fail(*box, "give either point or box, not both");
-  if (!point && !box)
-    reader.fail(entry.self().mark, entry.self().path, "missing 'point' (a probe at a point) or 'box' (a region)");
   if (point) {
     s.point = read_point_in_grid(reader, *point, scene, "probe point");
-    if (statistics) reader.fail(*statistics, "statistics are for a box; a point probe gives one value per component");
+    if (statistics) reader.fail(*statistics, "statistics are for a box or a whole body; a point probe gives one value per component");
     if (from && reader.choice(*from, {"particles", "grid"}) == "grid") {
       s.where = Where::grid;
       if (radius) reader.fail(*radius, "radius is for `from: particles`; `from: grid` uses the cell around the point");
@@ -67,10 +68,13 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
     }
     return s;
   }
-  s.where = Where::box;
-  s.box = read_box(reader, *box, scene);
-  if (from) reader.fail(*from, "from is for a point probe; a box probe reads the particles inside the box");
-  if (radius) reader.fail(*radius, "radius is for a point probe; a box probe reads the particles inside the box");
+  // No point: statistics over the particles of a box, or over every particle of the bodies.
+  s.where = Where::region;
+  if (box) s.box = read_box(reader, *box, scene);
+  const char* region = box ? "a box probe reads the particles inside the box"
+                           : "a probe without point or box reads every particle of its bodies";
+  if (from) reader.fail(*from, fmt::format("from is for a point probe; {}", region));
+  if (radius) reader.fail(*radius, fmt::format("radius is for a point probe; {}", region));
   if (statistics) {
     for (const auto& item : reader.list(*statistics, std::nullopt, "statistics")) {
       const std::string name = reader.choice(item, statistic_names);
@@ -80,7 +84,7 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
         reader.fail(item, fmt::format("statistic '{}' is listed twice", name));
       s.statistics.push_back(k);
     }
-    if (s.statistics.empty()) reader.fail(*statistics, "list at least one of mean, min, max, sum");
+    if (s.statistics.empty()) reader.fail(*statistics, "list at least one of mean, min, max, sum, min_at, max_at");
   } else {
     s.statistics = {stat_mean, stat_min, stat_max};
   }
@@ -119,11 +123,21 @@ class ProbeHistory final : public History<Dim> {
     std::vector<std::string> names;
     for (const OutputField* f : fields_)
       for (const auto& suffix : component_suffixes(*f, Dim)) {
-        if (s_.where != Where::box) {
+        if (s_.where != Where::region) {
           names.push_back(column_name(f->name + suffix, f->unit));
           continue;
         }
-        for (int k : s_.statistics) names.push_back(column_name(f->name + suffix + "_" + statistic_names[k], f->unit));
+        for (int k : s_.statistics) {
+          const std::string name = f->name + suffix + "_" + statistic_names[k];
+          if (k != stat_min_at && k != stat_max_at) {
+            names.push_back(column_name(name, f->unit));
+            continue;
+          }
+          const std::string at = f->name + suffix + (k == stat_min_at ? "_min" : "_max");  // velocity_x_max_id
+          if (bodies_.size() > 1) names.push_back(column_name(at + "_body", "-"));
+          names.push_back(column_name(at + "_id", "-"));
+          for (int d = 0; d < Dim; ++d) names.push_back(column_name(at + "_" + "xyz"[d], "m"));
+        }
       }
     names.push_back(column_name("count", "-"));
     return names;
@@ -135,8 +149,8 @@ class ProbeHistory final : public History<Dim> {
         return fit_particles(sim, cache, row);
       case Where::grid:
         return from_grid(sim, cache, row);
-      case Where::box:
-        return over_box(sim, cache, row);
+      case Where::region:
+        return over_region(sim, cache, row);
     }
   }
 
@@ -152,7 +166,7 @@ class ProbeHistory final : public History<Dim> {
 
  private:
   bool reads(const VecU<Dim>& x) const {
-    if (s_.where == Where::box) return s_.box.contains<Dim>(x);
+    if (s_.where == Where::region) return !s_.box || s_.box->contains<Dim>(x);
     if (s_.where == Where::particles) return (Vec<Dim>(x) - x0_).squaredNorm() < s_.radius * s_.radius;
     for (int a = 0; a < (1 << Dim); ++a)
       if (hat(a, x) > 0) return true;
@@ -228,7 +242,7 @@ class ProbeHistory final : public History<Dim> {
       Basis rhs;
       for (int r = 0; r < B; ++r) rhs[r] = sums[moments + rows * k + static_cast<std::size_t>(r)].value();
       if (count[0] == 0 || !(M(0, 0) > 0))
-        row.push_back(0);
+        row.push_back(io::no_data());
       else
         row.push_back(linear ? Basis(solver.solve(rhs))[0] : rhs[0] / M(0, 0));
     }
@@ -289,16 +303,71 @@ class ProbeHistory final : public History<Dim> {
       Real v = 0;
       for (int a = 0; a < corners; ++a)
         if (N[a] > 0) v += N[a] * value[k][a].value() / m[a];
-      row.push_back(weight > 0 ? v / weight : 0);
+      row.push_back(weight > 0 ? v / weight : io::no_data());
     }
     row.push_back(static_cast<double>(count));
   }
 
-  /// Volume-weighted mean (current volumes), min, max and sum over the particles in the box, summed exactly.
-  void over_box(const Simulation<Dim>& sim, OutputFieldCache<Dim>& cache, std::vector<double>& row) const {
+  /// Where the least or greatest value of a component lies: the particle (its body and id as one key,
+  /// body * 2^32 + id, exact in a double) and its position. Ties go to the smaller key, so the particle named
+  /// does not depend on the order the particles are stored in, nor on the ranks holding them.
+  struct Extreme {
+    double value;
+    double key = std::numeric_limits<double>::infinity();
+    std::array<double, 3> x{0, 0, 0};
+  };
+  static double particle_key(int body, std::uint32_t id) { return std::ldexp(static_cast<double>(body), 32) + id; }
+
+  bool wants(Statistic stat) const {
+    return std::find(s_.statistics.begin(), s_.statistics.end(), stat) != s_.statistics.end();
+  }
+
+  /// The global extreme from every rank's own: the value (min or max), then the smallest key among the ranks
+  /// that hold it, then that particle's position (the other ranks give -inf to a max).
+  static void reduce(Communicator& comm, std::vector<Extreme>& e, bool least, bool locate) {
+    std::vector<double> v(e.size());
+    for (std::size_t k = 0; k < e.size(); ++k) v[k] = e[k].value;
+    if (least)
+      comm.min(v);
+    else
+      comm.max(v);
+    if (!locate) {
+      for (std::size_t k = 0; k < e.size(); ++k) e[k].value = v[k];
+      return;
+    }
+    std::vector<double> key(e.size());
+    for (std::size_t k = 0; k < e.size(); ++k)
+      key[k] = e[k].value == v[k] ? e[k].key : std::numeric_limits<double>::infinity();
+    comm.min(key);
+    std::vector<double> x(3 * e.size(), -std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < e.size(); ++k)
+      if (e[k].key == key[k] && e[k].value == v[k])
+        std::copy(e[k].x.begin(), e[k].x.end(), x.begin() + 3 * static_cast<std::ptrdiff_t>(k));
+    comm.max(x);
+    for (std::size_t k = 0; k < e.size(); ++k) {
+      e[k].value = v[k];
+      e[k].key = key[k];
+      std::copy(x.begin() + 3 * static_cast<std::ptrdiff_t>(k), x.begin() + 3 * static_cast<std::ptrdiff_t>(k + 1),
+                e[k].x.begin());
+    }
+  }
+
+  /// The columns of min_at or max_at: the body (when the probe reads several), the id and the position.
+  void push_location(const Extreme& e, std::vector<double>& row) const {
+    const double key = e.key;
+    if (bodies_.size() > 1) row.push_back(std::floor(std::ldexp(key, -32)));
+    row.push_back(key - std::ldexp(std::floor(std::ldexp(key, -32)), 32));
+    for (int d = 0; d < Dim; ++d) row.push_back(e.x[static_cast<std::size_t>(d)]);
+  }
+  std::size_t location_columns() const { return (bodies_.size() > 1 ? 2 : 1) + Dim; }
+
+  /// Volume-weighted mean (current volumes), min, max and sum over the particles in the box (or of the whole
+  /// bodies), summed exactly, and where the min and max lie.
+  void over_region(const Simulation<Dim>& sim, OutputFieldCache<Dim>& cache, std::vector<double>& row) const {
     const std::size_t n = components_.size();
     std::vector<ExactSum> weighted(n), sum(n);
-    std::vector<double> lo(n, std::numeric_limits<double>::infinity()), hi(n, -std::numeric_limits<double>::infinity());
+    std::vector<Extreme> lo(n, Extreme{std::numeric_limits<double>::infinity()}),
+        hi(n, Extreme{-std::numeric_limits<double>::infinity()});
     ExactSum volume;
     Index count = 0;
     std::vector<const double*> column(n);
@@ -307,16 +376,17 @@ class ProbeHistory final : public History<Dim> {
       for (std::size_t k = 0; k < n; ++k) column[k] = values(cache, components_[k], b);
       const Real* hoop = axisym::hoop_stretch_of(p);  // the ring volumes of an axisymmetric run
       for (Index i = 0; i < p.size(); ++i) {
-        if (!s_.box.contains<Dim>(p.x[i])) continue;
+        if (s_.box && !s_.box->contains<Dim>(p.x[i])) continue;
         ++count;
         const Real V = p.volume0[i] * axisym::volume_ratio(p, i, hoop);
         volume += V;
+        const double key = particle_key(b, p.id[i]);
         for (std::size_t k = 0; k < n; ++k) {
           const double v = column[k][i * components_[k].field->components];
           weighted[k] += V * v;
           sum[k] += v;
-          lo[k] = std::min(lo[k], v);
-          hi[k] = std::max(hi[k], v);
+          if (v < lo[k].value || (v == lo[k].value && key < lo[k].key)) lo[k] = {v, key, position(p.x[i])};
+          if (v > hi[k].value || (v == hi[k].value && key < hi[k].key)) hi[k] = {v, key, position(p.x[i])};
         }
       }
     }
@@ -328,8 +398,8 @@ class ProbeHistory final : public History<Dim> {
       volume = all[0];
       std::copy(all.begin() + 1, all.begin() + 1 + static_cast<std::ptrdiff_t>(n), weighted.begin());
       std::copy(all.begin() + 1 + static_cast<std::ptrdiff_t>(n), all.end(), sum.begin());
-      comm->min(lo);
-      comm->max(hi);
+      reduce(*comm, lo, true, wants(stat_min_at));
+      reduce(*comm, hi, false, wants(stat_max_at));
       std::int64_t c[] = {static_cast<std::int64_t>(count)};
       comm->sum(c);
       count = static_cast<Index>(c[0]);
@@ -337,25 +407,37 @@ class ProbeHistory final : public History<Dim> {
     const Real V = volume.value();
     for (std::size_t k = 0; k < n; ++k)
       for (int stat : s_.statistics) {
-        if (count == 0) {
-          row.push_back(0);
+        if (count == 0) {  // no particle: no data
+          row.insert(row.end(), stat == stat_min_at || stat == stat_max_at ? location_columns() : 1, io::no_data());
           continue;
         }
         switch (stat) {
           case stat_mean:
-            row.push_back(V > 0 ? weighted[k].value() / V : 0);
+            row.push_back(V > 0 ? weighted[k].value() / V : io::no_data());
             break;
           case stat_min:
-            row.push_back(lo[k]);
+            row.push_back(lo[k].value);
             break;
           case stat_max:
-            row.push_back(hi[k]);
+            row.push_back(hi[k].value);
+            break;
+          case stat_min_at:
+            push_location(lo[k], row);
+            break;
+          case stat_max_at:
+            push_location(hi[k], row);
             break;
           default:
             row.push_back(sum[k].value());
         }
       }
     row.push_back(static_cast<double>(count));
+  }
+
+  static std::array<double, 3> position(const VecU<Dim>& x) {
+    std::array<double, 3> a{0, 0, 0};
+    for (int d = 0; d < Dim; ++d) a[static_cast<std::size_t>(d)] = x[d];
+    return a;
   }
 
   ProbeSpec s_;
@@ -377,8 +459,8 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
   auto probe = std::make_unique<ProbeHistory<Dim>>(s, std::move(fields), std::move(bodies), sim.grid().geometry);
   if (probe->particle_count(sim) == 0)
     warnings.push_back(
-        fmt::format("{}: history '{}': no particle in the probe's region at t = 0 (its values are 0 "
-                    "while count is 0)",
+        fmt::format("{}: history '{}': no particle in the probe's region at t = 0 (its rows have no "
+                    "data, empty cells, while count is 0)",
                     h.path, h.name));
   return probe;
 }

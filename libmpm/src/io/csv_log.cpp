@@ -58,10 +58,15 @@ CsvLog::CsvLog(std::filesystem::path path, std::vector<std::string> columns, con
     for (std::size_t begin = 0; begin <= line.size();) {
       const std::size_t end = std::min(line.find(',', begin), line.size());
       double v = 0;
+      if (begin == end) {  // an empty cell: no data
+        row.push_back(no_data());
+        begin = end + 1;
+        continue;
+      }
       const auto [ptr, error] = std::from_chars(line.data() + begin, line.data() + end, v);
       if (error != std::errc() || ptr != line.data() + end)
         throw std::runtime_error("cannot continue '" + path_.string() + "': line " + std::to_string(number) +
-                                 " is not a row of numbers");
+                                 " is not a row of numbers (or empty cells)");
       row.push_back(v);
       begin = end + 1;
     }
@@ -81,10 +86,11 @@ void CsvLog::append(const std::vector<double>& row) {
                                 std::to_string(columns_.size()) + " columns in '" + path_.string() + "'");
   std::string line;
   for (std::size_t i = 0; i < row.size(); ++i) {
+    if (i) line += ',';
+    if (is_no_data(row[i])) continue;  // an empty cell
     if (!std::isfinite(row[i]))
       throw std::invalid_argument("CsvLog::append: non-finite value in column '" + columns_[i] + "' of '" +
                                   path_.string() + "'");
-    if (i) line += ',';
     line += format_double(row[i]);
   }
   line += '\n';

@@ -2,6 +2,8 @@
 /// \file csv_log.hpp
 /// A small CSV table written as the run goes (one row per output frame: time, energies...).
 
+#include <bit>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -10,6 +12,13 @@
 #include "mpm/io/continued_file.hpp"
 
 namespace mpm::io {
+
+/// "No data" in a row: a quiet NaN with a payload of its own, written as an empty cell (a probe whose region
+/// holds no particle, a followed particle that has eroded). Any other non-finite value is still refused, so a
+/// NaN computed by mistake is not hidden as an empty cell.
+inline constexpr std::uint64_t no_data_bits = 0x7ff8'0000'00da'7a00ULL;
+inline double no_data() { return std::bit_cast<double>(no_data_bits); }
+inline bool is_no_data(double v) { return std::bit_cast<std::uint64_t>(v) == no_data_bits; }
 
 /// A CSV table: a header line of column names, then one line per row, numbers in full precision
 /// (%.17g, always with '.' as decimal point). The constructor writes the header atomically (replacing any
@@ -22,7 +31,7 @@ class CsvLog {
   /// `columns` is empty.
   CsvLog(std::filesystem::path path, std::vector<std::string> columns);
   /// Continues the table of a checkpointed run (continued_file.hpp): `path` becomes the first from.bytes
-  /// bytes of from.path, whose rows are checked (numbers, one per column) and then appended to. Throws
+  /// bytes of from.path, whose rows are checked (numbers or empty cells, one per column) and then appended to. Throws
   /// std::runtime_error naming the file when they cannot be, or when its header is not `columns`.
   CsvLog(std::filesystem::path path, std::vector<std::string> columns, const FileMark& from);
 
@@ -30,7 +39,8 @@ class CsvLog {
   FileMark mark() const { return mark_file(path_); }
 
   /// Appends a row to the file. Throws std::invalid_argument, and writes nothing, if row.size() != the
-  /// number of columns or if a value is not finite; std::runtime_error if the file cannot be written.
+  /// number of columns or if a value is not finite (but no_data(), written as an empty cell); std::runtime_error
+  /// if the file cannot be written.
   void append(const std::vector<double>& row);
 
   /// Where the table is written.
