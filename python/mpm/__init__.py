@@ -15,6 +15,7 @@ from ._mpm import output_fields as _output_fields
 from ._mpm import version as __version__
 from ._errors import SceneError, StabilityError, StaleViewError
 from ._energy import Energy, Removed, energy, removed
+from ._histories import History
 from ._simulation import Body, Grid, Simulation
 from ._views import FieldView
 
@@ -27,5 +28,5 @@ def output_fields():
     return {name: (components, unit, description) for name, components, unit, description in _output_fields()}
 
 
-__all__ = ["Scene", "Simulation", "Body", "Grid", "FieldView", "Energy", "energy", "Removed", "removed", "SceneError",
+__all__ = ["Scene", "Simulation", "Body", "Grid", "FieldView", "History", "Energy", "energy", "Removed", "removed", "SceneError",
            "StabilityError", "StaleViewError", "modules", "output_fields", "__version__"]

@@ -9,6 +9,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from . import _mpm
+from ._histories import Histories
 from ._progress import Progress
 from ._views import _Source, make_view
 
@@ -40,6 +41,7 @@ class Simulation:
         self.scene = scene
         self.bodies = Bodies(self)
         self.grid = Grid(self)
+        self.histories = Histories(self._handle)
 
     # --- state -----------------------------------------------------------------------------------------
     @property

@@ -150,6 +150,16 @@ void bind_simulation(py::module_& m) {
            })
       .def("write_frame", &H::write_frame, py::arg("directory"), py::call_guard<py::gil_scoped_release>())
       .def_property_readonly("output_directory", &H::output_directory)
+      .def("history_names", &H::history_names)
+      .def("history_columns", &H::history_columns)
+      .def("history_rows",
+           [](const H& h, std::size_t k) {  // a new (rows, columns) array; no data is NaN
+             const std::vector<double> values = h.history_rows(k);
+             const auto columns = static_cast<py::ssize_t>(h.history_columns(k).size());
+             py::array_t<double> a({static_cast<py::ssize_t>(values.size()) / columns, columns});
+             std::copy(values.begin(), values.end(), a.mutable_data());
+             return a;
+           })
       .def("body_names", &H::body_names)
       .def("body_size", &H::body_size)
       .def("particle_fields", &H::particle_fields)

@@ -115,8 +115,10 @@ class SimulationFor final : public SimulationHandle {
     arena_.execute([&] {
       run_ = app::make_run<Dim>(scene, log_);  // throws SceneError as the program
       run_->log_warnings();
-      run_->start({output_directory, app::run_field_data(scene, {}), app::view_script_for(scene), nullptr, nullptr,
-                   checkpoints_.get()});
+      RunOutput output{output_directory,  app::run_field_data(scene, {}), app::view_script_for(scene), nullptr, nullptr,
+                       checkpoints_.get()};
+      output.keep_history_rows = true;  // Simulation.histories, with output=False too
+      run_->start(std::move(output));
     });
   }
 
@@ -177,6 +179,14 @@ class SimulationFor final : public SimulationHandle {
     arena_.execute([&] { run_->write_frame(directory); });
   }
   std::string output_directory() const override { return run_->output_directory().string(); }
+  std::vector<std::string> history_names() const override {
+    std::vector<std::string> names;
+    if (const auto* h = run_->histories())
+      for (std::size_t k = 0; k < h->size(); ++k) names.push_back(h->description(k).name);
+    return names;
+  }
+  std::vector<std::string> history_columns(std::size_t k) const override { return run_->histories()->columns(k); }
+  std::vector<double> history_rows(std::size_t k) const override { return run_->histories()->rows(k); }
 
   std::vector<std::string> body_names() const override {
     std::vector<std::string> names;

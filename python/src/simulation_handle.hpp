@@ -85,6 +85,12 @@ class SimulationHandle {
   virtual void write_frame(const std::string& directory) = 0;
   /// The output directory of the scene's output section, or empty when the simulation writes none.
   virtual std::string output_directory() const = 0;
+  /// The names of the scene's histories (output.histories), in scene order; their rows are kept in memory whether
+  /// or not the simulation writes files.
+  virtual std::vector<std::string> history_names() const = 0;
+  /// History k's columns ("time [s]", "step", then "name [unit]") and its rows so far, row after row.
+  virtual std::vector<std::string> history_columns(std::size_t k) const = 0;
+  virtual std::vector<double> history_rows(std::size_t k) const = 0;
 
   virtual std::vector<std::string> body_names() const = 0;
   virtual Index body_size(int body) const = 0;

@@ -13,9 +13,9 @@ namespace {
 
 /// The core's kinds, then the modules' (core/kind_table.hpp), found by their `type`.
 KindTable<HistoryKind, &HistoryKind::type>& table() {
-  static KindTable<HistoryKind, &HistoryKind::type> t{std::deque<HistoryKind>{
-      history::probe_kind(), history::reaction_kind(), history::energy_kind(), history::extent_kind(),
-      history::particle_kind()}};
+  static KindTable<HistoryKind, &HistoryKind::type> t{
+      std::deque<HistoryKind>{history::probe_kind(), history::reaction_kind(), history::energy_kind(),
+                              history::extent_kind(), history::particle_kind()}};
   return t;
 }
 

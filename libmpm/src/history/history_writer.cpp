@@ -26,6 +26,7 @@ HistoryWriter<Dim>::HistoryWriter(const std::filesystem::path& directory, std::v
                           0,
                           -1,
                           false,
+                          {},
                           {}});
       continue;
     }
@@ -33,9 +34,15 @@ HistoryWriter<Dim>::HistoryWriter(const std::filesystem::path& directory, std::v
     std::optional<io::CsvLog> csv;
     if (writes_files) csv.emplace(file, columns, io::load_mark(*restart, prefix + "csv"));
     b.history->restore_state(*restart, prefix + "history/");
-    entries_.push_back({std::move(b), columns, std::move(csv), interval, restart->number(prefix + "next_time"),
-                        restart->number(prefix + "last_written"), restart->integer(prefix + "started") != 0,
-                        restart->values<double>(prefix + "last_row")});
+    entries_.push_back({std::move(b),
+                        columns,
+                        std::move(csv),
+                        interval,
+                        restart->number(prefix + "next_time"),
+                        restart->number(prefix + "last_written"),
+                        restart->integer(prefix + "started") != 0,
+                        restart->values<double>(prefix + "last_row"),
+                        {}});
   }
 }
 
@@ -69,6 +76,7 @@ void HistoryWriter<Dim>::write_rows(const Simulation<Dim>& sim, bool all) {
     std::vector<double> row{sim.time(), static_cast<double>(sim.step())};
     e.built.history->sample(sim, *cache, row);
     if (e.csv) e.csv->append(row);
+    if (keep_rows_) e.rows.insert(e.rows.end(), row.begin(), row.end());
     e.last_row = std::move(row);
     e.started = true;
     e.last_written = sim.time();

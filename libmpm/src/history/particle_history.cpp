@@ -88,7 +88,7 @@ class ParticleHistory final : public History<Dim> {
       for (int d = 0; d < Dim; ++d) names.push_back(column_name(prefix + "xyz"[d], "m"));
       for (const OutputField* f : fields_)
         for (const auto& suffix : component_suffixes(*f, Dim))
-          names.push_back(column_name(prefix + f->name + suffix, f->unit));
+          names.push_back(column_name(fmt::format("{}{}{}", prefix, f->name, suffix), f->unit));
     }
     return names;
   }

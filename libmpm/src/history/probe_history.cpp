@@ -59,7 +59,8 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
   if (point && box) reader.fail(*box, "give either point or box, not both");
   if (point) {
     s.point = read_point_in_grid(reader, *point, scene, "probe point");
-    if (statistics) reader.fail(*statistics, "statistics are for a box or a whole body; a point probe gives one value per component");
+    if (statistics)
+      reader.fail(*statistics, "statistics are for a box or a whole body; a point probe gives one value per component");
     if (from && reader.choice(*from, {"particles", "grid"}) == "grid") {
       s.where = Where::grid;
       if (radius) reader.fail(*radius, "radius is for `from: particles`; `from: grid` uses the cell around the point");
@@ -128,12 +129,12 @@ class ProbeHistory final : public History<Dim> {
           continue;
         }
         for (int k : s_.statistics) {
-          const std::string name = f->name + suffix + "_" + statistic_names[k];
+          const std::string name = fmt::format("{}{}_{}", f->name, suffix, statistic_names[k]);
           if (k != stat_min_at && k != stat_max_at) {
             names.push_back(column_name(name, f->unit));
             continue;
           }
-          const std::string at = f->name + suffix + (k == stat_min_at ? "_min" : "_max");  // velocity_x_max_id
+          const std::string at = fmt::format("{}{}{}", f->name, suffix, k == stat_min_at ? "_min" : "_max");
           if (bodies_.size() > 1) names.push_back(column_name(at + "_body", "-"));
           names.push_back(column_name(at + "_id", "-"));
           for (int d = 0; d < Dim; ++d) names.push_back(column_name(at + "_" + "xyz"[d], "m"));

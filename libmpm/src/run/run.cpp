@@ -54,8 +54,12 @@ void Run<Dim>::start(RunOutput output) {
           std::make_unique<io::CsvLog>(writer_->directory() / std::string(file), sim_->scheme().step_log_columns());
     if (rank_zero) io::write_view_script(writer_->directory() / "view.py", output_.view_script);
   } else {
-    output_.checkpoints = nullptr;  // a checkpoint holds the output's state
+    output_.checkpoints = nullptr;                               // a checkpoint holds the output's state
+    if (output_.keep_history_rows && !built_histories_.empty())  // sampled for the rows only, no file
+      histories_ =
+          std::make_unique<HistoryWriter<Dim>>(std::filesystem::path(), std::move(built_histories_), nullptr, false);
   }
+  if (histories_) histories_->keep_rows(output_.keep_history_rows);
   built_histories_.clear();
   record_.warned.assign(sim_->bodies().size(), false);
   record_.initial_energy = sim_->energy().total();

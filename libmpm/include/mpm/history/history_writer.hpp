@@ -39,6 +39,10 @@ class HistoryWriter {
   const HistoryDescription& description(std::size_t k) const { return *entries_[k].built.description; }
   const std::vector<std::string>& columns(std::size_t k) const { return entries_[k].columns; }
   const std::vector<double>& last_row(std::size_t k) const { return entries_[k].last_row; }
+  /// Keep every row written from now on in memory (rows()); off by default.
+  void keep_rows(bool keep) { keep_rows_ = keep; }
+  /// History k's rows kept so far, row after row, columns(k).size() values each (no data: io::no_data()).
+  const std::vector<double>& rows(std::size_t k) const { return entries_[k].rows; }
 
  private:
   struct Entry {
@@ -50,11 +54,13 @@ class HistoryWriter {
     Real last_written = -1;
     bool started = false;
     std::vector<double> last_row;
+    std::vector<double> rows;  ///< with keep_rows: every row since then
   };
   void write_rows(const Simulation<Dim>& sim, bool all);
   static std::string state_prefix(const std::string& name);
 
   std::vector<Entry> entries_;
+  bool keep_rows_ = false;
 };
 
 }  // namespace mpm

@@ -54,6 +54,10 @@ struct RunOutput {
   Communicator* comm = nullptr;
   CheckpointSink* checkpoints = nullptr;  ///< not owned; null: no checkpoints
   bool profile = false;                   ///< time the phases of every step and the output (Simulation::profile)
+  /// Keep every row of the histories in memory (Run::histories(), the Python package's Simulation.histories),
+  /// also when the run writes no files. Off for `mpm run`: a history written every step of a long run would
+  /// hold its whole table.
+  bool keep_history_rows = false;
 };
 
 /// How a stepping call of Run ended.
@@ -112,6 +116,9 @@ class Run {
   /// Every warning logged, in order: the built scene's, then those found while stepping (and those of the run a
   /// restart continues).
   std::vector<std::string> warnings() const;
+  /// The histories' writer (their columns and, with RunOutput::keep_history_rows, every row so far), or null when
+  /// the run has none or neither writes nor keeps them.
+  const HistoryWriter<Dim>* histories() const { return histories_.get(); }
   /// The last checkpoint written by this process, or none.
   const std::optional<std::filesystem::path>& last_checkpoint() const { return last_checkpoint_; }
   /// Wall time spent in run()'s steps (their output and checks included, the end's writes not), s.
