@@ -620,6 +620,26 @@ Reaction<Dim> MultiVelocityContact<Dim>::last_reaction(int k) const {
 }
 
 template <int Dim>
+std::vector<std::string> MultiVelocityContact<Dim>::contact_partners() const {
+  std::vector<std::string> names;
+  for (int b = 0; b < body_count_; ++b) names.push_back(bodies_[b].name);
+  for (const auto& plane : settings_.planes) names.push_back(plane.name);
+  return names;
+}
+
+template <int Dim>
+Reaction<Dim> MultiVelocityContact<Dim>::last_contact_force(int body, int partner) const {
+  const int slots = body_count_ + static_cast<int>(settings_.planes.size());
+  Reaction<Dim> r;
+  for (int o = 0; o < slots; ++o) {  // in slot order: the same sum on every rank (each step_force_ is reduced)
+    if (partner >= 0 && o != partner) continue;
+    r.force += step_force_[body * slots + o];
+    r.first_moment += step_moment_[body * slots + o];
+  }
+  return r;
+}
+
+template <int Dim>
 void MultiVelocityContact<Dim>::end_of_step(StepContext<Dim>& ctx) {
   const Real t = ctx.time + ctx.dt;
   // Rigid particles keep exactly the prescribed velocity (the grid gives it up to round-off).

@@ -130,5 +130,59 @@ output:
   EXPECT_NEAR(row[2], 0.0, 1e-6 * weight * 0.1);  // symmetric about x = 0.3
 }
 
+// The contact force on a body (reaction `on:`), a regular time series whether or not the bodies touch: the two
+// disks of review §6.1.2 with the contact defaults, a row every step. Newton's third law row by row (the pair
+// correction at a node gives the two bodies equal and opposite impulses), zero before they meet, and the force
+// on each disk integrated over the run is its change of momentum (nothing else acts on it: no gravity, no
+// boundary; the internal forces of a body's own field sum to zero, partition of unity).
+TEST(ReactionHistory, ContactForceOnABodyIsItsRateOfChangeOfMomentum) {
+  std::string yaml = two_disks_scene;
+  for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{{"@SCHEME@", "musl"},
+                                                                                   {"@SHAPE@", "linear"},
+                                                                                   {"@ONSET@", "particle_gap"},
+                                                                                   {"@MU@", "0"},
+                                                                                   {"@NORMALS@", "mass_gradient"}})
+    yaml.replace(yaml.find(key), key.size(), value);
+  yaml.replace(yaml.find("end_time: 3.5"), 13, "end_time: 2.5");
+  yaml += R"(output:
+  interval: 0.1
+  histories:
+    - {name: on_a, type: reaction, on: lower_left, from: upper_right, interval: 1.0e-9}
+    - {name: on_b, type: reaction, on: upper_right, interval: 1.0e-9}
+)";
+  auto m = measured<2>(yaml);
+  auto momentum = [&](int b) {
+    Vec<2> p = Vec<2>::Zero();
+    const auto& ps = m->sim->bodies()[static_cast<std::size_t>(b)].particles;
+    for (Index i = 0; i < ps.size(); ++i) p += ps.mass[i] * Vec<2>(ps.v[i]);
+    return p;
+  };
+  const Vec<2> a0 = momentum(0), b0 = momentum(1);
+  Vec<2> impulse_a = Vec<2>::Zero(), impulse_b = Vec<2>::Zero();
+  double peak = 0, worst_third_law = 0, first_force = -1, last_time = 0;
+  m->sim->run([&](const Simulation<2>& sim) {
+    const auto a = m->sample(0), b = m->sample(1);  // the mean over the step: the step's force
+    const Vec<2> fa(a[0], a[1]), fb(b[0], b[1]);
+    const double dt = sim.time() - last_time;
+    last_time = sim.time();
+    impulse_a += dt * fa;
+    impulse_b += dt * fb;
+    peak = std::max(peak, fa.norm());
+    worst_third_law = std::max(worst_third_law, (fa + fb).norm());
+    if (first_force < 0 && fa.norm() > 0) first_force = sim.time();
+  });
+  const Vec<2> da = momentum(0) - a0, db = momentum(1) - b0;
+  std::printf(
+      "[ measured ] peak contact force %.6g N/m, first at t = %.4g s; |F_a + F_b| <= %.3g N/m; impulse on a "
+      "(%.9g, %.9g) against its momentum change (%.9g, %.9g) N s/m\n",
+      peak, first_force, worst_third_law, impulse_a[0], impulse_a[1], da[0], da[1]);
+  EXPECT_GT(first_force, 1.0);  // the disks' gap closes at about 1.3-1.6 s
+  EXPECT_GT(peak, 0.1);
+  EXPECT_LT(worst_third_law, 1e-12 * peak);
+  EXPECT_LT((impulse_a - da).norm(), 1e-9 * da.norm());
+  EXPECT_LT((impulse_b - db).norm(), 1e-9 * db.norm());
+  EXPECT_GT(da.norm(), 0.5 * a0.norm());  // the collision reverses most of the disk's momentum
+}
+
 }  // namespace
 }  // namespace mpm::test

@@ -10,6 +10,7 @@
 
 #include "history_support.hpp"
 #include "mpm/boundary/face_condition_kind.hpp"
+#include "mpm/core/closest_name.hpp"
 #include "mpm/core/exact_sum.hpp"
 #include "mpm/simulation/reaction_provider.hpp"
 
@@ -21,6 +22,8 @@ namespace reaction {
 
 struct ReactionSpec {
   int face = -1;            ///< a grid face (order of GridDescription::face_names), or -1
+  int on = -1;              ///< `on:` the force the contact exerts on this body (its index), or -1
+  std::string from;         ///< with `on`: only the force from this partner (a body or a rigid plane)
   std::string partner;      ///< a rigid plane's or rigid body's name (`plane:` / `body:`), when face < 0
   std::string partner_key;  ///< "plane" or "body", for messages
   std::optional<std::array<double, 3>> moment_about;  ///< m
@@ -28,12 +31,21 @@ struct ReactionSpec {
 
 std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescription& scene) {
   ReactionSpec s;
-  const auto face = entry.find("face"), plane = entry.find("plane"), body = entry.find("body");
-  if ((face ? 1 : 0) + (plane ? 1 : 0) + (body ? 1 : 0) != 1)
+  const auto face = entry.find("face"), plane = entry.find("plane"), body = entry.find("body"), on = entry.find("on"),
+             from = entry.find("from");
+  if ((face ? 1 : 0) + (plane ? 1 : 0) + (body ? 1 : 0) + (on ? 1 : 0) != 1)
     reader.fail(entry.self().mark, entry.self().path,
-                "give exactly one of face (a grid face with a velocity condition), plane (a rigid plane) or body (a "
-                "rigid body)");
-  if (face) {
+                "give exactly one of face (a grid face with a velocity condition), plane (a rigid plane), body (a "
+                "rigid body) or on (the contact force on a body)");
+  if (from && !on) reader.fail(*from, "from is for the contact force on a body (on: BODY, from: PARTNER)");
+  if (on) {
+    s.on = read_body(reader, *on, scene);
+    if (from) {
+      s.from = reader.name(*from);
+      if (s.from == scene.bodies[static_cast<std::size_t>(s.on)].name)
+        reader.fail(*from, fmt::format("a body exerts no contact force on itself ('{}')", s.from));
+    }
+  } else if (face) {
     std::vector<std::string> faces(
         GridDescription::face_names.begin(),
         GridDescription::face_names.begin() + 2 * static_cast<std::ptrdiff_t>(scene.dimension));
@@ -65,8 +77,9 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
 template <int Dim>
 class ReactionRecorder final : public Module<Dim> {
  public:
-  ReactionRecorder(int face, const ReactionProvider<Dim>* provider, int partner, const Vec3& about)
-      : face_(face), provider_(provider), partner_(partner), about_(about) {}
+  /// `on` >= 0: the contact force on body `on` from `partner` (-1: all), else partner `partner`'s reaction.
+  ReactionRecorder(int face, const ReactionProvider<Dim>* provider, int partner, const Vec3& about, int on = -1)
+      : face_(face), provider_(provider), partner_(partner), about_(about), on_(on) {}
   std::string_view name() const override { return "reaction history"; }
   /// A face's reaction is summed over the nodes this rank owns and reduced; a partner's is the contact module's,
   /// the same on every rank.
@@ -106,7 +119,7 @@ class ReactionRecorder final : public Module<Dim> {
   }
 
   void end_of_step(StepContext<Dim>& ctx) override {
-    Reaction<Dim> step = provider_->last_reaction(partner_);
+    Reaction<Dim> step = on_ >= 0 ? provider_->last_contact_force(on_, partner_) : provider_->last_reaction(partner_);
     Vec3 f = Vec3::Zero();
     f.template head<Dim>() = step.force;
     step.first_moment -= about_.cross(f);  // about the point instead of the origin
@@ -153,6 +166,7 @@ class ReactionRecorder final : public Module<Dim> {
   const ReactionProvider<Dim>* provider_;
   int partner_;
   Vec3 about_;
+  int on_;
   Reaction<Dim> impulse_;  ///< N s (the moment about the history's point)
   Real span_ = 0;          ///< s
 };
@@ -195,6 +209,30 @@ class ReactionHistory final : public History<Dim> {
   Coordinates coordinates_;
 };
 
+/// The recorder of the contact force on body s.on (from s.from, or from every partner).
+template <int Dim>
+std::shared_ptr<ReactionRecorder<Dim>> contact_force_recorder(const HistoryDescription& h, const ReactionSpec& s,
+                                                              const Simulation<Dim>& sim, const Vec3& about) {
+  for (const auto& m : sim.modules()) {
+    const auto* provider = dynamic_cast<const ReactionProvider<Dim>*>(m.get());
+    if (!provider || provider->contact_partners().empty()) continue;
+    const auto names = provider->contact_partners();
+    int partner = -1;
+    if (!s.from.empty()) {
+      const auto it = std::find(names.begin(), names.end(), s.from);
+      if (it == names.end())
+        fail(h, "from",
+             fmt::format("no body or rigid plane named '{}'{}; bodies and planes: {}", s.from,
+                         did_you_mean(s.from, names), fmt::join(names, ", ")));
+      partner = static_cast<int>(it - names.begin());
+    }
+    return std::make_shared<ReactionRecorder<Dim>>(-1, provider, partner, about, s.on);
+  }
+  fail(h, "on",
+       "the contact force on a body needs a contact: section (without one the bodies share one velocity field "
+       "and no force between them is defined)");
+}
+
 template <int Dim>
 std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescription& scene, Simulation<Dim>& sim,
                                    std::vector<std::string>&) {
@@ -205,6 +243,8 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
   std::shared_ptr<ReactionRecorder<Dim>> recorder;
   if (s.face >= 0) {
     recorder = std::make_shared<ReactionRecorder<Dim>>(s.face, nullptr, 0, about);
+  } else if (s.on >= 0) {
+    recorder = contact_force_recorder(h, s, sim, about);
   } else {
     std::vector<std::string> known;
     for (const auto& m : sim.modules()) {
@@ -240,8 +280,9 @@ HistoryKind reaction_kind() {
   using namespace reaction;
   return history_kind("reaction",
                       "the force (and moment about a point) a grid face with a velocity condition, a rigid plane or a "
-                      "rigid body exerts on the bodies, mean over the interval",
-                      {"face", "plane", "body", "moment_about"}, parse, make<1>, make<2>, make<3>);
+                      "rigid body exerts on the bodies, or the contact exerts on one body (from one partner or all), "
+                      "mean over the interval",
+                      {"face", "plane", "body", "on", "from", "moment_about"}, parse, make<1>, make<2>, make<3>);
 }
 
 }  // namespace mpm::history

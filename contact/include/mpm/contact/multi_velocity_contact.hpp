@@ -148,6 +148,9 @@ class MultiVelocityContact final : public Module<Dim>, public ReactionProvider<D
   std::vector<std::string> reaction_partners() const override;
   /// The force partner k exerted on the deformable bodies in the last step (sum of the step's corrections).
   Reaction<Dim> last_reaction(int k) const override;
+  /// The bodies, then the planes: the slots of the per-pair forces.
+  std::vector<std::string> contact_partners() const override;
+  Reaction<Dim> last_contact_force(int body, int partner) const override;
   /// The prescribed velocity at t of partner k: a plane's, then a rigid body's (the energy sentinel's work).
   Vec<Dim> partner_velocity(int k, Real t) const override {
     const int planes = static_cast<int>(settings_.planes.size());

@@ -2,7 +2,8 @@
 /// \file reaction_provider.hpp
 /// What a module that holds the bodies against something rigid (contact/: rigid planes and rigid bodies)
 /// tells a reaction history (`output.histories[].type: reaction`), without the core naming the module: the
-/// names of its rigid partners and the force each exerted on the deformable bodies in the last step.
+/// names of its rigid partners and the force each exerted on the deformable bodies in the last step, and the
+/// contact force on each body from each partner.
 
 #include <string>
 #include <vector>
@@ -32,6 +33,12 @@ class ReactionProvider {
   /// energy_sentinel.hpp: a plane's at the middle of each step, a rigid body's at its end). The default, at rest,
   /// is right for a partner that does not move.
   virtual Vec<Dim> partner_velocity(int /*k*/, Real /*t*/) const { return Vec<Dim>::Zero(); }
+  /// The names of what can push on a body (`from:` of a reaction history `on:` a body), in a fixed order: the
+  /// bodies (index = the scene's body index), then the rigid planes.
+  virtual std::vector<std::string> contact_partners() const { return {}; }
+  /// The force the contact exerted in the last step on body `body` (the scene's index) from partner `partner` (an
+  /// index into contact_partners()), or from all of them (-1).
+  virtual Reaction<Dim> last_contact_force(int /*body*/, int /*partner*/) const { return {}; }
 };
 
 }  // namespace mpm
