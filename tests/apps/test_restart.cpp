@@ -285,6 +285,7 @@ Case histories() {
       "    - {name: wall, type: reaction, face: x_min, interval: 0.013}\n"
       "    - {name: block_energy, type: energy, body: block, interval: 0.011}\n"
       "    - {name: front, type: extent, body: block, axis: x}\n"
+      "    - {name: block_force, type: force, body: block, interval: 0.009}\n"
       "    - {name: centre, type: probe, point: [0.4, 0.15], radius: 0.08, fields: [velocity, stress]}\n" +
           checkpoint_at(0.15)};
 }

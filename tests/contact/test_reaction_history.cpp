@@ -134,7 +134,8 @@ output:
 // disks of review §6.1.2 with the contact defaults, a row every step. Newton's third law row by row (the pair
 // correction at a node gives the two bodies equal and opposite impulses), zero before they meet, and the force
 // on each disk integrated over the run is its change of momentum (nothing else acts on it: no gravity, no
-// boundary; the internal forces of a body's own field sum to zero, partition of unity).
+// boundary; the internal forces of a body's own field sum to zero, partition of unity), at every step the force
+// history of the body (type: force, from the particles' momenta).
 TEST(ReactionHistory, ContactForceOnABodyIsItsRateOfChangeOfMomentum) {
   std::string yaml = two_disks_scene;
   for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{{"@SCHEME@", "musl"},
@@ -149,6 +150,7 @@ TEST(ReactionHistory, ContactForceOnABodyIsItsRateOfChangeOfMomentum) {
   histories:
     - {name: on_a, type: reaction, on: lower_left, from: upper_right, interval: 1.0e-9}
     - {name: on_b, type: reaction, on: upper_right, interval: 1.0e-9}
+    - {name: force_a, type: force, body: lower_left, interval: 1.0e-9}
 )";
   auto m = measured<2>(yaml);
   auto momentum = [&](int b) {
@@ -159,10 +161,12 @@ TEST(ReactionHistory, ContactForceOnABodyIsItsRateOfChangeOfMomentum) {
   };
   const Vec<2> a0 = momentum(0), b0 = momentum(1);
   Vec<2> impulse_a = Vec<2>::Zero(), impulse_b = Vec<2>::Zero();
-  double peak = 0, worst_third_law = 0, first_force = -1, last_time = 0;
+  double peak = 0, worst_third_law = 0, first_force = -1, last_time = 0, worst_balance = 0;
   m->sim->run([&](const Simulation<2>& sim) {
     const auto a = m->sample(0), b = m->sample(1);  // the mean over the step: the step's force
     const Vec<2> fa(a[0], a[1]), fb(b[0], b[1]);
+    const auto f = m->sample(2);  // the force history: the body's rate of change of momentum
+    worst_balance = std::max(worst_balance, (Vec<2>(f[0], f[1]) - fa).norm());
     const double dt = sim.time() - last_time;
     last_time = sim.time();
     impulse_a += dt * fa;
@@ -179,6 +183,8 @@ TEST(ReactionHistory, ContactForceOnABodyIsItsRateOfChangeOfMomentum) {
   EXPECT_GT(first_force, 1.0);  // the disks' gap closes at about 1.3-1.6 s
   EXPECT_GT(peak, 0.1);
   EXPECT_LT(worst_third_law, 1e-12 * peak);
+  std::printf("[ measured ] |force history - contact force| <= %.3g N/m at every step\n", worst_balance);
+  EXPECT_LT(worst_balance, 1e-9 * peak);
   EXPECT_LT((impulse_a - da).norm(), 1e-9 * da.norm());
   EXPECT_LT((impulse_b - db).norm(), 1e-9 * db.norm());
   EXPECT_GT(da.norm(), 0.5 * a0.norm());  // the collision reverses most of the disk's momentum

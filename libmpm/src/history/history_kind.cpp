@@ -1,4 +1,4 @@
-// The registry of history kinds (history_kind.hpp): the core's five, then whatever modules register; and the
+// The registry of history kinds (history_kind.hpp): the core's six, then whatever modules register; and the
 // pieces every kind shares (the output-field cache, units, building a scene's histories).
 #include "mpm/history/history_kind.hpp"
 
@@ -15,7 +15,7 @@ namespace {
 KindTable<HistoryKind, &HistoryKind::type>& table() {
   static KindTable<HistoryKind, &HistoryKind::type> t{
       std::deque<HistoryKind>{history::probe_kind(), history::reaction_kind(), history::energy_kind(),
-                              history::extent_kind(), history::particle_kind()}};
+                              history::extent_kind(), history::particle_kind(), history::force_kind()}};
   return t;
 }
 

@@ -40,6 +40,7 @@ HistoryKind reaction_kind();
 HistoryKind energy_kind();
 HistoryKind extent_kind();
 HistoryKind particle_kind();
+HistoryKind force_kind();
 
 /// An axis-aligned box of the scene (`{min: [...], max: [...]}`), m; coordinates beyond the dimension are 0.
 struct Box {
