@@ -92,10 +92,13 @@ TEST(Histories, WrittenWithUnitsAndBodiesSumToEnergyCsv) {
   EXPECT_EQ(front.columns,
             (std::vector<std::string>{"time [s]", "step", "x_min [m]", "x_max [m]", "x_span [m]", "count [-]"}));
   EXPECT_GT(front.at(10, "x_max [m]"), front.at(0, "x_max [m]") + 0.05);
-  // `check` builds the histories too: the same warning, on standard output.
+  // `check` builds the histories too: the same warning, on standard error (its report on standard output).
   const auto c = mpm("check " + (dir / "disks.yaml").string(), dir);
   EXPECT_EQ(c.status, 0);
-  EXPECT_NE(c.out.find("history 'corner': no particle"), std::string::npos) << c.out;
+  EXPECT_EQ(c.err.rfind("warning: ", 0), 0u) << c.err;
+  EXPECT_NE(c.err.find("history 'corner': no particle"), std::string::npos) << c.err;
+  EXPECT_NE(c.out.find(": valid."), std::string::npos) << c.out;
+  EXPECT_EQ(c.out.find("warning"), std::string::npos) << c.out;
   fs::remove_all(dir);
 }
 
