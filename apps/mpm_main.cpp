@@ -268,9 +268,13 @@ int main(int argc, char** argv) {
   std::unique_ptr<tbb::global_control> thread_limit;
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
-  // The log of a distributed run comes from rank 0 (errors thrown on one rank only end the job below).
-  std::ostream null_log(nullptr);
-  std::ostream& log = rank == 0 ? std::cerr : null_log;
+  // Results (check's report, the summary of a run) go to stdout, what is said on the way (progress, warnings, notes,
+  // errors) to stderr, as Unix tools do: `mpm run SCENE > summary.txt` keeps the summary and still shows the log
+  // (README.md, "Output streams"). A distributed run prints from rank 0 (errors thrown on one rank only end the job
+  // below). std::cerr is tied to std::cout, so the two keep their order on a terminal or in one file.
+  std::ostream null_stream(nullptr);
+  std::ostream& out = rank == 0 ? std::cout : null_stream;
+  std::ostream& log = rank == 0 ? std::cerr : null_stream;
   if (particles_cmd->parsed()) return particles_command(particles, std::cout, std::cerr);
   if (diff_cmd->parsed()) {
     diff.a = diff_a;
@@ -291,7 +295,7 @@ int main(int argc, char** argv) {
     }
     const mpm::SceneDescription scene = mpm::load_scene(scene_file);
     if (check_cmd->parsed()) {
-      check_scene(scene, std::cout, ranks);
+      check_scene(scene, std::cout, std::cerr, ranks);
       return exit_ok;
     }
     RunOptions options;
@@ -307,7 +311,7 @@ int main(int argc, char** argv) {
     options.test.signal = test_signal_seam;
     options.test.failure = test_failure_seam;
     options.test.kill_in_checkpoint = test_kill_in_checkpoint;
-    const RunSummary summary = run_scene(scene, options, log);
+    const RunSummary summary = run_scene(scene, options, out, log);
     return summary.stopped_by_signal != 0 ? 128 + summary.stopped_by_signal : exit_ok;
   } catch (const mpm::SceneError& e) {  // every rank reads the same scene: one message
     log << "error: " << e.what() << missing_module_note(e, missing_modules()) << '\n';

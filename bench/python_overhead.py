@@ -75,7 +75,7 @@ def part_run(args, build):
             for _ in range(args.rounds):
                 out = subprocess.run([str(build / "apps/mpm"), "run", str(path), "--steps", str(steps), "--threads",
                                       str(args.threads), "-o", str(pathlib.Path(tmp) / "out")],
-                                     check=True, capture_output=True, text=True).stderr
+                                     check=True, capture_output=True, text=True).stdout  # the summary
                 program.append(float(re.search(r"done: \d+ steps .* in ([0-9.]+) s wall", out).group(1)))
                 sim = mpm.Simulation(scene, threads=args.threads, output=False)
                 start = time.perf_counter()

@@ -32,7 +32,8 @@ std::string tile_shape(const TileGrid& t) {
 }  // namespace
 
 template <int Dim>
-void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int ranks, std::ostream& out) {
+void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int ranks, std::ostream& out,
+                 std::ostream& log) {
   const TileGrid tiles = sim.tile_grid();
   if (ranks > tiles.tile_count())
     throw RankCountError(
@@ -87,8 +88,8 @@ void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int 
   fmt::print(out, "ranks: {} on {}, each rank a box of tiles (recursive bisection); {} tiles hold particles\n", ranks,
              tile_shape(tiles), occupied);
   if (!scheme.runs_distributed)
-    fmt::print(out,
-               "warning: scheme {} runs in one process only; the shares below are what a distributed scheme "
+    fmt::print(log,
+               "warning: scheme {} runs in one process only; the shares listed are what a distributed scheme "
                "would get\n",
                scene.solver.scheme_name());
   if (ranks <= listed_ranks) {
@@ -107,7 +108,7 @@ void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int 
   fmt::print(out, "  most loaded rank: {:.3f} x the mean cost (particles + a tenth of a tile's cells)\n",
              mean > 0 ? most / mean : 1.0);
   if (ranks > occupied)
-    fmt::print(out, "warning: only {} tiles hold particles: {} of the {} ranks would start without any\n", occupied,
+    fmt::print(log, "warning: only {} tiles hold particles: {} of the {} ranks would start without any\n", occupied,
                ranks - occupied, ranks);
   fmt::print(out, "  at most {} ranks get particles (one occupied tile each)\n", occupied);
   if (!scheme.runs_distributed) {
@@ -119,8 +120,8 @@ void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int 
              sim.bodies().size() == 1 ? "y" : "ies", sizeof(NodeRecord<Dim>));
 }
 
-template void rank_report<1>(const SceneDescription&, const Simulation<1>&, int, std::ostream&);
-template void rank_report<2>(const SceneDescription&, const Simulation<2>&, int, std::ostream&);
-template void rank_report<3>(const SceneDescription&, const Simulation<3>&, int, std::ostream&);
+template void rank_report<1>(const SceneDescription&, const Simulation<1>&, int, std::ostream&, std::ostream&);
+template void rank_report<2>(const SceneDescription&, const Simulation<2>&, int, std::ostream&, std::ostream&);
+template void rank_report<3>(const SceneDescription&, const Simulation<3>&, int, std::ostream&, std::ostream&);
 
 }  // namespace mpm::app

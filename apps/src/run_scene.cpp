@@ -61,13 +61,13 @@ void restore_simulation(Simulation<Dim>& sim, const RestartPoint& point, std::os
 }
 
 template <int Dim>
-void check(const SceneDescription& scene, std::ostream& out, int ranks) {
+void check(const SceneDescription& scene, std::ostream& out, std::ostream& log, int ranks) {
   auto sim = build_simulation<Dim>(scene);
   std::vector<std::string> warnings;
   build_histories<Dim>(scene, *sim, warnings);  // what only the built bodies can refuse
-  for (const auto& w : warnings) fmt::print(out, "warning: {}\n", w);
+  for (const auto& w : warnings) fmt::print(log, "warning: {}\n", w);
   if (const std::string w = step_warning(estimate_steps<Dim>(scene, *sim)); !w.empty())
-    fmt::print(out, "warning: {}\n", w);
+    fmt::print(log, "warning: {}\n", w);
   const Real dt = sim->next_time_step();
   fmt::print(out,
              "{}: valid. {}D{}, {} particles in {} {}, {} nodes; {} with {} functions; dt = {:.6g} s "
@@ -85,7 +85,7 @@ void check(const SceneDescription& scene, std::ostream& out, int ranks) {
   const MemoryBudget budget = available_memory();
   fmt::print(out, "memory: about {} estimated before building ({:.4g} particles, {} grid nodes), {} available ({})\n",
              format_bytes(memory.bytes()), memory.particles(), memory.nodes, format_bytes(budget.bytes), budget.source);
-  if (ranks > 0) rank_report<Dim>(scene, *sim, ranks, out);
+  if (ranks > 0) rank_report<Dim>(scene, *sim, ranks, out, log);
 }
 
 /// The command line's changes to the scene, as "key: value" lines (recorded in the output files).
@@ -162,9 +162,9 @@ RunSummary particles_of(const Simulation<Dim>& sim, Communicator* comm) {
 
 /// `--profile`: the time per phase, and in a distributed run where the ranks differ.
 template <int Dim>
-void print_profile(RunSummary& summary, const Simulation<Dim>& sim, Communicator* comm, std::ostream& log) {
+void print_profile(RunSummary& summary, const Simulation<Dim>& sim, Communicator* comm, std::ostream& out) {
   summary.profile = sim.profile();
-  fmt::print(log,
+  fmt::print(out,
              "profile (wall time per phase; G2P and the stress update run fused and are split by their CPU "
              "time):\n{}\n",
              format_profile(summary.profile));
@@ -187,15 +187,16 @@ void print_profile(RunSummary& summary, const Simulation<Dim>& sim, Communicator
     const std::string_view name = k < step_phase_count    ? step_phase_names[k]
                                   : k == step_phase_count ? std::string_view("compute")
                                                           : std::string_view("stepping");
-    fmt::print(log, "ranks' {}: min {:.4f} s, max {:.4f} s\n", name, least[k], most[k]);
+    fmt::print(out, "ranks' {}: min {:.4f} s, max {:.4f} s\n", name, least[k], most[k]);
   }
-  fmt::print(log, "ranks' particles at the end: min {:.0f}, max {:.0f}\n", least[n - 1], most[n - 1]);
+  fmt::print(out, "ranks' particles at the end: min {:.0f}, max {:.0f}\n", least[n - 1], most[n - 1]);
 }
 
-/// The end of a run that reached its end time or its step limit: the summary, printed.
+/// The end of a run that reached its end time or its step limit: the summary, printed to `out` (stdout: the
+/// result of the command, which `mpm run SCENE > summary.txt` keeps apart from the log).
 template <int Dim>
 RunSummary summarise(RunSummary summary, const Run<Dim>& run, Index first_step, const RunOptions& options,
-                     Communicator* comm, std::ostream& log) {
+                     Communicator* comm, std::ostream& out) {
   const Simulation<Dim>& sim = run.simulation();
   summary.steps = sim.step();
   summary.warnings = run.warnings();
@@ -209,29 +210,29 @@ RunSummary summarise(RunSummary summary, const Run<Dim>& run, Index first_step, 
   for (const auto& m : sim.modules()) removed += m->removed_energy();
   const Real e0 = run.record().initial_energy, e1 = sim.energy().total() + removed;
   summary.relative_energy_change = e0 != 0 ? (e1 - e0) / std::abs(e0) : e1;
-  for (const auto& line : sim.boundary().outflow_summary()) fmt::print(log, "{}\n", line);
+  for (const auto& line : sim.boundary().outflow_summary()) fmt::print(out, "{}\n", line);
   if (const EnergySentinel<Dim>* sentinel = sim.energy_sentinel()) {
     summary.largest_energy_ratio = sentinel->largest_ratio();
     summary.largest_energy_ratio_step = sentinel->largest_ratio_step();
     if (summary.largest_energy_ratio > 0)
-      fmt::print(log, "energy sentinel: largest balance / tolerance {:.4g} (step {}), external work {:.6g} J\n",
+      fmt::print(out, "energy sentinel: largest balance / tolerance {:.4g} (step {}), external work {:.6g} J\n",
                  summary.largest_energy_ratio, summary.largest_energy_ratio_step, sentinel->work());
     else  // the sentinel watches gains: a run that only lost energy has no largest ratio to report
-      fmt::print(log, "energy sentinel: the balance E(t) - E(0) - W never rose above 0, external work {:.6g} J\n",
+      fmt::print(out, "energy sentinel: the balance E(t) - E(0) - W never rose above 0, external work {:.6g} J\n",
                  sentinel->work());
   }
   for (const auto& m : sim.modules())
     if (const auto* failure = dynamic_cast<const FailureModule<Dim>*>(m.get())) {
       std::vector<std::string> names;
       for (const auto& b : sim.bodies()) names.push_back(b.name);
-      for (const std::string& line : failure->summary(names)) fmt::print(log, "{}\n", line);
+      for (const std::string& line : failure->summary(names)) fmt::print(out, "{}\n", line);
     }
-  fmt::print(log,
+  fmt::print(out,
              "done: {} steps to t = {:.6g} s in {:.3f} s wall, {:.4g} particle-updates/s, {} particles ({} B state "
              "each), relative energy change {:+.3e}; output in {}\n",
              summary.steps, sim.time(), summary.wall_seconds, summary.particle_updates_per_second, summary.particles,
              summary.bytes_per_particle, summary.relative_energy_change, run.output_directory().string());
-  if (options.profile) print_profile(summary, sim, comm, log);
+  if (options.profile) print_profile(summary, sim, comm, out);
   return summary;
 }
 
@@ -251,7 +252,7 @@ RunSummary stopped_by_signal(RunSummary summary, const Run<Dim>& run, const RunC
 }
 
 template <int Dim>
-RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std::ostream& log) {
+RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std::ostream& out, std::ostream& log) {
   const SceneDescription scene = scene_for(scene_in, options);
   const StopSignals stop_signals;  // SIGINT, SIGTERM, SIGUSR1: stop after the current step
   Communicator* const comm =
@@ -277,7 +278,7 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   const RunEnd end = job->run(options.steps ? std::optional<Index>(*options.steps) : std::nullopt, &console);
   console.end_progress_line();
   if (end == RunEnd::interrupted) return stopped_by_signal(std::move(summary), *job, checkpoints, scene, options, log);
-  return summarise(std::move(summary), *job, first_step, options, comm, log);
+  return summarise(std::move(summary), *job, first_step, options, comm, out);
 }
 
 }  // namespace
@@ -294,25 +295,25 @@ template std::unique_ptr<Run<1>> make_run<1>(const SceneDescription&, RunLog&);
 template std::unique_ptr<Run<2>> make_run<2>(const SceneDescription&, RunLog&);
 template std::unique_ptr<Run<3>> make_run<3>(const SceneDescription&, RunLog&);
 
-void check_scene(const SceneDescription& scene, std::ostream& out, int ranks) {
+void check_scene(const SceneDescription& scene, std::ostream& out, std::ostream& log, int ranks) {
   switch (scene.dimension) {
     case 1:
-      return check<1>(scene, out, ranks);
+      return check<1>(scene, out, log, ranks);
     case 2:
-      return check<2>(scene, out, ranks);
+      return check<2>(scene, out, log, ranks);
     default:
-      return check<3>(scene, out, ranks);
+      return check<3>(scene, out, log, ranks);
   }
 }
 
-RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& log) {
+RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& out, std::ostream& log) {
   switch (scene.dimension) {
     case 1:
-      return run<1>(scene, options, log);
+      return run<1>(scene, options, out, log);
     case 2:
-      return run<2>(scene, options, log);
+      return run<2>(scene, options, out, log);
     default:
-      return run<3>(scene, options, log);
+      return run<3>(scene, options, out, log);
   }
 }
 

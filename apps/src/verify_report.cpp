@@ -185,7 +185,7 @@ void write_verify_report(const fs::path& dir, const VerifyReport& r, bool plot, 
     else
       fmt::print(out, "{}: not in the asymptotic range: {}\n", q.name, q.result.verdict);
   }
-  for (const auto& w : r.warnings) fmt::print(out, "warning: {}\n", w);
+  // r.warnings are not repeated here: run_verification printed them on the log (stderr) and verify.md holds them.
   fmt::print(out, "report: {}\n", (dir / "verify.md").string());
 }
 

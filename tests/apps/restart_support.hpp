@@ -28,10 +28,10 @@ struct Case {
 /// How GoogleTest prints a case: its name.
 inline void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
-/// Steps of a finished run ("done: N steps").
+/// Steps of a finished run ("done: N steps", the summary on stdout).
 inline long long steps_done(const Result& r) {
   std::smatch m;
-  if (!std::regex_search(r.err, m, std::regex(R"(done: (\d+) steps)"))) return -1;
+  if (!std::regex_search(r.out, m, std::regex(R"(done: (\d+) steps)"))) return -1;
   return std::stoll(m[1].str());
 }
 

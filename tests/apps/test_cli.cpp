@@ -10,6 +10,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -206,8 +207,8 @@ TEST(Cli, RunWritesParaViewSeriesAndEnergyLog) {
   std::ofstream(dir / "scene.yaml") << block_scene("cfl: 0.5, end_time: 0.2", "[0.1, \"0.2*x\"]");
   const auto r = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string() + " --threads 2", dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.err.find("particle-updates/s"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("relative energy change"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("particle-updates/s"), std::string::npos) << r.out;  // the summary
+  EXPECT_NE(r.out.find("relative energy change"), std::string::npos) << r.out;
   const std::string pvd = slurp(dir / "out" / "particles.pvd");
   EXPECT_NE(pvd.find("particles_000004.vtu"), std::string::npos) << pvd;  // t = 0, 0.05, ..., 0.2
   EXPECT_TRUE(all_finite(dir / "out" / "particles_000004.vtu"));
@@ -219,19 +220,68 @@ TEST(Cli, RunWritesParaViewSeriesAndEnergyLog) {
   fs::remove_all(dir);
 }
 
-// `mpm run --profile` prints the time per phase after the summary, for any scene.
+// `mpm run --profile` prints the time per phase after the summary (on stdout), for any scene.
 TEST(Cli, ProfilePrintsTheTimePerPhase) {
   const auto dir = scratch("profile");
   std::ofstream(dir / "scene.yaml") << block_scene("cfl: 0.5, end_time: 0.1", "[0.1, \"0.2*x\"]");
   const auto r = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out").string() + " --profile", dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto table = r.err.find("profile (wall time per phase");
-  ASSERT_NE(table, std::string::npos) << r.err;
+  const auto table = r.out.find("profile (wall time per phase");
+  ASSERT_NE(table, std::string::npos) << r.out;
   for (const char* row :
        {"\nP2G ", "\ngrid update ", "\nG2P ", "\nstress update ", "\noutput ", "\nother ", "\ntotal "})
-    EXPECT_NE(r.err.find(row, table), std::string::npos) << row << " in " << r.err;
+    EXPECT_NE(r.out.find(row, table), std::string::npos) << row << " in " << r.out;
   const auto plain = mpm("run " + (dir / "scene.yaml").string() + " -o " + (dir / "out2").string(), dir);
-  EXPECT_EQ(plain.err.find("profile (wall time per phase"), std::string::npos) << plain.err;
+  EXPECT_EQ(plain.out.find("profile (wall time per phase"), std::string::npos) << plain.out;
+  fs::remove_all(dir);
+}
+
+// The streams, as Unix tools have them (README.md, "Output streams"): a command's result on stdout, what it says on
+// the way on stderr. The block at rest with end_time 1e6 s: about 3.7e7 steps, the warning of step_estimate.hpp.
+std::string block_for_a_million_seconds(const fs::path& dir) {
+  std::ofstream(dir / "scene.yaml") << block_scene("cfl: 0.5, end_time: 1.0e6", "[0, 0]");
+  return (dir / "scene.yaml").string();
+}
+
+// `mpm run`: the summary alone on stdout (`mpm run SCENE > summary.txt` keeps it), the warning on stderr; both
+// streams into one file (`> log 2>&1`, as bench/ and scripts/ capture a run) keep the log first, the summary last.
+TEST(Cli, RunPrintsTheSummaryOnStdoutAndTheLogOnStderr) {
+  const auto dir = scratch("streams_run");
+  const std::string scene = block_for_a_million_seconds(dir);
+  const std::string run = "run " + scene + " --steps 2 --profile -o " + (dir / "out").string();
+  const auto r = mpm(run, dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("energy sentinel: ", 0), 0u) << r.out;  // the summary's first line: nothing before it
+  EXPECT_NE(r.out.find("\ndone: 2 steps to t = "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nprofile (wall time per phase"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("warning"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("warning: " + scene + ":5:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("solver.end_time: about"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("done:"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("profile"), std::string::npos) << r.err;
+  const fs::path both = dir / "both";
+  const std::string command = std::string(MPM_EXECUTABLE) + " " + run + " > " + both.string() + " 2>&1 < /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const std::string log = slurp(both);
+  const auto warning = log.find("warning: "), done = log.find("done: 2 steps");
+  ASSERT_NE(warning, std::string::npos) << log;
+  ASSERT_NE(done, std::string::npos) << log;
+  EXPECT_LT(warning, done) << log;
+  fs::remove_all(dir);
+}
+
+// `mpm check`: the report on stdout, its warnings on stderr.
+TEST(Cli, CheckPrintsTheReportOnStdoutAndTheWarningsOnStderr) {
+  const auto dir = scratch("streams_check");
+  const std::string scene = block_for_a_million_seconds(dir);
+  const auto r = mpm("check " + scene, dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind(scene + ": valid. 2D", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("\nmemory: about "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("warning"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("warning: " + scene + ":5:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("solver.end_time: about"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("valid."), std::string::npos) << r.err;
   fs::remove_all(dir);
 }
 
@@ -262,7 +312,7 @@ TEST(Cli, ThermalSceneSaysWhichTimeStepBoundGovernsAndWritesTheHeat) {
   EXPECT_NE(check.out.find("heat conduction (diffusion bound"), std::string::npos) << check.out;
   const auto r = mpm("run " + scene.string() + " -o " + (dir / "out").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string log = r.out + r.err;  // the run log goes to the error stream
+  const std::string& log = r.err;  // the time-step note is the run's log, not its summary
   EXPECT_NE(log.find("time step: 0.0005 s, stable bound 0.000625 s governed by heat conduction"), std::string::npos)
       << log;
   std::ifstream energy(dir / "out" / "energy.csv");

@@ -98,10 +98,13 @@ TEST(Histories, WrittenWithUnitsAndBodiesSumToEnergyCsv) {
   std::getline(corner, line);
   std::getline(corner, line);
   EXPECT_EQ(line, "0,0,,,,,,,0");  // time, step, the mean, min and max of velocity_x and _y, count
-  // `check` builds the histories too: the same warning, on standard output.
+  // `check` builds the histories too: the same warning, on standard error (its report on standard output).
   const auto c = mpm("check " + (dir / "disks.yaml").string(), dir);
   EXPECT_EQ(c.status, 0);
-  EXPECT_NE(c.out.find("history 'corner': no particle"), std::string::npos) << c.out;
+  EXPECT_EQ(c.err.rfind("warning: ", 0), 0u) << c.err;
+  EXPECT_NE(c.err.find("history 'corner': no particle"), std::string::npos) << c.err;
+  EXPECT_NE(c.out.find(": valid."), std::string::npos) << c.out;
+  EXPECT_EQ(c.out.find("warning"), std::string::npos) << c.out;
   fs::remove_all(dir);
 }
 

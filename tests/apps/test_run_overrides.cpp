@@ -18,17 +18,17 @@ using cli::scratch;
 
 const fs::path good_scene = fs::path(MPM_SOURCE_DIR) / "tests" / "data" / "good_scene_2d.yaml";
 
-/// The summary line says "done: N steps to t = T s".
-std::string done_line(const std::string& log) {
-  const auto at = log.find("done: ");
-  return at == std::string::npos ? "" : log.substr(at, log.find('\n', at) - at);
+/// The summary line (on stdout) says "done: N steps to t = T s".
+std::string done_line(const std::string& out) {
+  const auto at = out.find("done: ");
+  return at == std::string::npos ? "" : out.substr(at, out.find('\n', at) - at);
 }
 
 TEST(RunOverrides, StepsStopsTheRunAfterNSteps) {
   const auto dir = scratch("steps");
   const auto r = cli::mpm("run " + good_scene.string() + " --steps 3 -o " + (dir / "out").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(done_line(r.err).rfind("done: 3 steps to t = ", 0), 0u) << r.err;
+  EXPECT_EQ(done_line(r.out).rfind("done: 3 steps to t = ", 0), 0u) << r.out << r.err;
   const auto scan = mpm::verification::scan_output(dir / "out");
   EXPECT_TRUE(scan.all_finite());
   EXPECT_GE(scan.vtu_files, 2);       // the first frame and the last one
@@ -41,7 +41,7 @@ TEST(RunOverrides, EndTimeReplacesTheScenesEndTime) {
   const auto dir = scratch("end_time");
   const auto r = cli::mpm("run " + good_scene.string() + " --end-time 0.001 -o " + (dir / "out").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(done_line(r.err).find(" to t = 0.001 s "), std::string::npos) << r.err;
+  EXPECT_NE(done_line(r.out).find(" to t = 0.001 s "), std::string::npos) << r.out << r.err;
   const auto scan = mpm::verification::scan_output(dir / "out");
   EXPECT_TRUE(scan.all_finite());
   ASSERT_FALSE(scan.energy.empty());
@@ -50,7 +50,7 @@ TEST(RunOverrides, EndTimeReplacesTheScenesEndTime) {
   const auto both =
       cli::mpm("run " + good_scene.string() + " --end-time 1 --steps 2 -o " + (dir / "out2").string(), dir);
   ASSERT_EQ(both.status, 0) << both.err;
-  EXPECT_EQ(done_line(both.err).rfind("done: 2 steps to t = ", 0), 0u) << both.err;
+  EXPECT_EQ(done_line(both.out).rfind("done: 2 steps to t = ", 0), 0u) << both.out << both.err;
   fs::remove_all(dir);
 }
 
@@ -102,7 +102,7 @@ TEST(RunOverrides, EveryExampleRunsThreeSteps) {
       const fs::path out = dir / (folder.path().filename().string() + "_" + entry.path().stem().string());
       const auto r = cli::mpm("run " + entry.path().string() + " --steps 3 --threads 2 -o " + out.string(), dir);
       EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.err;
-      EXPECT_EQ(done_line(r.err).rfind("done: 3 steps", 0), 0u) << entry.path() << "\n" << r.err;
+      EXPECT_EQ(done_line(r.out).rfind("done: 3 steps", 0), 0u) << entry.path() << "\n" << r.out << r.err;
       const auto scan = mpm::verification::scan_output(out);
       EXPECT_TRUE(scan.all_finite()) << entry.path() << ": " << (scan.bad.empty() ? "" : scan.bad.front());
       EXPECT_GE(scan.vtu_files, 2) << entry.path();

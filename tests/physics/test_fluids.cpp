@@ -329,7 +329,7 @@ TEST(NewtonianFluid, WarnsWhenTheDensityDeviatesTooMuch) {
     options.output_directory = dir;
     options.progress = false;
     std::ostringstream log;
-    const auto summary = app::run_scene(s, options, log);
+    const auto summary = app::run_scene(s, options, log, log);
     EXPECT_EQ(summary.warnings.size(), warns ? 1u : 0u) << log.str();
     if (warns) {
       EXPECT_NE(log.str().find("warning: body column"), std::string::npos) << log.str();

@@ -53,7 +53,7 @@ SentinelRun run(const std::string& yaml, const std::string& name) {
   options.output_directory = dir;
   std::ostringstream log;
   SentinelRun r;
-  r.summary = app::run_scene(parse_scene(yaml, name + ".yaml"), options, log);
+  r.summary = app::run_scene(parse_scene(yaml, name + ".yaml"), options, log, log);
   r.log = log.str();
   fs::remove_all(dir);
   return r;

@@ -207,7 +207,7 @@ StabilityOutcome run_scene_text(const std::string& yaml, const std::string& name
     app::RunOptions options;
     options.output_directory = dir;
     options.steps = steps;
-    const app::RunSummary summary = app::run_scene(scene, options, log);
+    const app::RunSummary summary = app::run_scene(scene, options, log, log);  // the summary in the log too
     o.steps = summary.steps;
     o.largest_energy_ratio = summary.largest_energy_ratio;
   } catch (const SceneError& e) {

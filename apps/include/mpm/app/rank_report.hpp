@@ -19,7 +19,10 @@ struct RankCountError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The report goes to `out`, its warnings (a scheme that runs in one process only, ranks that would start without
+/// particles) to `log`.
 template <int Dim>
-void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int ranks, std::ostream& out);
+void rank_report(const SceneDescription& scene, const Simulation<Dim>& sim, int ranks, std::ostream& out,
+                 std::ostream& log);
 
 }  // namespace mpm::app

@@ -86,15 +86,19 @@ struct RunSummary {
 template <int Dim>
 std::unique_ptr<Run<Dim>> make_run(const SceneDescription& scene, RunLog& log);
 
-/// Builds the scene's simulation without running it (throws SceneError like load_scene). `ranks` > 0 adds what a
-/// distributed run on that many ranks would hold (rank_report.hpp; throws RankCountError above the tile count).
-void check_scene(const SceneDescription& scene, std::ostream& out, int ranks = 0);
+/// Builds the scene's simulation without running it (throws SceneError like load_scene). The report goes to `out`,
+/// its warnings to `log` (the program's stdout and stderr: README.md, "Output streams"). `ranks` > 0 adds
+/// what a distributed run on that many ranks would hold (rank_report.hpp; throws RankCountError above the tile count).
+void check_scene(const SceneDescription& scene, std::ostream& out, std::ostream& log, int ranks = 0);
 
 /// Runs the scene to its end time (or options.end_time, or options.steps steps, or until SIGINT, SIGTERM or
 /// SIGUSR1), writing output and checkpoints, or continues a checkpoint (options.restart); returns the
-/// summary. Throws RestartError or CheckpointError for a checkpoint it cannot continue. Throws SceneError for a scene
-/// that only fails once built, StabilityError (after writing the last good state) if the guard trips,
-/// std::invalid_argument for steps < 1 or an end time that is not positive.
-RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& log);
+/// summary. The summary of a run that reached its end (the outflow, energy sentinel and failure lines, "done: ...",
+/// the profile) is printed to `out`; everything said on the way (restart and fork lines, warnings, notes, the
+/// progress line, the time-step note, a stop by signal, the flight recorder) to `log` (the program's stdout and
+/// stderr; the same stream for both keeps the order). Throws RestartError or CheckpointError for a checkpoint it
+/// cannot continue. Throws SceneError for a scene that only fails once built, StabilityError (after writing the last
+/// good state) if the guard trips, std::invalid_argument for steps < 1 or an end time that is not positive.
+RunSummary run_scene(const SceneDescription& scene, const RunOptions& options, std::ostream& out, std::ostream& log);
 
 }  // namespace mpm::app
