@@ -56,8 +56,7 @@ struct Slip {
   const char* unit;
   double factor;
 };
-constexpr std::array density_slips{Slip{"g/cm^3", 1e3}, Slip{"t/mm^3", 1e12}, Slip{"g/mm^3", 1e6},
-                                   Slip{"g/m^3", 1e-3}};
+constexpr std::array density_slips{Slip{"g/cm^3", 1e3}, Slip{"t/mm^3", 1e12}, Slip{"g/mm^3", 1e6}, Slip{"g/m^3", 1e-3}};
 
 /// ": g/cm^3? (7830 kg/m^3: write `7.83 g/cm^3`)" for the first slip that brings `value` into [low, high], or "".
 std::string density_slip(double value, double low, double high) {
@@ -199,7 +198,8 @@ void check_density(const SceneDescription& scene, const Simulation<Dim>& sim, st
         } else if (rho < lightest_dense_solid) {
           Real c = 0;  // its bodies' wave speed at rest
           for (const auto& b : sim.bodies())
-            if (scene.bodies[static_cast<std::size_t>(b.index)].material == name) c = std::max(c, wave_speed_at_rest(b));
+            if (scene.bodies[static_cast<std::size_t>(b.index)].material == name)
+              c = std::max(c, wave_speed_at_rest(b));
           if (c > fastest_solid_wave)
             message = fmt::format(
                 "density {} kg/m^3 is far below any solid's: with its moduli its waves would run at {:.3g} m/s, "
@@ -209,15 +209,17 @@ void check_density(const SceneDescription& scene, const Simulation<Dim>& sim, st
         break;
       case MaterialPhase::liquid:
         if (rho < lightest_liquid || rho > densest_matter)
-          message = fmt::format("density {} kg/m^3 is outside any liquid's (500 to 25,000 kg/m^3: water 1000, "
-                                "mercury 13,534){}",
-                                rho, density_slip(rho, lightest_liquid, densest_matter));
+          message = fmt::format(
+              "density {} kg/m^3 is outside any liquid's (500 to 25,000 kg/m^3: water 1000, "
+              "mercury 13,534){}",
+              rho, density_slip(rho, lightest_liquid, densest_matter));
         break;
       case MaterialPhase::gas:
         if (rho < lightest_gas || rho > densest_gas)
-          message = fmt::format("density {} kg/m^3 is outside what a gas has at ordinary pressures (0.01 to 100 "
-                                "kg/m^3: air at 1 atm and 20 C has 1.2){}",
-                                rho, density_slip(rho, lightest_gas, densest_gas));
+          message = fmt::format(
+              "density {} kg/m^3 is outside what a gas has at ordinary pressures (0.01 to 100 "
+              "kg/m^3: air at 1 atm and 20 C has 1.2){}",
+              rho, density_slip(rho, lightest_gas, densest_gas));
         break;
       case MaterialPhase::rigid:  // its density only gives its particles a mass
         break;
@@ -234,23 +236,25 @@ void check_yield_stress(const SceneDescription& scene, std::vector<std::string>&
     const double sy = yield->second;
     const std::string key = modulus_key(material);
     const std::string modulus =
-        key == "youngs_modulus" ? fmt::format("the Young's modulus ({:.6g} Pa)", *E)
-                                : fmt::format("the Young's modulus 9KG/(3K+G) of its bulk and shear moduli ({:.4g} Pa)", *E);
+        key == "youngs_modulus"
+            ? fmt::format("the Young's modulus ({:.6g} Pa)", *E)
+            : fmt::format("the Young's modulus 9KG/(3K+G) of its bulk and shear moduli ({:.4g} Pa)", *E);
     if (sy >= *E) {
       // The unit the modulus was probably written in: one that gives a solid's modulus and a yield strain of
       // 0.01-5 %.
       std::string slip;
       for (const auto& [unit, factor] : {std::pair{"MPa", 1e6}, std::pair{"GPa", 1e9}, std::pair{"kPa", 1e3}})
         if (const double e = *E * factor; e <= stiffest_solid && sy / e >= 1e-4 && sy / e <= 0.05) {
-          slip = fmt::format(": {}? ({} {} = {:.4g} Pa: write `{} {}`)", unit, *E, unit, e,
-                             material.parameters.at(key), unit);
+          slip = fmt::format(": {}? ({} {} = {:.4g} Pa: write `{} {}`)", unit, *E, unit, e, material.parameters.at(key),
+                             unit);
           break;
         }
       warnings.push_back(material_warning(
           scene, name, key,
-          fmt::format("a yield stress ({:.6g} Pa) above {}: the material can never yield (a yield strain of {:.3g}; metals "
-                      "yield at 0.1-2 %){}",
-                      sy, modulus, sy / *E, slip)));
+          fmt::format(
+              "a yield stress ({:.6g} Pa) above {}: the material can never yield (a yield strain of {:.3g}; metals "
+              "yield at 0.1-2 %){}",
+              sy, modulus, sy / *E, slip)));
       continue;
     }
     const auto density = material.parameters.find("density");
@@ -296,11 +300,12 @@ void check_overlap(const SceneDescription& scene, const Simulation<Dim>& sim, st
       const auto& later = scene.bodies[std::max(i, j)];
       warnings.push_back(SceneError::format(
           later.where, fmt::format("bodies[{}]", std::max(i, j)),
-          fmt::format("bodies '{}' and '{}' overlap at t = 0: {} of the {} particles of '{}' ({:.3g} %) lie closer than "
-                      "half a particle spacing ({:.3g} m) to particles of '{}' (bodies that only touch keep a spacing "
-                      "between their particles); move or shrink one",
-                      bodies[i].name, bodies[j].name, close, n, small.name, 100.0 * static_cast<double>(close) /
-                      static_cast<double>(n), r, large.name)));
+          fmt::format(
+              "bodies '{}' and '{}' overlap at t = 0: {} of the {} particles of '{}' ({:.3g} %) lie closer than "
+              "half a particle spacing ({:.3g} m) to particles of '{}' (bodies that only touch keep a spacing "
+              "between their particles); move or shrink one",
+              bodies[i].name, bodies[j].name, close, n, small.name,
+              100.0 * static_cast<double>(close) / static_cast<double>(n), r, large.name)));
     }
 }
 
@@ -317,7 +322,8 @@ void check_wave_transit(const SceneDescription& scene, const Simulation<Dim>& si
   std::vector<Transit> transits;
   for (const auto& b : sim.bodies()) {
     const Real c = wave_speed_at_rest(b);
-    if (!(c > 0)) continue;  // rigid
+    // Rigid (no waves), or waves faster than in any matter: then the material is the slip (rule 1), not the end time.
+    if (!(c > 0) || c > fastest_solid_wave) continue;
     const Bounds<Dim> box = bounds_of(b.particles);
     Real length = 0;  // the box of the particles, widened by half a spacing on each side
     for (int d = 0; d < Dim; ++d) length = std::max(length, box.hi[d] - box.lo[d] + spacing(scene, sim, b.index, d));
@@ -336,8 +342,8 @@ void check_wave_transit(const SceneDescription& scene, const Simulation<Dim>& si
                     end, h_min, t.body->name, t.length, t.speed, t.time, t.time / end)));
     return;
   }
-  const Transit& slowest =
-      *std::max_element(transits.begin(), transits.end(), [](const Transit& a, const Transit& b) { return a.time < b.time; });
+  const Transit& slowest = *std::max_element(transits.begin(), transits.end(),
+                                             [](const Transit& a, const Transit& b) { return a.time < b.time; });
   if (end > most_transits * slowest.time)
     warnings.push_back(SceneError::format(
         where, "solver.end_time",
@@ -357,10 +363,10 @@ std::vector<std::string> plausibility_warnings(const SceneDescription& scene, co
   return warnings;
 }
 
-#define MPM_PLAUSIBILITY(D)                                                                                         \
-  template void check_density<D>(const SceneDescription&, const Simulation<D>&, std::vector<std::string>&);       \
-  template void check_overlap<D>(const SceneDescription&, const Simulation<D>&, std::vector<std::string>&);       \
-  template void check_wave_transit<D>(const SceneDescription&, const Simulation<D>&, std::vector<std::string>&);  \
+#define MPM_PLAUSIBILITY(D)                                                                                      \
+  template void check_density<D>(const SceneDescription&, const Simulation<D>&, std::vector<std::string>&);      \
+  template void check_overlap<D>(const SceneDescription&, const Simulation<D>&, std::vector<std::string>&);      \
+  template void check_wave_transit<D>(const SceneDescription&, const Simulation<D>&, std::vector<std::string>&); \
   template std::vector<std::string> plausibility_warnings<D>(const SceneDescription&, const Simulation<D>&);
 MPM_PLAUSIBILITY(1)
 MPM_PLAUSIBILITY(2)

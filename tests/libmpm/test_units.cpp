@@ -90,8 +90,11 @@ TEST(Units, AnUnknownOrMalformedUnitIsRefusedWithWhatWouldDo) {
   EXPECT_NE(refusal("210 Gpa", "Pa").find("unknown unit 'Gpa' (did you mean 'GPa'?)"), std::string::npos);
   EXPECT_NE(refusal("210 mpa", "Pa").find("(did you mean 'mPa' or 'MPa'?)"), std::string::npos);
   EXPECT_NE(refusal("3 psi", "Pa").find("unknown unit 'psi'"), std::string::npos);
-  EXPECT_NE(refusal("3 psi", "Pa").find("m g s K N Pa J W"), std::string::npos);  // the units that would do
+  EXPECT_NE(refusal("3 psi", "Pa").find("m g s K N Pa J W"), std::string::npos);     // the units that would do
   EXPECT_NE(refusal("3 kmin", "s").find("unknown unit 'kmin'"), std::string::npos);  // min takes no prefix
+  EXPECT_NE(refusal("7.85 g/cc", "kg/m^3").find("unknown unit 'cc' (did you mean 'cm^3'?)"), std::string::npos);
+  EXPECT_NE(refusal("3 psi", "Pa").find("(imperial units are not read: write SI)"), std::string::npos);
+  EXPECT_NE(refusal("20 C", "K").find("(temperatures are absolute: K)"), std::string::npos);
   EXPECT_NE(refusal("460 J/kg/K", "J/(kg K)").find("only one factor may follow '/' (write J/(kg K)"),
             std::string::npos);
   EXPECT_NE(refusal("460 J/kg K", "J/(kg K)").find("only one factor may follow '/'"), std::string::npos);
@@ -130,7 +133,8 @@ TEST(Units, EveryUnitAKeyOrAParameterDeclaresIsOneTheParserReads) {
   for (const auto& name : mpm::shape_kind_names())
     each_key(mpm::find_shape_kind(name)->keys, [&](const mpm::io::KeySpec& k) { parses(name + "." + k.name, k.unit); });
   for (const auto& model : mpm::material_model_names())
-    for (const auto& p : mpm::material_parameters(*mpm::find_material_model(model))) parses(model + "." + p.name, p.unit);
+    for (const auto& p : mpm::material_parameters(*mpm::find_material_model(model)))
+      parses(model + "." + p.name, p.unit);
   EXPECT_GT(units_read, 100);
 }
 
@@ -181,8 +185,7 @@ TEST(Units, TheReaderNamesTheKeyOfAUnitItRefuses) {
   EXPECT_NE(load_error(disk_scene("7850", "210e9", "210 GPa", "0", "1"))
                 .find("bodies[0].shape.radius: expected a length (m), got a pressure (GPa)"),
             std::string::npos);
-  EXPECT_NE(load_error(disk_scene("7850", "210e9", "0.2", "-800 m/ss", "1"))
-                .find("bodies[0].velocity[1]: "),
+  EXPECT_NE(load_error(disk_scene("7850", "210e9", "0.2", "-800 m/ss", "1")).find("bodies[0].velocity[1]: "),
             std::string::npos);
   EXPECT_NE(load_error(disk_scene("7850", "210e9", "0.2", "-800 m/ss", "1")).find("unknown unit 'ss'"),
             std::string::npos);
@@ -192,9 +195,9 @@ TEST(Units, TheReaderNamesTheKeyOfAUnitItRefuses) {
             std::string::npos);
   // An expression is still muparser's; a velocity of the wrong dimension is refused.
   EXPECT_EQ(load_error(disk_scene("7850", "210e9", "0.2", "\"-800*x\"", "1")), "");
-  EXPECT_NE(load_error(disk_scene("7850", "210e9", "0.2", "-800 kg", "1"))
-                .find("expected a velocity (m/s), got a mass (kg)"),
-            std::string::npos);
+  EXPECT_NE(
+      load_error(disk_scene("7850", "210e9", "0.2", "-800 kg", "1")).find("expected a velocity (m/s), got a mass (kg)"),
+      std::string::npos);
 }
 
 TEST(Units, AKeyWithoutAUnitRefusesOne) {

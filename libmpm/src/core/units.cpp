@@ -60,10 +60,9 @@ struct Prefix {
 };
 
 constexpr std::array prefixes{
-    Prefix{"p", -12}, Prefix{"n", -9}, Prefix{"u", -6},
-    Prefix{"\u00b5", -6},  // µ, the micro sign
-    Prefix{"\u03bc", -6},  // μ, the Greek mu
-    Prefix{"m", -3},  Prefix{"c", -2}, Prefix{"k", 3},  Prefix{"M", 6}, Prefix{"G", 9}, Prefix{"T", 12},
+    Prefix{"p", -12},     Prefix{"n", -9}, Prefix{"u", -6}, Prefix{"\u00b5", -6},  // µ, the micro sign
+    Prefix{"\u03bc", -6},                                                          // μ, the Greek mu
+    Prefix{"m", -3},      Prefix{"c", -2}, Prefix{"k", 3},  Prefix{"M", 6},       Prefix{"G", 9}, Prefix{"T", 12},
 };
 
 /// Every symbol a scene may write: the bases, and the prefixed ones (for "did you mean").
@@ -84,8 +83,35 @@ bool same_ignoring_case(std::string_view a, std::string_view b) {
          });
 }
 
+/// Words a scene may write for a unit that is not a symbol here, and what to write instead.
+struct Hint {
+  std::string_view word;
+  std::string_view hint;
+};
+constexpr std::array hints{
+    Hint{"cc", " (did you mean 'cm^3'?)"},
+    Hint{"sec", " (did you mean 's'?)"},
+    Hint{"secs", " (did you mean 's'?)"},
+    Hint{"msec", " (did you mean 'ms'?)"},
+    Hint{"usec", " (did you mean 'us'?)"},
+    Hint{"hr", " (did you mean 'h'?)"},
+    Hint{"hrs", " (did you mean 'h'?)"},
+    Hint{"mins", " (did you mean 'min'?)"},
+    Hint{"C", " (temperatures are absolute: K)"},
+    Hint{"degC", " (temperatures are absolute: K)"},
+    Hint{"\u00b0C", " (temperatures are absolute: K)"},
+    Hint{"psi", " (imperial units are not read: write SI)"},
+    Hint{"ksi", " (imperial units are not read: write SI)"},
+    Hint{"lb", " (imperial units are not read: write SI)"},
+    Hint{"lbf", " (imperial units are not read: write SI)"},
+    Hint{"in", " (imperial units are not read: write SI)"},
+    Hint{"ft", " (imperial units are not read: write SI)"},
+};
+
 /// " (did you mean 'GPa'?)", " (did you mean 'MPa' or 'mPa'?)" or nothing.
 std::string suggestion(std::string_view word) {
+  for (const Hint& h : hints)
+    if (h.word == word) return std::string(h.hint);
   const auto names = all_symbols();
   std::vector<std::string> same_letters;
   for (const auto& n : names)
@@ -104,7 +130,8 @@ const std::string& known_units() {
 Unit times(const Unit& a, const Unit& b, int sign) {
   Unit u{sign > 0 ? a.factor * b.factor : a.factor / b.factor, a.decimal_exponent + sign * b.decimal_exponent,
          a.dimension};
-  for (std::size_t i = 0; i < u.dimension.exponent.size(); ++i) u.dimension.exponent[i] += sign * b.dimension.exponent[i];
+  for (std::size_t i = 0; i < u.dimension.exponent.size(); ++i)
+    u.dimension.exponent[i] += sign * b.dimension.exponent[i];
   return u;
 }
 
@@ -169,7 +196,8 @@ class UnitParser {
       skip_space();
       if (at_end() || peek() != ')') fail("a '(' without its ')'");
       ++pos_;
-    } else if (peek() == '1' && (pos_ + 1 == text_.size() || !std::isdigit(static_cast<unsigned char>(text_[pos_ + 1])))) {
+    } else if (peek() == '1' &&
+               (pos_ + 1 == text_.size() || !std::isdigit(static_cast<unsigned char>(text_[pos_ + 1])))) {
       ++pos_;  // the numerator of 1/s
     } else if (is_letter(pos_)) {
       u = symbol();
@@ -189,7 +217,8 @@ class UnitParser {
     const char* begin = text_.data() + pos_ + (!at_end() && peek() == '+' ? 1 : 0);
     int n = 0;
     const auto [end, error] = std::from_chars(begin, text_.data() + text_.size(), n);
-    if (error != std::errc() || end == begin) fail(fmt::format("expected an integer power after '^', got '{}'", rest()));
+    if (error != std::errc() || end == begin)
+      fail(fmt::format("expected an integer power after '^', got '{}'", rest()));
     pos_ = static_cast<std::size_t>(end - text_.data());
     return power(u, n);
   }
@@ -291,7 +320,8 @@ std::string describe(const Dimension& dimension) {
   constexpr std::array<std::string_view, 5> symbols{"kg", "m", "s", "K", "rad"};
   std::string text = "a quantity in";
   for (std::size_t i = 0; i < symbols.size(); ++i)
-    if (const int e = dimension.exponent[i]) text += e == 1 ? fmt::format(" {}", symbols[i]) : fmt::format(" {}^{}", symbols[i], e);
+    if (const int e = dimension.exponent[i])
+      text += e == 1 ? fmt::format(" {}", symbols[i]) : fmt::format(" {}^{}", symbols[i], e);
   return text;
 }
 

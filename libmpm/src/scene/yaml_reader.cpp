@@ -75,9 +75,11 @@ double YamlReader::number(const YamlValue& value, const Range& range, std::strin
     fail(value, e.what());
   }
   const std::string written = x->unit.empty() ? "" : fmt::format(" ({})", value.node.Scalar());
-  if (!std::isfinite(si)) fail(value, fmt::format("{} is beyond the range of a double in {}", value.node.Scalar(), unit));
+  if (!std::isfinite(si))
+    fail(value, fmt::format("{} is beyond the range of a double in {}", value.node.Scalar(), unit));
   if (!range.contains(si))
-    fail(value, fmt::format("out of range: must be {}, got {}{}{}", range.describe(unit), si, unit_suffix(unit), written));
+    fail(value,
+         fmt::format("out of range: must be {}, got {}{}{}", range.describe(unit), si, unit_suffix(unit), written));
   return si;
 }
 
