@@ -13,6 +13,7 @@
 #include "mpm/app/body_summary.hpp"
 #include "mpm/app/memory_budget.hpp"
 #include "mpm/app/memory_estimate.hpp"
+#include "mpm/app/plausibility.hpp"
 #include "mpm/app/rank_report.hpp"
 #include "mpm/app/run_checkpoints.hpp"
 #include "mpm/app/run_console.hpp"
@@ -68,6 +69,7 @@ void check(const SceneDescription& scene, std::ostream& out, std::ostream& log, 
   for (const auto& w : warnings) fmt::print(log, "warning: {}\n", w);
   if (const std::string w = step_warning(estimate_steps<Dim>(scene, *sim)); !w.empty())
     fmt::print(log, "warning: {}\n", w);
+  for (const auto& w : plausibility_warnings<Dim>(scene, *sim)) fmt::print(log, "warning: {}\n", w);
   const Real dt = sim->next_time_step();
   fmt::print(out,
              "{}: valid. {}D{}, {} particles in {} {}, {} nodes; {} with {} functions; dt = {:.6g} s "
@@ -286,8 +288,9 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
 template <int Dim>
 std::unique_ptr<Run<Dim>> make_run(const SceneDescription& scene, RunLog& log) {
   auto sim = build_simulation<Dim>(scene);
-  std::vector<std::string> warnings;  // a time step collapsed by a typo
+  std::vector<std::string> warnings;  // a time step collapsed by a typo, implausible numbers
   if (std::string w = step_warning(estimate_steps<Dim>(scene, *sim)); !w.empty()) warnings.push_back(std::move(w));
+  for (auto& w : plausibility_warnings<Dim>(scene, *sim)) warnings.push_back(std::move(w));
   return std::make_unique<Run<Dim>>(scene, std::move(sim), log, std::move(warnings));
 }
 

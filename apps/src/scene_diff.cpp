@@ -3,8 +3,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
+#include "mpm/core/units.hpp"
 #include "mpm/scene/scene_error.hpp"
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/yaml_reader.hpp"
@@ -55,10 +57,21 @@ std::string text_of(const YAML::Node& node) {
   return out.c_str();
 }
 
+/// The value of a number as SI (`25 us` is 2.5e-5: a bare number is in its key's SI unit), or nothing.
+std::optional<double> si_value(const std::string& text) {
+  const auto x = units::split_number(text);
+  if (!x) return std::nullopt;
+  try {
+    return x->unit.empty() ? x->number : x->number * units::parse_unit(x->unit).size();
+  } catch (const units::UnitError&) {
+    return std::nullopt;
+  }
+}
+
 bool same_scalar(const YAML::Node& a, const YAML::Node& b) {
   if (a.Scalar() == b.Scalar()) return true;
-  const auto x = io::parse_number(a.Scalar()), y = io::parse_number(b.Scalar());
-  return x && y && *x == *y;
+  const auto x = si_value(a.Scalar()), y = si_value(b.Scalar());
+  return x && y && (*x == *y || std::abs(*x - *y) <= 1e-15 * std::abs(*x));  // 7.85 g/cm^3 and 7850 alike
 }
 
 class Differ {

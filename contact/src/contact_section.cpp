@@ -55,7 +55,7 @@ bool is_rigid(const SceneDescription& scene, const std::string& body) {
 std::array<std::string, 3> velocity(const YamlReader& reader, const YamlValue& value, int dimension) {
   std::array<std::string, 3> components{"0", "0", "0"};
   const auto items = reader.list(value, dimension, "components");
-  for (int d = 0; d < dimension; ++d) components[d] = reader.expression(items[d], {"t"});
+  for (int d = 0; d < dimension; ++d) components[d] = reader.expression(items[d], {"t"}, "m/s");
   return components;
 }
 

@@ -25,7 +25,8 @@ MaterialModel rigid_model() {
               "density (only gives the rigid particles a mass, used to find contact nodes and normals)")},
           .make_1d = &make_rigid<1>,
           .make_2d = &make_rigid<2>,
-          .make_3d = &make_rigid<3>};
+          .make_3d = &make_rigid<3>,
+          .phase = MaterialPhase::rigid};
 }
 
 }  // namespace

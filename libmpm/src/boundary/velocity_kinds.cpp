@@ -107,7 +107,7 @@ std::any parse_prescribed(const io::YamlReader& reader, const io::YamlValue& val
     const auto components = reader.list(*velocity, face.dimension, "components");
     for (int d = 0; d < face.dimension; ++d) {
       if (components[d].node.IsScalar() && components[d].node.Scalar() == "free") continue;
-      spec.velocity[d] = reader.expression(components[d], {"t"});
+      spec.velocity[d] = reader.expression(components[d], {"t"}, "m/s");
     }
   }
   if (traction) {
@@ -116,7 +116,7 @@ std::any parse_prescribed(const io::YamlReader& reader, const io::YamlValue& val
       if (spec.velocity[d])
         reader.fail(components[d], fmt::format("component {} of face {} has both a velocity and a traction",
                                                axis_names[d], face_names[static_cast<std::size_t>(face.face)]));
-      spec.traction[d] = reader.expression(components[d], {"t"});
+      spec.traction[d] = reader.expression(components[d], {"t"}, "Pa");
     }
   }
   return spec;

@@ -141,7 +141,7 @@ BodyDescription read_body(const YamlReader& reader, const YamlValue& value, std:
   body.velocity.fill(map.spec("velocity").default_text());
   if (const auto velocity = map.find("velocity")) {
     const auto components = reader.list(*velocity, dimension, "components");
-    for (int d = 0; d < dimension; ++d) body.velocity[d] = reader.expression(components[d], {"x", "y", "z"});
+    for (int d = 0; d < dimension; ++d) body.velocity[d] = reader.expression(components[d], {"x", "y", "z"}, "m/s");
   }
   body.domains = map.choice("domains");
   body.exact_volume = read_volume(map, body.shape, scene);

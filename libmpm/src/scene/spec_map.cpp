@@ -110,7 +110,7 @@ std::string SpecMap::choice(std::string_view key) const {
 std::string SpecMap::expression(std::string_view key, const std::vector<std::string>& variables) const {
   const KeySpec& s = spec(key);
   if (const auto value = s.required ? std::optional(map_.required(key)) : map_.find(key))
-    return reader_.expression(*value, variables);
+    return reader_.expression(*value, variables, s.unit);
   return spec_default<std::string>(s);
 }
 

@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -12,6 +13,7 @@
 
 #include "mpm/core/closest_name.hpp"
 #include "mpm/core/expression.hpp"
+#include "mpm/core/units.hpp"
 #include "mpm/scene/scene_error.hpp"
 
 namespace mpm::io {
@@ -56,15 +58,29 @@ void YamlReader::fail(const YamlValue& value, const std::string& message) const 
 
 double YamlReader::number(const YamlValue& value) const {
   if (value.node.IsScalar())
-    if (const auto x = parse_number(value.node.Scalar())) return *x;
+    if (const auto x = units::split_number(value.node.Scalar())) {
+      if (x->unit.empty()) return x->number;
+      fail(value, fmt::format("expected a plain number (this key has no unit), got '{}'", value.node.Scalar()));
+    }
   fail(value, "expected a number, got " + describe(value.node));
 }
 
 double YamlReader::number(const YamlValue& value, const Range& range, std::string_view unit) const {
-  const double x = number(value);
-  if (!range.contains(x))
-    fail(value, fmt::format("out of range: must be {}, got {}{}", range.describe(unit), x, unit_suffix(unit)));
-  return x;
+  const auto x = value.node.IsScalar() ? units::split_number(value.node.Scalar()) : std::nullopt;
+  if (!x) fail(value, "expected a number, got " + describe(value.node));
+  double si = 0;
+  try {
+    si = units::to_key_unit(*x, unit);
+  } catch (const units::UnitError& e) {
+    fail(value, e.what());
+  }
+  const std::string written = x->unit.empty() ? "" : fmt::format(" ({})", value.node.Scalar());
+  if (!std::isfinite(si))
+    fail(value, fmt::format("{} is beyond the range of a double in {}", value.node.Scalar(), unit));
+  if (!range.contains(si))
+    fail(value,
+         fmt::format("out of range: must be {}, got {}{}{}", range.describe(unit), si, unit_suffix(unit), written));
+  return si;
 }
 
 int YamlReader::integer(const YamlValue& value, int minimum) const {
@@ -137,18 +153,32 @@ std::array<double, 3> YamlReader::vector(const YamlValue& value, int dimension, 
   return result;
 }
 
-std::string YamlReader::expression(const YamlValue& value, const std::vector<std::string>& variables) const {
+std::string YamlReader::expression(const YamlValue& value, const std::vector<std::string>& variables,
+                                   std::string_view unit) const {
   const std::string allowed = fmt::format("{}", fmt::join(variables, ", "));
   if (!value.node.IsScalar() || value.node.Scalar().empty())
     fail(value, fmt::format("expected a number or an expression of {}, got {}", allowed, describe(value.node)));
   const std::string& text = value.node.Scalar();
-  if (const auto x = parse_number(text)) return fmt::format("{}", *x);
+  // A number, or a number with a unit ("-800 m/s"), is the number in the key's unit; "2 t" with t a variable, or
+  // "2*t", is left to muparser.
+  std::string unit_problem;  // when the text reads as a number and a word that is not a unit ("-800 m/ss")
+  if (const auto x = units::split_number(text)) {
+    if (x->unit.empty()) return fmt::format("{}", x->number);
+    const bool variable = std::find(variables.begin(), variables.end(), x->unit) != variables.end();
+    if (!variable) try {
+        units::parse_unit(x->unit);  // a unit: of the key's dimension, or refused
+        return fmt::format("{}", number(value, Range::any(), unit));
+      } catch (const units::UnitError& e) {  // not a unit: muparser's, e.g. "2*t"
+        if (!std::ispunct(static_cast<unsigned char>(x->unit.front()))) unit_problem = e.what();
+      }
+  }
   try {
     const Expression e(text, variables);
     if (e.is_constant() && !std::isfinite(e.constant_value()))
       fail(value, fmt::format("expression \"{}\" evaluates to {}", text, e.constant_value()));
   } catch (const std::invalid_argument& e) {
-    fail(value, fmt::format("{} (variables allowed here: {})", e.what(), allowed));
+    fail(value, fmt::format("{} (variables allowed here: {}){}", e.what(), allowed,
+                            unit_problem.empty() ? "" : "; as a number with a unit: " + unit_problem));
   }
   return text;
 }

@@ -66,7 +66,8 @@ MaterialModel newtonian_model() {
           },
           .make_1d = &make_newtonian_fluid<1>,
           .make_2d = &make_newtonian_fluid<2>,
-          .make_3d = &make_newtonian_fluid<3>};
+          .make_3d = &make_newtonian_fluid<3>,
+          .phase = MaterialPhase::liquid};
 }
 
 MaterialModel ideal_gas_model() {
@@ -77,7 +78,8 @@ MaterialModel ideal_gas_model() {
           .parameters = ideal_gas_parameters(),
           .make_1d = &make_ideal_gas<1>,
           .make_2d = &make_ideal_gas<2>,
-          .make_3d = &make_ideal_gas<3>};
+          .make_3d = &make_ideal_gas<3>,
+          .phase = MaterialPhase::gas};
 }
 
 }  // namespace

@@ -65,8 +65,8 @@ void read_boundary(const YamlReader& reader, const YamlValue& value, int dimensi
     const auto flux = condition.find("flux");
     if (temperature && flux) reader.fail(*flux, "give either temperature (K) or flux (W/m^2) on a face, not both");
     if (!temperature && !flux) reader.fail(*face, "expected temperature: ... (K) or flux: ... (W/m^2)");
-    if (temperature) thermal_face.temperature = reader.expression(*temperature, {"t"});
-    if (flux) thermal_face.flux = reader.expression(*flux, {"t"});
+    if (temperature) thermal_face.temperature = reader.expression(*temperature, {"t"}, "K");
+    if (flux) thermal_face.flux = reader.expression(*flux, {"t"}, "W/m^2");
   }
 }
 
@@ -83,7 +83,7 @@ std::vector<FixedTemperatureRegion> read_fixed_temperature(const YamlReader& rea
     region.max = reader.vector(max, dimension, io::Range::any(), "m");
     for (int d = 0; d < dimension; ++d)
       if (!(region.max[d] > region.min[d])) reader.fail(max, "must exceed min on every axis");
-    region.temperature = reader.expression(temperature, {"t"});
+    region.temperature = reader.expression(temperature, {"t"}, "K");
     regions.push_back(std::move(region));
   }
   return regions;
@@ -141,7 +141,7 @@ std::any parse_thermal_section(const YamlReader& reader, const YamlValue& sectio
   if (section.node.IsNull()) return thermal;  // `thermal:` alone: conduction with insulated boundaries
   const SpecMap map(reader, section, thermal_keys());
   if (const auto initial = map.find("initial_temperature"))
-    thermal.initial_temperature = reader.expression(*initial, {"x", "y", "z"});
+    thermal.initial_temperature = reader.expression(*initial, {"x", "y", "z"}, "K");
   thermal.source = map.expression("source", {"x", "y", "z", "t"});
   if (const auto boundary = map.find("boundary")) read_boundary(reader, *boundary, scene.dimension, thermal);
   thermal.particle_relaxation = map.number("particle_relaxation");

@@ -77,6 +77,14 @@ enum class ThermalExpansion {
   in_update,           ///< the model's own update, from the temperature field (also without a thermal: section)
 };
 
+/// What a model's matter is: the plausibility warnings hold its density to that kind's range (apps/plausibility.hpp).
+enum class MaterialPhase {
+  solid,   ///< elastic and elastic-plastic models
+  liquid,  ///< a weakly compressible fluid
+  gas,     ///< an ideal gas
+  rigid,   ///< a rigid body: its density only gives its particles a mass
+};
+
 /// A material model: everything the loader, the builder and the scene reference know about it, and its traits:
 /// what the modules that couple to a material ask of it instead of its key.
 struct MaterialModel {
@@ -97,6 +105,8 @@ struct MaterialModel {
   /// The parameter whose presence gives the model Johnson-Cook damage (output field `damage`, e.g. "damage_d1");
   /// empty: no damage. The failure criterion `damage` is refused for a material without it.
   std::string damage_enabled_by{};
+  /// The kind of matter it describes (for the plausibility of its density).
+  MaterialPhase phase = MaterialPhase::solid;
 };
 
 /// Adds a model (or replaces the one with the same key). Call before loading scenes; the optional modules'

@@ -36,7 +36,7 @@ YAML::Mark mark_of(const YAML::Node& node, const YAML::Mark& fallback);
 /// What a node is, for "expected X, got Y" messages: 'text', a list, a map or nothing.
 std::string describe(const YAML::Node& node);
 
-/// A finite number written as `text` (leading '+' allowed), or nothing.
+/// A finite number written as `text` (leading '+' allowed), without a unit, or nothing.
 std::optional<double> parse_number(std::string_view text);
 
 class YamlMap;
@@ -54,9 +54,11 @@ class YamlReader {
   [[noreturn]] void fail(const YAML::Mark& mark, const std::string& key, const std::string& message) const;
   [[noreturn]] void fail(const YamlValue& value, const std::string& message) const;
 
-  /// A finite number.
+  /// A finite number, without a unit ("expected a plain number (this key has no unit), got '5 mm'").
   double number(const YamlValue& value) const;
-  /// A finite number in `range` (`unit` is only used in the message).
+  /// A finite number in `range`, in the key's SI unit `unit` ("Pa", "kg/m^3", "-" or "" for a ratio): a bare number
+  /// is taken as given; a number with a unit (`210 GPa`, `7.85 g/cm^3`; core/units.hpp) is converted to `unit`, and
+  /// refused when its dimension is another ("expected a length (m), got a pressure (GPa)") or the unit is unknown.
   double number(const YamlValue& value, const Range& range, std::string_view unit) const;
   /// An integer >= minimum.
   int integer(const YamlValue& value, int minimum) const;
@@ -82,8 +84,10 @@ class YamlReader {
   std::vector<YamlValue> per_axis(const YamlValue& value, int dimension, std::string_view what) const;
   /// A list of `dimension` numbers in `range`, padded with zeros to 3.
   std::array<double, 3> vector(const YamlValue& value, int dimension, const Range& range, std::string_view unit) const;
-  /// A number or a muparser expression of `variables`, as expression text (numbers in shortest form).
-  std::string expression(const YamlValue& value, const std::vector<std::string>& variables) const;
+  /// A number or a muparser expression of `variables`, as expression text (numbers in shortest form). A number with
+  /// a unit (`-800 m/s`) is converted to the key's unit `unit` as number() does; an expression is in that unit.
+  std::string expression(const YamlValue& value, const std::vector<std::string>& variables,
+                         std::string_view unit) const;
   /// `value` as a map (fails unless it is one, with plain and distinct keys).
   YamlMap map(const YamlValue& value) const;
 
