@@ -57,7 +57,7 @@ class ForceRecorder final : public Module<Dim> {
 
   /// The mean force since the last call (zero before the first step), and a new interval.
   Vec<Dim> take_mean() {
-    const Vec<Dim> mean = span_ > 0 ? Vec<Dim>(impulse_ / span_) : Vec<Dim>::Zero();
+    Vec<Dim> mean = span_ > 0 ? Vec<Dim>(impulse_ / span_) : Vec<Dim>::Zero();
     impulse_.setZero();
     span_ = 0;
     return mean;
@@ -76,18 +76,21 @@ class ForceRecorder final : public Module<Dim> {
 
  private:
   /// Σ m v, then Σ m (g + b) (the loads), each component summed exactly and reduced over the ranks.
-  std::array<Real, 2 * Dim> momentum(StepContext<Dim>& ctx) const {
+  /// Σ m v (Dim values), then Σ m (g + b) (Dim values).
+  static constexpr std::size_t parts = 2 * static_cast<std::size_t>(Dim);
+
+  std::array<Real, parts> momentum(StepContext<Dim>& ctx) const {
     const auto& p = ctx.bodies[static_cast<std::size_t>(body_)].particles;
     const VecU<Dim>* b = p.has_field(keys::body_force<Dim>) ? p.field(keys::body_force<Dim>).data() : nullptr;
-    std::array<ExactSum, 2 * Dim> sums;
+    std::array<ExactSum, parts> sums;
     for (Index i = 0; i < p.size(); ++i)
       for (int d = 0; d < Dim; ++d) {
         sums[d] += p.mass[i] * p.v[i][d];
         sums[Dim + d] += p.mass[i] * (ctx.settings.gravity[d] + (b ? b[i][d] : 0));
       }
     if (ctx.comm) ctx.comm->sum(sums);
-    std::array<Real, 2 * Dim> out;
-    for (int k = 0; k < 2 * Dim; ++k) out[k] = sums[k].value();
+    std::array<Real, parts> out;
+    for (std::size_t k = 0; k < parts; ++k) out[k] = sums[k].value();
     return out;
   }
   void measure(StepContext<Dim>& ctx) {
@@ -98,7 +101,7 @@ class ForceRecorder final : public Module<Dim> {
   }
 
   int body_;
-  std::array<Real, 2 * Dim> start_{};
+  std::array<Real, parts> start_{};
   bool measured_ = false;
   Vec<Dim> impulse_ = Vec<Dim>::Zero();  ///< N s since the last row
   Real span_ = 0;                        ///< s
@@ -111,6 +114,7 @@ class ForceHistory final : public History<Dim> {
       : recorder_(std::move(recorder)), coordinates_(coordinates) {}
   std::vector<std::string> columns() const override {
     std::vector<std::string> names;
+    names.reserve(Dim);
     for (int d = 0; d < Dim; ++d)
       names.push_back(column_name(fmt::format("force_{}", "xyz"[d]), extensive_unit("N", Dim, coordinates_)));
     return names;
