@@ -124,6 +124,13 @@ void GridBoundary<Dim>::reactions(int face, const NodeArray<NodeRecord<Dim>>& no
 }
 
 template <int Dim>
+void GridBoundary<Dim>::mapped_impulses(int face, const NodeArray<NodeRecord<Dim>>& node, Real mass_cutoff, Real t,
+                                        const std::function<void(Index, int, Real)>& f, NodeRuns nodes) const {
+  for (const auto& c : conditions_)
+    if (c->face() == face) c->mapped_impulses(node, mass_cutoff, t, f, nodes);
+}
+
+template <int Dim>
 bool GridBoundary<Dim>::does_work() const {
   return std::any_of(conditions_.begin(), conditions_.end(), [](const auto& c) { return c->does_work(); });
 }

@@ -89,6 +89,20 @@ void VelocityFace<Dim>::reactions(const NodeArray<NodeRecord<Dim>>& node, const 
 }
 
 template <int Dim>
+void VelocityFace<Dim>::mapped_impulses(const NodeArray<NodeRecord<Dim>>& node, Real mass_cutoff, Real t,
+                                        const std::function<void(Index, int, Real)>& f, NodeRuns nodes) const {
+  for (const auto& k : held_) {
+    const Real v = k.value ? (*k.value)(0, 0, 0, t) : 0;
+    const int c = k.component;
+    for_each_listed_node(nodes_, nodes, [&](std::size_t j) {
+      const Index n = nodes_[j];
+      const NodeRecord<Dim>& r = node[n];
+      if (r.mass > mass_cutoff) f(n, c, r.mass * v - r.momentum[c]);
+    });
+  }
+}
+
+template <int Dim>
 void VelocityFace<Dim>::add_work(ExactSum& w, const NodeArray<NodeRecord<Dim>>& node,
                                  const NodeArray<NodeVelocity<Dim>>& velocity, const Vec<Dim>& gravity,
                                  Real mass_cutoff, Real t, Real dt, NodeMask owned, NodeRuns nodes) const {

@@ -80,6 +80,9 @@ class ReactionRecorder final : public Module<Dim> {
   /// `on` >= 0: the contact force on body `on` from `partner` (-1: all), else partner `partner`'s reaction.
   ReactionRecorder(int face, const ReactionProvider<Dim>* provider, int partner, const Vec3& about, int on = -1)
       : face_(face), provider_(provider), partner_(partner), about_(about), on_(on) {}
+  /// A face's: the share 1 − α of the condition's impulse on the mapped velocities that the particles take
+  /// (α the FLIP fraction; 0 for APIC and PolyPIC, whose particle velocity is Σ N v~).
+  void set_pic_share(Real share) { pic_share_ = share; }
   std::string_view name() const override { return "reaction history"; }
   /// A face's reaction is summed over the nodes this rank owns and reduced; a partner's is the contact module's,
   /// the same on every rank.
@@ -87,34 +90,22 @@ class ReactionRecorder final : public Module<Dim> {
   unsigned phases() const override { return face_ >= 0 ? phase_grid_velocity : phase_end_of_step; }
 
   void on_grid_velocity(StepContext<Dim>& ctx, GridStage stage) override {
-    if (stage != GridStage::updated) return;  // the nodal forces of the step are final here in every scheme
-    std::array<ExactSum, Dim> force;
-    std::array<ExactSum, 3> moment;
-    const auto& g = ctx.grid.geometry;
-    ctx.boundary.reactions(
-        face_, ctx.grid.node, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time, ctx.dt,
-        [&](Index n, int c, Real R) {
-          if (!ctx.owned_nodes.contains(n)) return;
-          force[c] += R;
-          Vec3 r = Vec3::Zero(), f = Vec3::Zero();
-          r.template head<Dim>() = g.node_position(g.node_indices(n));
-          r -= about_;
-          f[c] = R;
-          const Vec3 m = r.cross(f);
-          for (int k = 0; k < 3; ++k) moment[k] += m[k];
-        },
-        ctx.active_nodes);
-    if (ctx.comm) {  // every rank's nodes
-      std::array<ExactSum, Dim + 3> all;
-      std::copy(force.begin(), force.end(), all.begin());
-      std::copy(moment.begin(), moment.end(), all.begin() + Dim);
-      ctx.comm->sum(all);
-      std::copy(all.begin(), all.begin() + Dim, force.begin());
-      std::copy(all.begin() + Dim, all.end(), moment.begin());
+    if (stage == GridStage::mapped) {  // the momentum the condition sets on v(t): theory eq. 13.2
+      mapped_ = {};
+      if (pic_share_ > 0)
+        mapped_ = face_sum(ctx, [&](const auto& f) {
+          ctx.boundary.mapped_impulses(face_, ctx.grid.node, ctx.settings.mass_cutoff, ctx.time, f, ctx.active_nodes);
+        });
+      return;
     }
-    Reaction<Dim> step;
-    for (int d = 0; d < Dim; ++d) step.force[d] = force[d].value();
-    for (int k = 0; k < 3; ++k) step.first_moment[k] = moment[k].value();
+    if (stage != GridStage::updated) return;  // the nodal forces of the step are final here in every scheme
+    Reaction<Dim> step = face_sum(ctx, [&](const auto& f) {  // eq. 13.1
+      ctx.boundary.reactions(face_, ctx.grid.node, ctx.settings.gravity, ctx.settings.mass_cutoff, ctx.time, ctx.dt, f,
+                             ctx.active_nodes);
+    });
+    // What the particles take of the mapped stage's impulse (none with FLIP): a force over the step.
+    step.force += pic_share_ / ctx.dt * mapped_.force;
+    step.first_moment += pic_share_ / ctx.dt * mapped_.first_moment;
     accumulate(step, ctx.dt);
   }
 
@@ -156,6 +147,37 @@ class ReactionRecorder final : public Module<Dim> {
   }
 
  private:
+  /// Σ_I of the values `each` reports (node, component, value) over the face's nodes this rank owns, and their
+  /// moment about the history's point, summed exactly and reduced over the ranks.
+  template <class Each>
+  Reaction<Dim> face_sum(StepContext<Dim>& ctx, Each&& each) const {
+    std::array<ExactSum, Dim> force;
+    std::array<ExactSum, 3> moment;
+    const auto& g = ctx.grid.geometry;
+    each(std::function<void(Index, int, Real)>([&](Index n, int c, Real R) {
+      if (!ctx.owned_nodes.contains(n)) return;
+      force[c] += R;
+      Vec3 r = Vec3::Zero(), f = Vec3::Zero();
+      r.template head<Dim>() = g.node_position(g.node_indices(n));
+      r -= about_;
+      f[c] = R;
+      const Vec3 m = r.cross(f);
+      for (int k = 0; k < 3; ++k) moment[k] += m[k];
+    }));
+    if (ctx.comm) {  // every rank's nodes
+      std::array<ExactSum, Dim + 3> all;
+      std::copy(force.begin(), force.end(), all.begin());
+      std::copy(moment.begin(), moment.end(), all.begin() + Dim);
+      ctx.comm->sum(all);
+      std::copy(all.begin(), all.begin() + Dim, force.begin());
+      std::copy(all.begin() + Dim, all.end(), moment.begin());
+    }
+    Reaction<Dim> sum;
+    for (int d = 0; d < Dim; ++d) sum.force[d] = force[d].value();
+    for (int k = 0; k < 3; ++k) sum.first_moment[k] = moment[k].value();
+    return sum;
+  }
+
   void accumulate(const Reaction<Dim>& step, Real dt) {
     impulse_.force += dt * step.force;
     impulse_.first_moment += dt * step.first_moment;
@@ -167,6 +189,8 @@ class ReactionRecorder final : public Module<Dim> {
   int partner_;
   Vec3 about_;
   int on_;
+  Real pic_share_ = 0;     ///< 1 − α: the share of the mapped stage's impulse the particles take (eq. 13.2)
+  Reaction<Dim> mapped_;   ///< that impulse in the current step (N s; its moment about the history's point)
   Reaction<Dim> impulse_;  ///< N s (the moment about the history's point)
   Real span_ = 0;          ///< s
 };
@@ -243,6 +267,8 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
   std::shared_ptr<ReactionRecorder<Dim>> recorder;
   if (s.face >= 0) {
     recorder = std::make_shared<ReactionRecorder<Dim>>(s.face, nullptr, 0, about);
+    recorder->set_pic_share(scene.solver.velocity_transfer == VelocityTransfer::flip ? 1 - scene.solver.flip_fraction
+                                                                                     : 1);
   } else if (s.on >= 0) {
     recorder = contact_force_recorder(h, s, sim, about);
   } else {

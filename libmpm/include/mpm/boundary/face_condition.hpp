@@ -57,6 +57,11 @@ class FaceCondition {
   virtual void reactions(const NodeArray<NodeRecord<Dim>>& /*node*/, const Vec<Dim>& /*gravity*/, Real /*mass_cutoff*/,
                          Real /*t*/, Real /*dt*/, const std::function<void(Index, int, Real)>& /*f*/,
                          NodeRuns /*nodes*/) const {}
+  /// For every node of `nodes` with mass above `mass_cutoff` and every held component, f(node, component, J) with J
+  /// = m_I v_c(t) − p_Ic, the momentum the condition sets on the mapped velocity at time t (theory eq. 13.2;
+  /// GridBoundary::mapped_impulses).
+  virtual void mapped_impulses(const NodeArray<NodeRecord<Dim>>& /*node*/, Real /*mass_cutoff*/, Real /*t*/,
+                               const std::function<void(Index, int, Real)>& /*f*/, NodeRuns /*nodes*/) const {}
   /// Adds the work (J) the condition does in the step from t to t + dt to `w`, over the nodes of `owned` (and
   /// `nodes`) only (GridBoundary::work).
   virtual void add_work(ExactSum& /*w*/, const NodeArray<NodeRecord<Dim>>& /*node*/,

@@ -85,6 +85,12 @@ class GridBoundary final : public Module<Dim> {
   /// faces (a shared edge) is reported for both. Used by reaction histories only.
   void reactions(int face, const NodeArray<NodeRecord<Dim>>& node, const Vec<Dim>& gravity, Real mass_cutoff, Real t,
                  Real dt, const std::function<void(Index, int, Real)>& f, NodeRuns nodes = {}) const;
+  /// The momentum the velocity conditions of `face` set on the mapped velocities at time t: for every node with
+  /// mass above `mass_cutoff` and every component the face holds, f(node, component, m_I v(t) − p_Ic) (theory eq.
+  /// 13.2: the particles take (1 − α) of it with the FLIP fraction α, all of it with PIC, APIC and PolyPIC). Used
+  /// by reaction histories only.
+  void mapped_impulses(int face, const NodeArray<NodeRecord<Dim>>& node, Real mass_cutoff, Real t,
+                       const std::function<void(Index, int, Real)>& f, NodeRuns nodes = {}) const;
   /// True when a face condition can do work on the bodies: a prescribed velocity other than 0, or a traction.
   bool does_work() const;
   /// The work (J) the face conditions do on the grid in the step from t to t + dt, for the energy sentinel

@@ -48,6 +48,9 @@ class VelocityFace final : public FaceCondition<Dim> {
   /// for the node to follow the prescribed velocity v (0 for a fixed or slip face).
   void reactions(const NodeArray<NodeRecord<Dim>>& node, const Vec<Dim>& gravity, Real mass_cutoff, Real t, Real dt,
                  const std::function<void(Index, int, Real)>& f, NodeRuns nodes) const override;
+  /// J = m_I v(t) − p_Ic: the momentum the condition sets on the mapped velocity.
+  void mapped_impulses(const NodeArray<NodeRecord<Dim>>& node, Real mass_cutoff, Real t,
+                       const std::function<void(Index, int, Real)>& f, NodeRuns nodes) const override;
   /// A velocity condition: R v dt, R as in reactions() and v the prescribed velocity at t + dt/2; a traction:
   /// f_I . v dt with f_I = t(t) A_I and v the mean of the node's velocity at t and at t + dt (`mapped`, `updated`:
   /// the nodal kinetic energy changes by exactly that work). Every node term summed exactly.
