@@ -14,6 +14,20 @@ int read_body(const YamlReader& reader, const YamlValue& value, const SceneDescr
   return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
+std::vector<std::string> read_point_fields(const YamlReader& reader, const YamlValue& value) {
+  std::vector<std::string> valid;
+  for (auto& name : output_field_names())
+    if (find_output_field(name)->components > 0) valid.push_back(std::move(name));
+  std::vector<std::string> fields;
+  for (const auto& item : reader.list(value, std::nullopt, "field names")) {
+    std::string field = reader.choice(item, valid);
+    if (std::find(fields.begin(), fields.end(), field) != fields.end())
+      reader.fail(item, fmt::format("field '{}' is listed twice", field));
+    fields.push_back(std::move(field));
+  }
+  return fields;
+}
+
 int read_axis(const YamlReader& reader, const YamlValue& value, int dimension) {
   std::vector<std::string> names{"x", "y", "z"};
   names.resize(static_cast<std::size_t>(dimension));

@@ -26,25 +26,9 @@ struct ParticleSpec {
   std::optional<std::array<double, 3>> nearest;  ///< m: the particle nearest to it at t = 0
 };
 
-/// The fields a particle history can read: every selectable output field with point values (not `domains`).
-std::vector<std::string> point_fields() {
-  std::vector<std::string> names;
-  for (auto& name : output_field_names())
-    if (find_output_field(name)->components > 0) names.push_back(std::move(name));
-  return names;
-}
-
 std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescription& scene) {
   ParticleSpec s;
-  if (const auto fields = entry.find("fields")) {
-    const std::vector<std::string> valid = point_fields();
-    for (const auto& item : reader.list(*fields, std::nullopt, "field names")) {
-      std::string field = reader.choice(item, valid);
-      if (std::find(s.fields.begin(), s.fields.end(), field) != s.fields.end())
-        reader.fail(item, fmt::format("field '{}' is listed twice", field));
-      s.fields.push_back(std::move(field));
-    }
-  }
+  if (const auto fields = entry.find("fields")) s.fields = read_point_fields(reader, *fields);
   if (const auto body = entry.find("body"))
     s.body = read_body(reader, *body, scene);
   else if (scene.bodies.size() > 1)

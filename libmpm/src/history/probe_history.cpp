@@ -35,23 +35,9 @@ struct ProbeSpec {
   std::vector<int> statistics;  ///< region: indices into statistic_names
 };
 
-/// The fields a probe can read: every selectable output field with point values (not `domains`).
-std::vector<std::string> probe_fields() {
-  std::vector<std::string> names;
-  for (auto& name : output_field_names())
-    if (find_output_field(name)->components > 0) names.push_back(std::move(name));
-  return names;
-}
-
 std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescription& scene) {
   ProbeSpec s;
-  const std::vector<std::string> valid = probe_fields();
-  for (const auto& item : reader.list(entry.required("fields"), std::nullopt, "field names")) {
-    std::string field = reader.choice(item, valid);
-    if (std::find(s.fields.begin(), s.fields.end(), field) != s.fields.end())
-      reader.fail(item, fmt::format("field '{}' is listed twice", field));
-    s.fields.push_back(std::move(field));
-  }
+  s.fields = read_point_fields(reader, entry.required("fields"));
   if (s.fields.empty()) reader.fail(entry.required("fields"), "list at least one field");
   if (const auto body = entry.find("body")) s.body = read_body(reader, *body, scene);
   const auto point = entry.find("point"), box = entry.find("box"), from = entry.find("from"),
