@@ -27,6 +27,7 @@
 #include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/schemes/cpdi_corner_tracking.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
+#include "mpm/sets/particle_sets.hpp"
 #include "mpm/simulation/local_damping_book.hpp"
 #include "mpm/simulation/reaction_provider.hpp"
 #include "particle_file_body.hpp"
@@ -215,6 +216,7 @@ void add_run_fields(Body<Dim>& body, const SceneDescription& scene, const GridGe
   prepare_output_fields<Dim>(scene.output.fields, body);                  // what the output reads (displacement: X_p)
   prepare_output_fields<Dim>(history_output_fields(scene.output), body);  // and what the histories read
   body.material->prepare_particles(body.particles);  // the model's history fields (plasticity), if any
+  add_set_fields(scene, body);                       // set membership, a loaded set's body force
 }
 
 /// Body `index` of the scene: material, particles, and every on-demand field its run needs (domains, APIC,
@@ -232,7 +234,8 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   const geometry::CpdiParticles<Dim> elements =
       particle_elements<Dim>(scene, bd, index, geometry, shape, seeds, warnings);
   add_particles<Dim>(body, bd, elements);
-  apply_seed_state(body, seeds);  // what a particle file gives besides positions and volumes
+  apply_seed_state(body, seeds);    // what a particle file gives besides positions and volumes
+  mark_particle_sets(scene, body);  // which particles belong to which set, from their state at t = 0
   track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
   add_run_fields<Dim>(body, scene, geometry);
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
@@ -424,6 +427,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
       std::make_unique<Simulation<Dim>>(geometry, std::move(bodies), std::move(scheme), std::move(boundary), settings);
   for (auto& m : modules) sim->add_module(std::move(m));
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
+  if (auto sets = scene_set_conditions<Dim>(scene)) sim->add_module(std::move(sets));  // after contact: it holds last
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));
   add_failure_module<Dim>(scene, *sim, reorders_particles);
   add_damping_book<Dim>(scene, *sim);     // after contact: it books the velocities contact corrected

@@ -89,6 +89,10 @@ void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
   // at its end, the velocity the contact module has just given its particles (asked of the module, not read from
   // a particle: in a distributed run a rank may hold none of them). The force is the same on every rank.
   for (const auto& partner : partners_) {
+    if (const auto w = partner.provider->last_work(partner.index)) {  // a held particle set: its own sum
+      work_ += *w;
+      continue;
+    }
     const Vec<Dim> force = partner.provider->last_reaction(partner.index).force;
     const Real t = partner.body >= 0 ? ctx.time + ctx.dt : ctx.time + 0.5 * ctx.dt;
     work_ += force.dot(partner.provider->partner_velocity(partner.index, t)) * ctx.dt;

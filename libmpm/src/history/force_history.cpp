@@ -14,6 +14,7 @@
 #include "history_support.hpp"
 #include "mpm/core/exact_sum.hpp"
 #include "mpm/particles/field_keys.hpp"
+#include "mpm/sets/particle_sets.hpp"
 
 namespace mpm::history {
 namespace {
@@ -22,12 +23,24 @@ namespace {
 namespace body_force {
 
 struct ForceSpec {
-  int body = 0;
+  std::vector<int> bodies;  ///< the body, or the set's bodies
+  std::uint32_t mask = 0;   ///< a particle set's bit (`set:`); 0: every particle of the body
 };
 
 std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescription& scene) {
   ForceSpec s;
-  s.body = read_body(reader, entry.required("body"), scene);
+  const auto body = entry.find("body"), set = entry.find("set");
+  if ((body ? 1 : 0) + (set ? 1 : 0) != 1)
+    reader.fail(entry.self().mark, entry.self().path, "give exactly one of body and set (a particle set)");
+  if (body) {
+    s.bodies = {read_body(reader, *body, scene)};
+  } else {
+    const int k = read_set(reader, *set, scene);
+    s.mask = set_bit(k);
+    s.bodies = scene.sets[static_cast<std::size_t>(k)].bodies;
+    if (s.bodies.empty())
+      for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b) s.bodies.push_back(b);
+  }
   return s;
 }
 
@@ -38,7 +51,7 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
 template <int Dim>
 class ForceRecorder final : public Module<Dim> {
  public:
-  explicit ForceRecorder(int body) : body_(body) {}
+  ForceRecorder(std::vector<int> bodies, std::uint32_t mask) : bodies_(std::move(bodies)), mask_(mask) {}
   std::string_view name() const override { return "force history"; }
   std::string why_not_distributed() const override { return {}; }  // exact sums reduced over the ranks
   unsigned phases() const override { return phase_before_step | phase_after_stress | phase_end_of_step; }
@@ -80,14 +93,19 @@ class ForceRecorder final : public Module<Dim> {
   static constexpr std::size_t parts = 2 * static_cast<std::size_t>(Dim);
 
   std::array<Real, parts> momentum(StepContext<Dim>& ctx) const {
-    const auto& p = ctx.bodies[static_cast<std::size_t>(body_)].particles;
-    const VecU<Dim>* b = p.has_field(keys::body_force<Dim>) ? p.field(keys::body_force<Dim>).data() : nullptr;
     std::array<ExactSum, parts> sums;
-    for (Index i = 0; i < p.size(); ++i)
-      for (int d = 0; d < Dim; ++d) {
-        sums[d] += p.mass[i] * p.v[i][d];
-        sums[Dim + d] += p.mass[i] * (ctx.settings.gravity[d] + (b ? b[i][d] : 0));
+    for (const int body : bodies_) {
+      const auto& p = ctx.bodies[static_cast<std::size_t>(body)].particles;
+      const VecU<Dim>* b = p.has_field(keys::body_force<Dim>) ? p.field(keys::body_force<Dim>).data() : nullptr;
+      const std::uint32_t* sets = mask_ != 0 ? p.field(keys::particle_sets).data() : nullptr;
+      for (Index i = 0; i < p.size(); ++i) {
+        if (sets && (sets[i] & mask_) == 0) continue;
+        for (int d = 0; d < Dim; ++d) {
+          sums[d] += p.mass[i] * p.v[i][d];
+          sums[Dim + d] += p.mass[i] * (ctx.settings.gravity[d] + (b ? b[i][d] : 0));
+        }
       }
+    }
     if (ctx.comm) ctx.comm->sum(sums);
     std::array<Real, parts> out;
     for (std::size_t k = 0; k < parts; ++k) out[k] = sums[k].value();
@@ -100,7 +118,8 @@ class ForceRecorder final : public Module<Dim> {
     span_ += ctx.dt;
   }
 
-  int body_;
+  std::vector<int> bodies_;
+  std::uint32_t mask_;
   std::array<Real, parts> start_{};
   bool measured_ = false;
   Vec<Dim> impulse_ = Vec<Dim>::Zero();  ///< N s since the last row
@@ -136,7 +155,8 @@ class ForceHistory final : public History<Dim> {
 template <int Dim>
 std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescription& scene, Simulation<Dim>& sim,
                                    std::vector<std::string>&) {
-  auto recorder = std::make_shared<ForceRecorder<Dim>>(std::any_cast<const ForceSpec&>(h.spec).body);
+  const auto& s = std::any_cast<const ForceSpec&>(h.spec);
+  auto recorder = std::make_shared<ForceRecorder<Dim>>(s.bodies, s.mask);
   sim.add_module(recorder);
   return std::make_unique<ForceHistory<Dim>>(std::move(recorder), scene.grid.coordinates);
 }
@@ -146,10 +166,11 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
 
 HistoryKind force_kind() {
   using namespace body_force;
-  return history_kind("force",
-                      "the total force on a body from supports, contact and other bodies (its rate of change of "
-                      "momentum less gravity and body forces), mean over the interval, at every interval",
-                      {"body"}, parse, make<1>, make<2>, make<3>);
+  return history_kind(
+      "force",
+      "the total force on a body or a particle set from supports, contact and other bodies (its rate of change of "
+      "momentum less gravity and body forces), mean over the interval, at every interval",
+      {"body", "set"}, parse, make<1>, make<2>, make<3>);
 }
 
 }  // namespace mpm::history

@@ -14,6 +14,15 @@ int read_body(const YamlReader& reader, const YamlValue& value, const SceneDescr
   return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
+int read_set(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene) {
+  std::vector<std::string> names;
+  names.reserve(scene.sets.size());
+  for (const auto& s : scene.sets) names.push_back(s.name);
+  if (names.empty()) reader.fail(value, "the scene has no `sets:` section to name a set from");
+  const std::string name = reader.choice(value, names);
+  return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
 std::vector<std::string> read_point_fields(const YamlReader& reader, const YamlValue& value) {
   std::vector<std::string> valid;
   for (auto& name : output_field_names())

@@ -55,6 +55,8 @@ struct Box {
 
 /// `body: NAME`: the index of one of the scene's bodies.
 int read_body(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene);
+/// `set: NAME`: the index of one of the scene's particle sets (`sets:`).
+int read_set(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene);
 /// `fields: [...]`: output field names with point values (every selectable one but `domains`), each once.
 std::vector<std::string> read_point_fields(const YamlReader& reader, const YamlValue& value);
 /// `axis: x | y | z` (only the scene's axes).

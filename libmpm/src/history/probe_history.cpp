@@ -13,6 +13,7 @@
 #include "mpm/core/exact_sum.hpp"
 #include "mpm/io/csv_log.hpp"
 #include "mpm/schemes/axisymmetric.hpp"
+#include "mpm/sets/particle_sets.hpp"
 
 namespace mpm::history {
 namespace {
@@ -28,6 +29,7 @@ enum Statistic { stat_mean, stat_min, stat_max, stat_sum, stat_min_at, stat_max_
 struct ProbeSpec {
   std::vector<std::string> fields;
   int body = -1;  ///< -1: every body that defines the fields
+  int set = -1;   ///< a particle set (`set:`): only its particles; -1: every particle
   Where where = Where::particles;
   std::array<double, 3> point{0, 0, 0};
   double radius = 0;       ///< m (from: particles); 0: the largest cell size of the built grid (follows refinement)
@@ -40,10 +42,13 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
   s.fields = read_point_fields(reader, entry.required("fields"));
   if (s.fields.empty()) reader.fail(entry.required("fields"), "list at least one field");
   if (const auto body = entry.find("body")) s.body = read_body(reader, *body, scene);
+  const auto set = entry.find("set");
+  if (set) s.set = read_set(reader, *set, scene);
   const auto point = entry.find("point"), box = entry.find("box"), from = entry.find("from"),
              radius = entry.find("radius"), statistics = entry.find("statistics");
   if (point && box) reader.fail(*box, "give either point or box, not both");
   if (point) {
+    if (set) reader.fail(*set, "a point probe reads the particles near its point; set is for statistics over a set");
     s.point = read_point_in_grid(reader, *point, scene, "probe point");
     if (statistics)
       reader.fail(*statistics, "statistics are for a box or a whole body; a point probe gives one value per component");
@@ -93,6 +98,7 @@ class ProbeHistory final : public History<Dim> {
                const GridGeometry<Dim>& grid)
       : s_(std::move(spec)), fields_(std::move(fields)), bodies_(std::move(bodies)), grid_(grid) {
     if (s_.where == Where::particles && !(s_.radius > 0)) s_.radius = grid_.h.maxCoeff();
+    if (s_.set >= 0) set_mask_ = set_bit(s_.set);
     for (int d = 0; d < Dim; ++d) x0_[d] = s_.point[d];
     for (int a = 0; a < (1 << Dim); ++a)  // corner a of the point's cell: bit d set = the upper node on axis d
       for (int d = 0; d < Dim; ++d) {
@@ -146,7 +152,7 @@ class ProbeHistory final : public History<Dim> {
     Index n = 0;
     for (int b : bodies_) {
       const auto& p = sim.bodies()[static_cast<std::size_t>(b)].particles;
-      for (Index i = 0; i < p.size(); ++i) n += reads(p.x[i]);
+      for (Index i = 0; i < p.size(); ++i) n += reads(p.x[i]) && (set_mask_ == 0 || in_sets(p, i, set_mask_));
     }
     return n;
   }
@@ -362,8 +368,10 @@ class ProbeHistory final : public History<Dim> {
       const auto& p = sim.bodies()[static_cast<std::size_t>(b)].particles;
       for (std::size_t k = 0; k < n; ++k) column[k] = values(cache, components_[k], b);
       const Real* hoop = axisym::hoop_stretch_of(p);  // the ring volumes of an axisymmetric run
+      const std::uint32_t* sets = set_mask_ != 0 ? p.field(keys::particle_sets).data() : nullptr;
       for (Index i = 0; i < p.size(); ++i) {
         if (s_.box && !s_.box->contains<Dim>(p.x[i])) continue;
+        if (set_mask_ != 0 && (sets[static_cast<std::size_t>(i)] & set_mask_) == 0) continue;
         ++count;
         const Real V = p.volume0[i] * axisym::volume_ratio(p, i, hoop);
         volume += V;
@@ -434,15 +442,24 @@ class ProbeHistory final : public History<Dim> {
   Vec<Dim> x0_ = Vec<Dim>::Zero();
   std::array<VecU<Dim>, (1 << Dim)> corner_{};
   std::vector<Component> components_;
+  std::uint32_t set_mask_ = 0;  ///< the particle set's bit, 0: every particle
 };
 
 template <int Dim>
-std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescription&, Simulation<Dim>& sim,
+std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescription& scene, Simulation<Dim>& sim,
                                    std::vector<std::string>& warnings) {
   const auto& s = std::any_cast<const ProbeSpec&>(h.spec);
   std::vector<const OutputField*> fields;
   for (const auto& name : s.fields) fields.push_back(find_output_field(name));
   std::vector<int> bodies = bodies_defining<Dim>(h, fields, s.body, sim.bodies());
+  if (s.set >= 0 && !scene.sets[static_cast<std::size_t>(s.set)].bodies.empty()) {  // only the set's bodies
+    const auto& of_set = scene.sets[static_cast<std::size_t>(s.set)].bodies;
+    std::erase_if(bodies, [&](int b) { return std::find(of_set.begin(), of_set.end(), b) == of_set.end(); });
+    if (bodies.empty())
+      fail(h, "set",
+           fmt::format("set '{}' has no particle in a body that defines the fields",
+                       scene.sets[static_cast<std::size_t>(s.set)].name));
+  }
   auto probe = std::make_unique<ProbeHistory<Dim>>(s, std::move(fields), std::move(bodies), sim.grid().geometry);
   if (probe->particle_count(sim) == 0)
     warnings.push_back(
@@ -459,9 +476,9 @@ HistoryKind probe_kind() {
   using namespace probe;
   return history_kind("probe",
                       "output fields at a point (from the particles within a radius, or from the grid) or over the "
-                      "particles of a box (mean, min, max, sum)",
-                      {"fields", "body", "point", "from", "radius", "box", "statistics"}, parse, make<1>, make<2>,
-                      make<3>, fields_of);
+                      "particles of a box, a body or a particle set (mean, min, max, sum, where the min and max are)",
+                      {"fields", "body", "set", "point", "from", "radius", "box", "statistics"}, parse, make<1>,
+                      make<2>, make<3>, fields_of);
 }
 
 }  // namespace mpm::history

@@ -32,11 +32,11 @@ struct ReactionSpec {
 std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescription& scene) {
   ReactionSpec s;
   const auto face = entry.find("face"), plane = entry.find("plane"), body = entry.find("body"), on = entry.find("on"),
-             from = entry.find("from");
-  if ((face ? 1 : 0) + (plane ? 1 : 0) + (body ? 1 : 0) + (on ? 1 : 0) != 1)
+             from = entry.find("from"), set = entry.find("set");
+  if ((face ? 1 : 0) + (plane ? 1 : 0) + (body ? 1 : 0) + (on ? 1 : 0) + (set ? 1 : 0) != 1)
     reader.fail(entry.self().mark, entry.self().path,
                 "give exactly one of face (a grid face with a velocity condition), plane (a rigid plane), body (a "
-                "rigid body) or on (the contact force on a body)");
+                "rigid body), set (a particle set with a velocity condition) or on (the contact force on a body)");
   if (from && !on) reader.fail(*from, "from is for the contact force on a body (on: BODY, from: PARTNER)");
   if (on) {
     s.on = read_body(reader, *on, scene);
@@ -55,6 +55,18 @@ std::any parse(const YamlReader& reader, const YamlMap& entry, const SceneDescri
       reader.fail(*face, fmt::format("face {} has no velocity condition (grid.boundary.{}: fixed, slip or a "
                                      "velocity), so nothing holds the bodies there",
                                      name, name));
+  } else if (set) {
+    const int k = read_set(reader, *set, scene);
+    const bool held = std::any_of(scene.conditions.begin(), scene.conditions.end(), [&](const auto& c) {
+      return c.set == k &&
+             std::any_of(c.velocity.begin(), c.velocity.end(), [](const auto& v) { return v.has_value(); });
+    });
+    s.partner = scene.sets[static_cast<std::size_t>(k)].name;
+    s.partner_key = "set";
+    if (!held)
+      reader.fail(*set, fmt::format("set '{}' has no velocity condition (conditions: [{{set: {}, velocity: [...]}}]), "
+                                    "so nothing holds it",
+                                    s.partner, s.partner));
   } else if (plane) {
     s.partner = reader.name(*plane);
     s.partner_key = "plane";
@@ -287,7 +299,8 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
     if (!recorder)
       fail(
           h, s.partner_key,
-          s.partner_key == "plane"
+          s.partner_key == "set" ? fmt::format("set '{}' holds nothing in this run", s.partner)
+          : s.partner_key == "plane"
               ? fmt::format("no rigid plane named '{}'{}", s.partner,
                             known.empty() ? " (the scene has no contact: section with planes)"
                                           : fmt::format("; rigid planes and bodies: {}", fmt::join(known, ", ")))
@@ -305,10 +318,11 @@ std::unique_ptr<History<Dim>> make(const HistoryDescription& h, const SceneDescr
 HistoryKind reaction_kind() {
   using namespace reaction;
   return history_kind("reaction",
-                      "the force (and moment about a point) a grid face with a velocity condition, a rigid plane or a "
-                      "rigid body exerts on the bodies, or the contact exerts on one body (from one partner or all), "
+                      "the force (and moment about a point) a grid face with a velocity condition, a rigid plane, a "
+                      "rigid body or a held particle set exerts on the bodies, or the contact exerts on one body (from "
+                      "one partner or all), "
                       "mean over the interval",
-                      {"face", "plane", "body", "on", "from", "moment_about"}, parse, make<1>, make<2>, make<3>);
+                      {"face", "plane", "body", "set", "on", "from", "moment_about"}, parse, make<1>, make<2>, make<3>);
 }
 
 }  // namespace mpm::history

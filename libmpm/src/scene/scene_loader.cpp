@@ -43,6 +43,17 @@ const std::vector<io::KeySpec>& core_keys() {
        .required = true,
        .description = "[Bodies](#bodies), at least one",
        .keys = body_keys()},
+      {.name = "sets",
+       .type = KeyType::named_map,
+       .absent = "none",
+       .description = "[Particle sets](#sets): named sets of particles, chosen by body, initial region and id",
+       .type_text = "map from names to sets",
+       .keys = set_keys()},
+      {.name = "conditions",
+       .type = KeyType::list,
+       .absent = "none",
+       .description = "[Conditions on particle sets](#conditions): held velocities, forces, initial velocities",
+       .keys = condition_keys()},
       {.name = "solver", .type = KeyType::map, .required = true, .description = "[Solver settings](#solver)"},
       {.name = "output",
        .type = KeyType::map,
@@ -94,6 +105,9 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   scene.grid = sections::read_grid(reader, top.required("grid"), scene.dimension);
   scene.materials = sections::read_materials(reader, top.required("materials"));
   scene.bodies = sections::read_bodies(reader, top.required("bodies"), scene);
+  if (const auto sets = top.find("sets")) scene.sets = sections::read_sets(reader, *sets, scene);
+  if (const auto conditions = top.find("conditions"))
+    scene.conditions = sections::read_conditions(reader, *conditions, scene);
   scene.solver = sections::read_solver(reader, top.required("solver"), scene);
   if (const auto output = top.find("output")) scene.output = sections::read_output(reader, *output, scene);
   for (const auto& key : scene_extension_keys())  // module sections last: they may refer to bodies

@@ -45,6 +45,12 @@ FailureCriteria read_failure(const io::YamlReader& reader, const io::YamlValue& 
 /// `bodies:`, with their shapes (bodies_section.cpp); needs the grid and the materials.
 std::vector<BodyDescription> read_bodies(const io::YamlReader& reader, const io::YamlValue& value,
                                          const SceneDescription& scene);
+/// `sets:` (sets_section.cpp); needs the bodies.
+std::vector<SetDescription> read_sets(const io::YamlReader& reader, const io::YamlValue& value,
+                                      const SceneDescription& scene);
+/// `conditions:` (sets_section.cpp); needs the sets.
+std::vector<SetConditionDescription> read_conditions(const io::YamlReader& reader, const io::YamlValue& value,
+                                                     const SceneDescription& scene);
 /// `solver:` (solver_section.cpp); needs the grid.
 SolverDescription read_solver(const io::YamlReader& reader, const io::YamlValue& value, const SceneDescription& scene);
 /// `output:` (output_section.cpp); needs the grid and the bodies (its histories name them).

@@ -6,6 +6,7 @@
 
 #include <any>
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -97,6 +98,34 @@ struct BodyDescription {
   SourceLocation where;
 };
 
+/// A named particle set (`sets.NAME`, docs/scene-reference.md#sets): the particles of its bodies whose initial
+/// position lies in its region and whose id is in its list; each criterion the scene omits takes every particle.
+/// Membership is decided once, at t = 0, and kept in the particle field `particle_sets` (sets/particle_sets.hpp).
+struct SetDescription {
+  std::string name;
+  std::vector<int> bodies;                 ///< indices into SceneDescription::bodies; empty: every body
+  std::optional<ShapeDescription> region;  ///< the initial positions' region (any body shape kind)
+  /// Inclusive id ranges [first, last] (the `id` field of the frames); empty: every id.
+  std::vector<std::array<std::uint32_t, 2>> ids;
+  SourceLocation where;
+};
+
+/// One entry of `conditions:` (docs/scene-reference.md#conditions): what is prescribed on a particle set. Each
+/// component is absent (not prescribed) or a muparser expression.
+struct SetConditionDescription {
+  int set = 0;  ///< index into SceneDescription::sets
+  /// The held velocity components, m/s, expressions of x, y, z (the node's position) and t: the grid nodes the
+  /// set's particles reach move with it (sets/set_conditions.hpp).
+  std::array<std::optional<std::string>, 3> velocity;
+  /// N (per metre in 2D, per radian axisymmetric): the total force on the set, expressions of t, shared by the
+  /// particles in proportion to their mass.
+  std::array<std::optional<std::string>, 3> force;
+  /// The initial velocity of the set's particles, m/s, expressions of x, y, z (replaces the body's).
+  std::array<std::optional<std::string>, 3> initial_velocity;
+  SourceLocation where;
+  std::string path;  ///< its key path for messages, e.g. "conditions[1]"
+};
+
 struct SolverDescription {
   /// The name of a registered scheme (scheme_registry.hpp: the core's musl, tlmpm, usf, usl, or a module's, e.g.
   /// implicit); its traits say what it works with (scheme_of(solver).traits).
@@ -170,6 +199,8 @@ struct SceneDescription {
   GridDescription grid;
   std::map<std::string, MaterialDescription> materials;
   std::vector<BodyDescription> bodies;
+  std::vector<SetDescription> sets;                 ///< `sets:`, in the scene's order (a set's bit is its index)
+  std::vector<SetConditionDescription> conditions;  ///< `conditions:`
   SolverDescription solver;
   OutputDescription output;
   /// Sections of optional modules (scene_extension.hpp), by top-level key, as their parsers returned them.

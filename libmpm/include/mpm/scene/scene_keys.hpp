@@ -19,6 +19,10 @@ const std::vector<io::KeySpec>& output_keys();
 const std::vector<io::KeySpec>& history_keys();
 /// One entry of `bodies:` (src/scene/bodies_section.cpp).
 const std::vector<io::KeySpec>& body_keys();
+/// One entry of `sets:` (src/scene/sets_section.cpp).
+const std::vector<io::KeySpec>& set_keys();
+/// One entry of `conditions:` (src/scene/sets_section.cpp).
+const std::vector<io::KeySpec>& condition_keys();
 /// One entry of `materials:` besides its model's parameters (src/scene/materials_section.cpp).
 const std::vector<io::KeySpec>& material_keys();
 /// `failure:` of a material (src/scene/failure_block.cpp): the criteria and the action of failure_criteria.hpp.

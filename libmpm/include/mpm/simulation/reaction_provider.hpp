@@ -5,6 +5,7 @@
 /// names of its rigid partners and the force each exerted on the deformable bodies in the last step, and the
 /// contact force on each body from each partner.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ class ReactionProvider {
   /// energy_sentinel.hpp: a plane's at the middle of each step, a rigid body's at its end). The default, at rest,
   /// is right for a partner that does not move.
   virtual Vec<Dim> partner_velocity(int /*k*/, Real /*t*/) const { return Vec<Dim>::Zero(); }
+  /// J: the work partner `k` did on the bodies in the last step, when the module computes it itself (a held particle
+  /// set whose velocity varies over its nodes); nothing: the energy sentinel takes force . partner_velocity dt.
+  virtual std::optional<Real> last_work(int /*k*/) const { return std::nullopt; }
   /// The names of what can push on a body (`from:` of a reaction history `on:` a body), in a fixed order: the
   /// bodies (index = the scene's body index), then the rigid planes.
   virtual std::vector<std::string> contact_partners() const { return {}; }
