@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "mpm/particles/field_keys.hpp"
+#include "mpm/sets/particle_sets.hpp"
 #include "mpm/schemes/axisymmetric.hpp"
 
 namespace mpm {
@@ -131,6 +132,14 @@ std::deque<OutputField> core_fields() {
                                out.insert(out.end(), static_cast<std::size_t>(b.particles.size()), 0.0);
                            }));
   t.back().material_output = true;
+  t.push_back(output_field("particle_sets", 1, "-",
+                           "the particle's sets (`sets:`) as a bit mask: bit k (value 2^k) for the k-th set",
+                           [](const auto& b, std::vector<double>& out) {
+                             const auto& bits = b.particles.field(keys::particle_sets);
+                             each(b, [&](Index i) { out.push_back(bits[static_cast<std::size_t>(i)]); });
+                           }));
+  t.back().carrier = std::string(keys::particle_sets.name);
+  t.back().absent = "the scene has no `sets:`";
   t.push_back(output_field(
       "id", 1, "-", "index of the particle at creation (stable when particles are reordered)",
       [](const auto& b, std::vector<double>& out) { each(b, [&](Index i) { out.push_back(b.particles.id[i]); }); }));
