@@ -204,6 +204,15 @@ class Body:
                          step_now=lambda: h.step_count)
         return make_view(array, source)
 
+    def in_set(self, name):
+        """Whether each particle belongs to the particle set ``name`` (``sets:`` of the scene): a new boolean array,
+        one entry per particle in the current order (membership was decided at t = 0 and moves with the particle)."""
+        names = self._sim.scene.set_names
+        if name not in names:
+            raise KeyError(f"no particle set '{name}'; the scene's sets are: {', '.join(names) or 'none'}")
+        bits = self._sim._handle.particle_field(self.index, "particle_sets")
+        return (bits >> names.index(name)) & 1 == 1
+
     def output(self, name):
         """The values of the output field ``name`` (mpm.output_fields(), e.g. von_mises_stress,
         plastic_strain, volume) for this body's particles, as written to the .vtu files: a new array, shape

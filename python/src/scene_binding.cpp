@@ -93,6 +93,15 @@ Make one with Scene.from_yaml(path) or Scene.from_dict(d); a problem raises mpm.
           },
           "Names of the bodies, in scene order.")
       .def_property_readonly(
+          "set_names",
+          [](const Scene& s) {
+            std::vector<std::string> names;
+            names.reserve(s.description.sets.size());
+            for (const auto& set : s.description.sets) names.push_back(set.name);
+            return names;
+          },
+          "Names of the particle sets (`sets:`), in scene order: set k is bit k of the field particle_sets.")
+      .def_property_readonly(
           "end_time", [](const Scene& s) { return s.description.solver.end_time; }, "solver.end_time, s.")
       .def_property_readonly(
           "has_output", [](const Scene& s) { return s.has_output; }, "Whether the scene has an output section.")
