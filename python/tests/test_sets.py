@@ -40,6 +40,6 @@ def test_a_held_set_stays_and_its_reaction_is_a_history():
     after = beam.field("position")[beam.in_set("clamp")]  # membership follows the particles through sorting
     assert np.array_equal(np.sort(start, axis=0), np.sort(after, axis=0))
     clamp, tip = sim.histories["clamp"], sim.histories["tip"]
-    assert clamp.columns == ["time", "step", "force_x", "force_y"]
+    assert list(clamp.columns) == ["time", "step", "force_x", "force_y"]
     assert len(clamp) == 6 and np.abs(clamp["force_y"]).max() > 1  # the load's wave has reached the clamp
     assert np.abs(tip["force_y"]).max() > 1
