@@ -8,5 +8,6 @@ namespace mpm::geometry {
 
 ShapeKind mesh_kind();   // mesh_kind.cpp
 ShapeKind image_kind();  // image_kind.cpp
+ShapeKind cad_kind();    // cad_kind.cpp
 
 }  // namespace mpm::geometry
