@@ -19,6 +19,7 @@
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/geometry_error.hpp"
+#include "mpm/geometry/mass_properties.hpp"
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/io/vtk_writer.hpp"
@@ -138,12 +139,24 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
     io::write_cells_vtu(domains_path(o.output), cells_mesh);
   }
   const double total = std::accumulate(elements.volumes.begin(), elements.volumes.end(), 0.0);
+  std::string certificate;
+  if constexpr (Dim == 3)
+    if (const auto source = geometry::exact_properties(*region))  // CAD and mesh bodies: the lattice against them
+      certificate = "\n" + geometry::format_certificate(geometry::certify(
+                               source->exact,
+                               geometry::particle_properties(
+                                   seeds.positions, std::vector<Real>(seeds.positions.size(), seeds.sub_cell_volume)),
+                               source->source));
   std::string text =
       fmt::format("{}: {} particles ({}D, cells of {:.6g} m, {} per cell per axis{}), volume {:.10g} m^{}",
                   o.output.string(), elements.positions.size(), Dim, h[0], o.particles_per_cell,
                   o.domains.empty() ? "" : ", " + o.domains + " CPDI domains", total, Dim);
   if (const auto exact = region->exact_volume())
     text += fmt::format(" (body: {:.10g} m^{}, relative difference {:.3g})", *exact, Dim, total / *exact - 1);
+  if (!certificate.empty()) {
+    certificate.pop_back();  // the caller ends the text
+    text += certificate;
+  }
   return text;
 }
 
@@ -217,6 +230,11 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
     mesh.section = o.section;
     dimension = o.section ? 2 : 3;
     shape = make_shape("mesh", mesh);
+  } else if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep") {
+    geometry::CadShape cad;  // all its solids
+    cad.file = o.input;
+    cad.scale = o.scale;
+    shape = make_shape("cad", cad);
   } else if (ext == ".png" || ext == ".pgm" || ext == ".vti") {
     geometry::ImageShape image;
     image.file = o.input;
@@ -231,7 +249,8 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
     shape = make_shape("image", image);
   } else {
     throw geometry::GeometryError(o.input, fmt::format("unsupported input format '{}' (meshes: .stl, .obj, .off, "
-                                                       ".ply; images: .png, .pgm, .vti)",
+                                                       ".ply; CAD: .step, .stp, .iges, .igs, .brep; images: .png, "
+                                                       ".pgm, .vti)",
                                                        ext));
   }
   if (dimension == 2) return write_input<2>(o, shape, scene, err);
