@@ -19,6 +19,7 @@
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/geometry_error.hpp"
+#include "mpm/geometry/gmsh_body.hpp"
 #include "mpm/geometry/mass_properties.hpp"
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
@@ -115,7 +116,8 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
     elements = geometry::cpdi_particles<Dim>(seeds, spacing, Dim == 2 ? 3 : 4);
   } else {
     elements.positions = seeds.positions;
-    elements.volumes.assign(seeds.positions.size(), seeds.volume);
+    elements.volumes = seeds.volumes;  // a kind's own particles' (a Gmsh mesh's elements), else the lattice's
+    if (elements.volumes.empty()) elements.volumes.assign(seeds.positions.size(), seeds.volume);
   }
   for (const auto& w : warnings) err << "warning: " << w << '\n';
 
@@ -145,7 +147,9 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
       certificate = "\n" + geometry::format_certificate(geometry::certify(
                                source->exact,
                                geometry::particle_properties(
-                                   seeds.positions, std::vector<Real>(seeds.positions.size(), seeds.sub_cell_volume)),
+                                   seeds.positions, seeds.volumes.empty() ? std::vector<Real>(seeds.positions.size(),
+                                                                                              seeds.sub_cell_volume)
+                                                                          : seeds.volumes),
                                source->source));
   std::string text =
       fmt::format("{}: {} particles ({}D, cells of {:.6g} m, {} per cell per axis{}), volume {:.10g} m^{}",
@@ -235,6 +239,12 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
     cad.file = o.input;
     cad.scale = o.scale;
     shape = make_shape("cad", cad);
+  } else if (ext == ".msh") {
+    geometry::GmshShape gmsh;  // all elements of the mesh's highest dimension
+    gmsh.file = o.input;
+    gmsh.scale = o.scale;
+    dimension = geometry::gmsh_dimension(o.input);
+    shape = make_shape("gmsh", gmsh);
   } else if (ext == ".png" || ext == ".pgm" || ext == ".vti") {
     geometry::ImageShape image;
     image.file = o.input;
@@ -248,10 +258,11 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
     image.label = o.label;
     shape = make_shape("image", image);
   } else {
-    throw geometry::GeometryError(o.input, fmt::format("unsupported input format '{}' (meshes: .stl, .obj, .off, "
-                                                       ".ply; CAD: .step, .stp, .iges, .igs, .brep; images: .png, "
-                                                       ".pgm, .vti)",
-                                                       ext));
+    throw geometry::GeometryError(o.input,
+                                  fmt::format("unsupported input format '{}' (meshes: .stl, .obj, .off, "
+                                              ".ply; CAD: .step, .stp, .iges, .igs, .brep; Gmsh: .msh; images: .png, "
+                                              ".pgm, .vti)",
+                                              ext));
   }
   if (dimension == 2) return write_input<2>(o, shape, scene, err);
   return write_input<3>(o, shape, scene, err);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <utility>
 
@@ -103,7 +104,7 @@ std::string diagonal_text(const Mat<3>& m) {
 std::string format_certificate(const FidelityCertificate& c, const std::string& indent) {
   return fmt::format(
       "{0}fidelity against the {1}:\n"
-      "{0}  volume    {2:.10g} m^3, particles (sub-cell volumes) {3:.10g} m^3 (relative error {4:.3g})\n"
+      "{0}  volume    {2:.10g} m^3, particles {3:.10g} m^3 (relative error {4:.3g})\n"
       "{0}  centroid  {5} m, particles {6} m (error {7:.3g} of the radius of gyration)\n"
       "{0}  inertia   [xx, yy, zz; xy, xz, yz] per unit density {8} m^5, particles {9} m^5 (largest error {10:.3g} of "
       "the largest principal moment)\n",

@@ -9,6 +9,7 @@ void register_module() {
   register_shape_kind(mesh_kind());
   register_shape_kind(image_kind());
   register_shape_kind(cad_kind());
+  register_shape_kind(gmsh_kind());
 }
 
 }  // namespace mpm::geometry

@@ -33,6 +33,15 @@ struct CadShape {
   std::array<double, 3> translation{0, 0, 0};  ///< added last, m
 };
 
+/// `gmsh: FILE` (.msh, ASCII 2.2 or 4.1; 2D, 3D): one particle per element of the body's dimension, at its centroid
+/// with its volume (area in 2D). No group named: all such elements.
+struct GmshShape {
+  std::string file;                            ///< made relative to the working directory
+  std::vector<std::string> groups;             ///< the elements of the physical groups with these names
+  double scale = 1;                            ///< factor on the file's coordinates, applied first
+  std::array<double, 3> translation{0, 0, 0};  ///< added last, m
+};
+
 /// `image: FILE` (.png, .pgm in 2D; .vti in 3D): the selected pixels form the body.
 struct ImageShape {
   std::string file;                             ///< made relative to the working directory
