@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,6 +16,7 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/geometry/cad_region.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/file_shapes.hpp"
@@ -226,6 +228,7 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
 
   const std::string ext = lower_extension(o.input);
   int dimension = 3;
+  bool cad = false;
   ShapeDescription shape;
   if (ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply") {
     geometry::MeshShape mesh;
@@ -235,10 +238,11 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
     dimension = o.section ? 2 : 3;
     shape = make_shape("mesh", mesh);
   } else if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep") {
-    geometry::CadShape cad;  // all its solids
-    cad.file = o.input;
-    cad.scale = o.scale;
-    shape = make_shape("cad", cad);
+    geometry::CadShape solids;  // all of them
+    solids.file = o.input;
+    solids.scale = o.scale;
+    shape = make_shape("cad", solids);
+    cad = true;
   } else if (ext == ".msh") {
     geometry::GmshShape gmsh;  // all elements of the mesh's highest dimension
     gmsh.file = o.input;
@@ -265,7 +269,10 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
                                               ext));
   }
   if (dimension == 2) return write_input<2>(o, shape, scene, err);
-  return write_input<3>(o, shape, scene, err);
+  std::string text = write_input<3>(o, shape, scene, err);
+  if (cad)  // the solids a scene can choose by `solid: INDEX` or `part: NAME`
+    text += fmt::format("\n  solids of {}: {}", o.input, fmt::join(geometry::cad_solid_labels(o.input), ", "));
+  return text;
 }
 
 }  // namespace

@@ -50,6 +50,16 @@ std::vector<std::string> cad_part_names(const std::string& file) {
   return names;
 }
 
+std::vector<std::string> cad_solid_labels(const std::string& file) {
+  const auto solids = detail::cad_solids(file);
+  std::vector<std::string> labels;
+  labels.reserve(solids.size());
+  for (const auto& solid : solids)
+    labels.push_back(solid.part.empty() ? fmt::format("#{}", solid.index)
+                                        : fmt::format("#{} '{}'", solid.index, solid.part));
+  return labels;
+}
+
 std::vector<std::size_t> chosen_cad_solids(const CadShape& shape) {
   const auto solids = detail::cad_solids(shape.file);
   std::vector<std::size_t> chosen;

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "../apps/run_mpm.hpp"
 #include "cad_fixtures.hpp"
 #include "mpm/geometry/cad_region.hpp"
 #include "mpm/geometry/geometry_error.hpp"
@@ -242,6 +243,65 @@ TEST(CadFill, BadFilesRefused) {
   std::ofstream(text) << "hello\n";
   EXPECT_NE(error_of(cad_file(text)).find("text.step: cannot read the STEP file"), std::string::npos)
       << error_of(cad_file(text));
+}
+
+// Through the program: a scene makes one body per part (`parts`), `mpm particles FILE` prints the certificate and
+// the solids; a part name the file does not carry, a truncated STEP and an IGES of surfaces exit with 2, naming the
+// scene line, and write nothing.
+TEST(CadFill, ScenesThroughTheProgram) {
+  const fs::path dir = cli::scratch("cad_scenes");
+  test::write_assembly_step(dir / "assembly.step",
+                            {{"plate", test::cad_box(0, 0, 0, 0.6, 0.6, 0.1), gp_Vec(0.2, 0.2, 0.1)},
+                             {"projectile", test::cad_tube(0, 0, 0, 0.05, 0.02, 0.2), gp_Vec(0.5, 0.5, 0.3)}});
+  const auto scene = [&](const std::string& name, const std::string& shape) {
+    std::ofstream(dir / name) << "dimension: 3\n"
+                                 "grid: {origin: [0, 0, 0], extent: [1, 1, 1], cell_size: 0.05}\n"
+                                 "materials: {steel: {model: linear_elastic, density: 7800, youngs_modulus: 2.0e11, "
+                                 "poisson_ratio: 0.3}}\n"
+                                 "bodies:\n"
+                                 "  - name: part\n"
+                                 "    material: steel\n"
+                                 "    shape: "
+                              << shape << "\nsolver: {dt: 1.0e-6, end_time: 1.0e-5}\n";
+    return (dir / name).string();
+  };
+  auto r = cli::mpm("particles --scene " + scene("parts.yaml", "{cad: assembly.step, parts: [plate, projectile]}") +
+                        " -o " + (dir / "p.vtu").string(),
+                    dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("in 2 bodies"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("body 'part_plate'"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("body 'part_projectile'"), std::string::npos) << r.out;
+
+  r = cli::mpm("particles " + (dir / "assembly.step").string() + " --spacing 0.02 -o " + (dir / "q.vtu").string(), dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("fidelity against the B-rep (OpenCASCADE BRepGProp)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("solids of " + (dir / "assembly.step").string() + ": #0 'plate', #1 'projectile'"),
+            std::string::npos)
+      << r.out;
+
+  r = cli::mpm("check " + scene("bolt.yaml", "{cad: assembly.step, part: bolt}"), dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("bolt.yaml:7:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no part named 'bolt' in the file; its parts: 'plate', 'projectile'"), std::string::npos)
+      << r.err;
+
+  test::write_iges(dir / "surfaces.iges", test::cad_face(), false);
+  r = cli::mpm("check " + scene("surfaces.yaml", "{cad: surfaces.iges}"), dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("surfaces.iges: the file has no solid"), std::string::npos) << r.err;
+
+  {
+    std::ifstream in(dir / "assembly.step");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(dir / "truncated.step") << text.substr(0, text.size() / 3);
+  }
+  r = cli::mpm(
+      "particles --scene " + scene("truncated.yaml", "{cad: truncated.step}") + " -o " + (dir / "t.vtu").string(), dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("truncated.step: "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "t.vtu"));
+  fs::remove_all(dir);
 }
 
 #endif  // MPM_WITH_OCCT

@@ -29,6 +29,9 @@ std::vector<std::size_t> chosen_cad_solids(const CadShape& shape);
 /// The names of the parts of a CAD file, each once, in file order ("" for solids without one).
 std::vector<std::string> cad_part_names(const std::string& file);
 
+/// Every solid of a CAD file as `#index 'part'` (`#index` when it has no name), for `mpm particles`.
+std::vector<std::string> cad_solid_labels(const std::string& file);
+
 /// The region of the chosen solids. Throws GeometryError naming the file, the solid and the problem.
 std::unique_ptr<Region<3>> make_cad_region(const CadShape& shape, std::vector<std::string>* warnings,
                                            CadSummary* summary = nullptr);
