@@ -19,6 +19,7 @@
 #include <TopoDS_Face.hxx>
 
 #include <cmath>
+#include <mutex>
 #include <numbers>
 
 #include "../cad_model.hpp"
@@ -129,6 +130,9 @@ CadTessellation tessellate_cad_solid(const CadShape& shape, std::size_t index) {
       entry.part.empty() ? fmt::format("solid #{}", index) : fmt::format("solid '{}' (#{})", entry.part, index);
   CadTessellation out;
   out.label = fmt::format("{}: {}", shape.file, name);
+  // The triangulation is stored on the cached model's faces (shared by the instances of a part): one at a time.
+  static std::mutex mutex;
+  const std::scoped_lock lock(mutex);
   try {
     // Checked, measured and meshed where the file puts it (a copy placed by BRepBuilderAPI_Transform lost the
     // triangulation of IGES faces); the triangles and properties are placed after.
