@@ -272,6 +272,9 @@ TEST(CadFill, ScenesThroughTheProgram) {
   EXPECT_NE(r.out.find("in 2 bodies"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("body 'part_plate'"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("body 'part_projectile'"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  body 'part_plate':\n    fidelity against the B-rep (OpenCASCADE BRepGProp):"),
+            std::string::npos)
+      << r.out;
 
   r = cli::mpm("particles " + (dir / "assembly.step").string() + " --spacing 0.02 -o " + (dir / "q.vtu").string(), dir);
   EXPECT_EQ(r.status, 0) << r.err;
