@@ -45,7 +45,7 @@ const std::vector<io::KeySpec>& keys() {
        .type = KeyType::number,
        .unit = "m",
        .range = io::Range::above(0),
-       .absent = "1e-3 x the solid's bounding-box diagonal",
+       .absent = "1e-4 x the solid's bounding-box diagonal",
        .description = "the largest distance between the tessellation and the solid's surface (chordal deviation); "
                       "keep it well below the particle spacing"},
       {.name = "angular_tolerance",

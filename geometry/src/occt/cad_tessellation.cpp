@@ -148,7 +148,7 @@ CadTessellation tessellate_cad_solid(const CadShape& shape, std::size_t index) {
     Bnd_Box box;
     BRepBndLib::Add(solid, box);
     const double size = std::sqrt(box.SquareExtent()) * scale;
-    out.tolerance = shape.tolerance.value_or(1e-3 * size);
+    out.tolerance = shape.tolerance.value_or(1e-4 * size);
     BRepTools::Clean(solid);  // a coarser or finer triangulation of an earlier body is not reused
     const BRepMesh_IncrementalMesh mesher(solid, out.tolerance / scale, false,
                                           shape.angular_tolerance * std::numbers::pi / 180, false);

@@ -26,7 +26,7 @@ struct CadShape {
   std::string file;                            ///< made relative to the working directory
   std::vector<std::string> parts;              ///< the solids of the parts (assembly names) with these names
   std::vector<std::size_t> solids;             ///< and the solids with these indices (0-based, in file order)
-  std::optional<double> tolerance;             ///< chordal deviation of the tessellation, m (absent: 1e-3 x size)
+  std::optional<double> tolerance;             ///< chordal deviation of the tessellation, m (absent: 1e-4 x size)
   double angular_tolerance = 20;               ///< angle between neighbouring facets' normals at most, degrees
   double scale = 1;                            ///< factor after the file's unit is converted to metres
   std::array<double, 3> rotation{0, 0, 0};     ///< about x, then y, then z, degrees
