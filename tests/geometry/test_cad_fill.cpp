@@ -25,22 +25,20 @@ using namespace mpm::geometry;
 
 namespace {
 
-const double pi = std::numbers::pi;
-
 fs::path cad_scratch() {
   const fs::path dir = fs::temp_directory_path() / ("mpm_geometry_cad_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }
 
-CadShape cad_file(const fs::path& file) {
+CadShape cad_shape_of(const fs::path& file) {
   mpm::geometry::register_module();
   CadShape cad;
   cad.file = file.string();
   return cad;
 }
 
-GridGeometry<3> grid3(double lo, double hi, double h) {
+GridGeometry<3> cad_grid(double lo, double hi, double h) {
   const int n = static_cast<int>(std::lround((hi - lo) / h));
   return GridGeometry<3>(Vec<3>::Constant(lo), Vec<3>::Constant(h), {n, n, n});
 }
@@ -58,14 +56,14 @@ MassProperties box_properties(const Vec<3>& lo, double a, double b, double c) {
 /// The tube's (radii R > r, height h, axis z through (cx, cy), base z0).
 MassProperties tube_properties(double cx, double cy, double z0, double R, double r, double h) {
   MassProperties p;
-  p.volume = pi * (R * R - r * r) * h;
+  p.volume = std::numbers::pi * (R * R - r * r) * h;
   p.centroid = Vec<3>(cx, cy, z0 + h / 2);
   const double side = p.volume * ((R * R + r * r) / 4 + h * h / 12);
   p.inertia.diagonal() << side, side, p.volume * (R * R + r * r) / 2;
   return p;
 }
 
-void expect_close(const MassProperties& a, const MassProperties& b, double relative) {
+void expect_close_cad(const MassProperties& a, const MassProperties& b, double relative) {
   EXPECT_NEAR(a.volume, b.volume, relative * b.volume);
   const double length = std::cbrt(b.volume);
   EXPECT_LT((a.centroid - b.centroid).norm(), relative * length) << a.centroid.transpose();
@@ -75,12 +73,12 @@ void expect_close(const MassProperties& a, const MassProperties& b, double relat
 }
 
 /// The lattice particles of the region with their sub-cell volumes (what the certificate compares).
-MassProperties lattice_properties(const CadShape& cad, const GridGeometry<3>& grid, int ppc) {
+MassProperties cad_lattice_properties(const CadShape& cad, const GridGeometry<3>& grid, int ppc) {
   const auto seeds = fill_shape<3>(make_shape("cad", cad), grid, {ppc, ppc, ppc}, nullptr, false);
   return particle_properties(seeds.positions, std::vector<Real>(seeds.positions.size(), seeds.sub_cell_volume));
 }
 
-std::string error_of(const CadShape& cad) {
+std::string cad_error_of(const CadShape& cad) {
   try {
     make_cad_region(cad, nullptr);
   } catch (const GeometryError& e) {
@@ -97,19 +95,19 @@ std::string error_of(const CadShape& cad) {
 TEST(CadFill, BoxStepCertificate) {
   const fs::path file = cad_scratch() / "box.step";
   test::write_step(file, test::cad_box(0.1, 0.1, 0.1, 0.4, 0.2, 0.1));
-  const CadShape cad = cad_file(file);
+  const CadShape cad = cad_shape_of(file);
   const auto region = make_cad_region(cad, nullptr);
   const auto source = exact_properties(*region);
   ASSERT_TRUE(source);
   const MassProperties closed = box_properties(Vec<3>(0.1, 0.1, 0.1), 0.4, 0.2, 0.1);
-  expect_close(source->exact, closed, 1e-9);
+  expect_close_cad(source->exact, closed, 1e-9);
   EXPECT_NE(source->source.find("BRepGProp"), std::string::npos);
 
   const double h = 0.05, s = h / 2;
-  const MassProperties particles = lattice_properties(cad, grid3(0, 1, h), 2);
+  const MassProperties particles = cad_lattice_properties(cad, cad_grid(0, 1, h), 2);
   MassProperties points = closed;
   points.inertia.diagonal().array() -= closed.volume * s * s / 6;
-  expect_close(particles, points, 1e-12);
+  expect_close_cad(particles, points, 1e-12);
   const FidelityCertificate c = certify(source->exact, particles, source->source);
   EXPECT_NEAR(c.volume_error, 0, 1e-12);
   EXPECT_NEAR(c.centroid_error, 0, 1e-12);
@@ -121,10 +119,10 @@ TEST(CadFill, BoxStepCertificate) {
 TEST(CadFill, MillimetreStepInMetres) {
   const fs::path file = cad_scratch() / "part_mm.step";
   test::write_step(file, test::cad_box(30, 0, 0, 20, 10, 5), "MM");
-  const auto region = make_cad_region(cad_file(file), nullptr);
+  const auto region = make_cad_region(cad_shape_of(file), nullptr);
   const auto source = exact_properties(*region);
   ASSERT_TRUE(source);
-  expect_close(source->exact, box_properties(Vec<3>(0.03, 0, 0), 0.02, 0.01, 0.005), 1e-9);
+  expect_close_cad(source->exact, box_properties(Vec<3>(0.03, 0, 0), 0.02, 0.01, 0.005), 1e-9);
   EXPECT_NEAR(region->bounds().hi[0], 0.05, 1e-9);
 }
 
@@ -142,7 +140,7 @@ TEST(CadFill, TubeBrepAndIges) {
       test::write_brep(file, tube);
     else
       test::write_iges(file, test::cad_tube(500, 500, 100, 200, 100, 300), true);
-    CadShape cad = cad_file(file);
+    CadShape cad = cad_shape_of(file);
     cad.tolerance = 1e-4;
     CadSummary summary;
     const auto region = make_cad_region(cad, nullptr, &summary);
@@ -150,10 +148,10 @@ TEST(CadFill, TubeBrepAndIges) {
     EXPECT_GT(summary.triangles, 100u);
     const auto source = exact_properties(*region);
     ASSERT_TRUE(source);
-    expect_close(source->exact, closed, 1e-7);
+    expect_close_cad(source->exact, closed, 1e-7);
     EXPECT_FALSE(region->contains(Vec<3>(0.5, 0.5, 0.25)));  // in the hole
     EXPECT_TRUE(region->contains(Vec<3>(0.65, 0.5, 0.25)));
-    const FidelityCertificate c = certify(source->exact, lattice_properties(cad, grid3(0, 1, 0.025), 2), "");
+    const FidelityCertificate c = certify(source->exact, cad_lattice_properties(cad, cad_grid(0, 1, 0.025), 2), "");
     EXPECT_LT(std::abs(c.volume_error), 0.02);
     EXPECT_LT(c.centroid_error, 0.01);
     EXPECT_LT(c.inertia_error, 0.03);
@@ -165,19 +163,19 @@ TEST(CadFill, TubeBrepAndIges) {
 TEST(CadFill, RotatedBoxInertia) {
   const fs::path file = cad_scratch() / "box_rotated.brep";
   test::write_brep(file, test::cad_box(-0.2, -0.1, -0.05, 0.4, 0.2, 0.1));
-  CadShape cad = cad_file(file);
+  CadShape cad = cad_shape_of(file);
   cad.rotation = {0, 0, 30};
   cad.translation = {0.5, 0.5, 0.5};
   const auto source = exact_properties(*make_cad_region(cad, nullptr));
   ASSERT_TRUE(source);
   MassProperties closed = box_properties(Vec<3>(-0.2, -0.1, -0.05), 0.4, 0.2, 0.1);
-  const Mat<3> R = Eigen::AngleAxisd(pi / 6, Vec<3>::UnitZ()).toRotationMatrix();
+  const Mat<3> R = Eigen::AngleAxisd(std::numbers::pi / 6, Vec<3>::UnitZ()).toRotationMatrix();
   closed.inertia = R * closed.inertia * R.transpose();
   closed.centroid = Vec<3>(0.5, 0.5, 0.5);
-  expect_close(source->exact, closed, 1e-9);
+  expect_close_cad(source->exact, closed, 1e-9);
   EXPECT_LT(closed.inertia(0, 1), 0);
   // and the mesh's own integrals agree with the B-rep for a flat-faced solid
-  const auto particles = lattice_properties(cad, grid3(0, 1, 0.02), 2);
+  const auto particles = cad_lattice_properties(cad, cad_grid(0, 1, 0.02), 2);
   EXPECT_LT(certify(source->exact, particles, "").inertia_error, 0.03);
 }
 
@@ -188,30 +186,30 @@ TEST(CadFill, AssemblyPartsByName) {
   test::write_assembly_step(file, {{"plate", test::cad_box(0, 0, 0, 0.6, 0.6, 0.1), gp_Vec(0.2, 0.2, 0.1)},
                                    {"projectile", test::cad_tube(0, 0, 0, 0.05, 0.02, 0.2), gp_Vec(0.5, 0.5, 0.3)}});
   EXPECT_EQ(cad_part_names(file.string()), (std::vector<std::string>{"plate", "projectile"}));
-  CadShape plate = cad_file(file);
+  CadShape plate = cad_shape_of(file);
   plate.parts = {"plate"};
   const auto plate_props = exact_properties(*make_cad_region(plate, nullptr));
   ASSERT_TRUE(plate_props);
-  expect_close(plate_props->exact, box_properties(Vec<3>(0.2, 0.2, 0.1), 0.6, 0.6, 0.1), 1e-9);
-  CadShape projectile = cad_file(file);
+  expect_close_cad(plate_props->exact, box_properties(Vec<3>(0.2, 0.2, 0.1), 0.6, 0.6, 0.1), 1e-9);
+  CadShape projectile = cad_shape_of(file);
   projectile.solids = {1};
   const auto projectile_props = exact_properties(*make_cad_region(projectile, nullptr));
   ASSERT_TRUE(projectile_props);
-  expect_close(projectile_props->exact, tube_properties(0.5, 0.5, 0.3, 0.05, 0.02, 0.2), 1e-7);
+  expect_close_cad(projectile_props->exact, tube_properties(0.5, 0.5, 0.3, 0.05, 0.02, 0.2), 1e-7);
   // both: the union, whose properties combine the two
-  const auto both = exact_properties(*make_cad_region(cad_file(file), nullptr));
+  const auto both = exact_properties(*make_cad_region(cad_shape_of(file), nullptr));
   ASSERT_TRUE(both);
-  expect_close(both->exact, combine(plate_props->exact, projectile_props->exact), 1e-12);
+  expect_close_cad(both->exact, combine(plate_props->exact, projectile_props->exact), 1e-12);
 
-  CadShape bolt = cad_file(file);
+  CadShape bolt = cad_shape_of(file);
   bolt.parts = {"bolt"};
-  const std::string message = error_of(bolt);
+  const std::string message = cad_error_of(bolt);
   EXPECT_NE(message.find("assembly.step: no part named 'bolt' in the file; its parts: 'plate', 'projectile'"),
             std::string::npos)
       << message;
-  CadShape past = cad_file(file);
+  CadShape past = cad_shape_of(file);
   past.solids = {2};
-  EXPECT_NE(error_of(past).find("no solid #2: the file has 2 solids"), std::string::npos) << error_of(past);
+  EXPECT_NE(cad_error_of(past).find("no solid #2: the file has 2 solids"), std::string::npos) << cad_error_of(past);
 }
 
 // Bad files: each refused with the file, the solid and what is wrong.
@@ -225,24 +223,25 @@ TEST(CadFill, BadFilesRefused) {
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::ofstream(truncated) << text.substr(0, text.size() / 2);
   }
-  EXPECT_NE(error_of(cad_file(truncated)).find("truncated.step: "), std::string::npos);
-  EXPECT_NE(error_of(cad_file(truncated)).find("STEP"), std::string::npos) << error_of(cad_file(truncated));
+  EXPECT_NE(cad_error_of(cad_shape_of(truncated)).find("truncated.step: "), std::string::npos);
+  EXPECT_NE(cad_error_of(cad_shape_of(truncated)).find("STEP"), std::string::npos)
+      << cad_error_of(cad_shape_of(truncated));
   // an IGES of surfaces only
   const fs::path surfaces = dir / "surfaces.iges";
   test::write_iges(surfaces, test::cad_face(), false);
-  EXPECT_NE(error_of(cad_file(surfaces)).find("surfaces.iges: the file has no solid"), std::string::npos)
-      << error_of(cad_file(surfaces));
+  EXPECT_NE(cad_error_of(cad_shape_of(surfaces)).find("surfaces.iges: the file has no solid"), std::string::npos)
+      << cad_error_of(cad_shape_of(surfaces));
   // an open solid
   const fs::path open = dir / "open.brep";
   test::write_brep(open, test::cad_open_box());
-  EXPECT_NE(error_of(cad_file(open)).find("open.brep: solid #0 is open: 4 edges bound a single face"),
+  EXPECT_NE(cad_error_of(cad_shape_of(open)).find("open.brep: solid #0 is open: 4 edges bound a single face"),
             std::string::npos)
-      << error_of(cad_file(open));
+      << cad_error_of(cad_shape_of(open));
   // not a CAD file at all
   const fs::path text = dir / "text.step";
   std::ofstream(text) << "hello\n";
-  EXPECT_NE(error_of(cad_file(text)).find("text.step: cannot read the STEP file"), std::string::npos)
-      << error_of(cad_file(text));
+  EXPECT_NE(cad_error_of(cad_shape_of(text)).find("text.step: cannot read the STEP file"), std::string::npos)
+      << cad_error_of(cad_shape_of(text));
 }
 
 // Through the program: a scene makes one body per part (`parts`), `mpm particles FILE` prints the certificate and
