@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "mpm/body_shape/shape_kind.hpp"
 #include "mpm/core/exact_sum.hpp"
+#include "mpm/geometry/mass_properties.hpp"
 
 namespace mpm::app {
 
@@ -25,8 +29,39 @@ std::string body_summary(const Simulation<Dim>& sim) {
   return text;
 }
 
+template <int Dim>
+std::string body_certificates(const Simulation<Dim>& sim, const SceneDescription& scene) {
+  std::string text;
+  if constexpr (Dim == 3) {
+    for (const auto& b : sim.bodies()) {
+      const auto description = std::find_if(scene.bodies.begin(), scene.bodies.end(),
+                                            [&](const BodyDescription& d) { return d.name == b.name; });
+      if (description == scene.bodies.end() || !shape_kind(description->shape).traits.exact_volume) continue;
+      const auto source = geometry::exact_properties(*make_shape_region<3>(description->shape));
+      if (!source) continue;
+      std::vector<Vec<3>> positions;
+      std::vector<Real> volumes;
+      positions.reserve(static_cast<std::size_t>(b.particles.size()));
+      volumes.reserve(static_cast<std::size_t>(b.particles.size()));
+      for (Index i = 0; i < b.particles.size(); ++i) {
+        positions.emplace_back(b.particles.x[i]);
+        volumes.push_back(b.particles.volume0[i]);
+      }
+      text += fmt::format("  body '{}':\n", b.name) +
+              geometry::format_certificate(
+                  geometry::certify(source->exact, geometry::particle_properties(positions, volumes), source->source),
+                  "    ");
+    }
+  }
+  return text;
+}
+
 template std::string body_summary<1>(const Simulation<1>&);
 template std::string body_summary<2>(const Simulation<2>&);
 template std::string body_summary<3>(const Simulation<3>&);
+
+template std::string body_certificates<1>(const Simulation<1>&, const SceneDescription&);
+template std::string body_certificates<2>(const Simulation<2>&, const SceneDescription&);
+template std::string body_certificates<3>(const Simulation<3>&, const SceneDescription&);
 
 }  // namespace mpm::app

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,10 +16,13 @@
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/app/scene_builder.hpp"
+#include "mpm/geometry/cad_region.hpp"
 #include "mpm/geometry/conforming_domains.hpp"
 #include "mpm/geometry/cpdi_domains.hpp"
 #include "mpm/geometry/file_shapes.hpp"
 #include "mpm/geometry/geometry_error.hpp"
+#include "mpm/geometry/gmsh_body.hpp"
+#include "mpm/geometry/mass_properties.hpp"
 #include "mpm/geometry/particle_count.hpp"
 #include "mpm/geometry/shape_filler.hpp"
 #include "mpm/io/vtk_writer.hpp"
@@ -114,7 +118,8 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
     elements = geometry::cpdi_particles<Dim>(seeds, spacing, Dim == 2 ? 3 : 4);
   } else {
     elements.positions = seeds.positions;
-    elements.volumes.assign(seeds.positions.size(), seeds.volume);
+    elements.volumes = seeds.volumes;  // a kind's own particles' (a Gmsh mesh's elements), else the lattice's
+    if (elements.volumes.empty()) elements.volumes.assign(seeds.positions.size(), seeds.volume);
   }
   for (const auto& w : warnings) err << "warning: " << w << '\n';
 
@@ -138,12 +143,26 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
     io::write_cells_vtu(domains_path(o.output), cells_mesh);
   }
   const double total = std::accumulate(elements.volumes.begin(), elements.volumes.end(), 0.0);
+  std::string certificate;
+  if constexpr (Dim == 3)
+    if (const auto source = geometry::exact_properties(*region))  // CAD and mesh bodies: the lattice against them
+      certificate = "\n" + geometry::format_certificate(geometry::certify(
+                               source->exact,
+                               geometry::particle_properties(
+                                   seeds.positions, seeds.volumes.empty() ? std::vector<Real>(seeds.positions.size(),
+                                                                                              seeds.sub_cell_volume)
+                                                                          : seeds.volumes),
+                               source->source));
   std::string text =
       fmt::format("{}: {} particles ({}D, cells of {:.6g} m, {} per cell per axis{}), volume {:.10g} m^{}",
                   o.output.string(), elements.positions.size(), Dim, h[0], o.particles_per_cell,
                   o.domains.empty() ? "" : ", " + o.domains + " CPDI domains", total, Dim);
   if (const auto exact = region->exact_volume())
     text += fmt::format(" (body: {:.10g} m^{}, relative difference {:.3g})", *exact, Dim, total / *exact - 1);
+  if (!certificate.empty()) {
+    certificate.pop_back();  // the caller ends the text
+    text += certificate;
+  }
   return text;
 }
 
@@ -174,8 +193,9 @@ std::string write_scene(const ParticlesOptions& o, const SceneDescription& scene
                         scene.solver.shape_function));
   io::write_vtu(o.output, cloud);
   if (!o.domains.empty()) io::write_cells_vtu(domains_path(o.output), particle_domain_mesh(sim->bodies()));
-  std::string bodies = body_summary<Dim>(*sim);  // one line per body
-  bodies.pop_back();                             // the caller ends the text
+  std::string bodies = body_summary<Dim>(*sim) + body_certificates<Dim>(*sim, scene);  // a line per body, then CAD
+                                                                                       // and mesh bodies' certificates
+  bodies.pop_back();                                                                   // the caller ends the text
   return fmt::format("{}: {} particles in {} {} ({}D), volume {:.10g} m^{}\n{}", o.output.string(), cloud.size(),
                      sim->bodies().size(), sim->bodies().size() == 1 ? "body" : "bodies", Dim, total, Dim, bodies);
 }
@@ -209,6 +229,7 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
 
   const std::string ext = lower_extension(o.input);
   int dimension = 3;
+  bool cad = false;
   ShapeDescription shape;
   if (ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply") {
     geometry::MeshShape mesh;
@@ -217,6 +238,18 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
     mesh.section = o.section;
     dimension = o.section ? 2 : 3;
     shape = make_shape("mesh", mesh);
+  } else if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep") {
+    geometry::CadShape solids;  // all of them
+    solids.file = o.input;
+    solids.scale = o.scale;
+    shape = make_shape("cad", solids);
+    cad = true;
+  } else if (ext == ".msh") {
+    geometry::GmshShape gmsh;  // all elements of the mesh's highest dimension
+    gmsh.file = o.input;
+    gmsh.scale = o.scale;
+    dimension = geometry::gmsh_dimension(o.input);
+    shape = make_shape("gmsh", gmsh);
   } else if (ext == ".png" || ext == ".pgm" || ext == ".vti") {
     geometry::ImageShape image;
     image.file = o.input;
@@ -230,12 +263,17 @@ std::string run(const ParticlesOptions& o, std::ostream& err) {
     image.label = o.label;
     shape = make_shape("image", image);
   } else {
-    throw geometry::GeometryError(o.input, fmt::format("unsupported input format '{}' (meshes: .stl, .obj, .off, "
-                                                       ".ply; images: .png, .pgm, .vti)",
-                                                       ext));
+    throw geometry::GeometryError(o.input,
+                                  fmt::format("unsupported input format '{}' (meshes: .stl, .obj, .off, "
+                                              ".ply; CAD: .step, .stp, .iges, .igs, .brep; Gmsh: .msh; images: .png, "
+                                              ".pgm, .vti)",
+                                              ext));
   }
   if (dimension == 2) return write_input<2>(o, shape, scene, err);
-  return write_input<3>(o, shape, scene, err);
+  std::string text = write_input<3>(o, shape, scene, err);
+  if (cad)  // the solids a scene can choose by `solid: INDEX` or `part: NAME`
+    text += fmt::format("\n  solids of {}: {}", o.input, fmt::join(geometry::cad_solid_labels(o.input), ", "));
+  return text;
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 
 #include <iterator>
+#include <optional>
 
+#include "known_properties.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/polygon_region.hpp"
 #include "surface_mesh_io.hpp"
@@ -23,7 +25,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 /// Inside a closed triangle mesh: CGAL's ray-shooting Side_of_triangle_mesh on an AABB tree (built on the
 /// first query).
-class MeshRegion : public Region<3> {
+class MeshRegion : public Region<3>, public detail::KnownProperties {
  public:
   explicit MeshRegion(SurfaceMesh mesh)
       : mesh_(std::make_unique<SurfaceMesh>(std::move(mesh))),
@@ -40,6 +42,24 @@ class MeshRegion : public Region<3> {
   Box<3> bounds() const override { return bounds_; }
   std::optional<Real> exact_volume() const override { return volume_; }
   const SurfaceMesh& mesh() const { return *mesh_; }
+  MassProperties mass_properties() const override {
+    std::vector<Vec<3>> points;
+    points.reserve(mesh_->number_of_vertices());
+    for (const auto v : mesh_->vertices()) {
+      const Point3& p = mesh_->point(v);
+      points.emplace_back(p.x(), p.y(), p.z());
+    }
+    std::vector<std::array<std::size_t, 3>> triangles;
+    triangles.reserve(mesh_->number_of_faces());
+    for (const auto f : mesh_->faces()) {
+      std::array<std::size_t, 3> t{};
+      int k = 0;
+      for (const auto v : CGAL::vertices_around_face(mesh_->halfedge(f), *mesh_)) t[k++ % 3] = std::size_t(v);
+      triangles.push_back(t);
+    }
+    return mesh_properties(points, triangles);
+  }
+  std::string properties_source() const override { return "surface mesh (exact integrals)"; }
 
  private:
   std::unique_ptr<SurfaceMesh> mesh_;  // on the heap: side_ keeps its address
@@ -49,6 +69,16 @@ class MeshRegion : public Region<3> {
 };
 
 }  // namespace
+
+std::unique_ptr<Region<3>> detail::surface_region(SurfaceMesh mesh) {
+  return std::make_unique<MeshRegion>(std::move(mesh));
+}
+
+std::optional<SourceProperties> exact_properties(const Region<3>& region) {
+  const auto* known = dynamic_cast<const detail::KnownProperties*>(&region);
+  if (!known) return std::nullopt;
+  return SourceProperties{known->mass_properties(), known->properties_source()};
+}
 
 const SurfaceMesh* detail::surface_of(const Region<3>& region) {
   const auto* mesh = dynamic_cast<const MeshRegion*>(&region);

@@ -8,6 +8,8 @@ namespace mpm::geometry {
 void register_module() {
   register_shape_kind(mesh_kind());
   register_shape_kind(image_kind());
+  register_shape_kind(cad_kind());
+  register_shape_kind(gmsh_kind());
 }
 
 }  // namespace mpm::geometry

@@ -8,5 +8,7 @@ namespace mpm::geometry {
 
 ShapeKind mesh_kind();   // mesh_kind.cpp
 ShapeKind image_kind();  // image_kind.cpp
+ShapeKind cad_kind();    // cad_kind.cpp
+ShapeKind gmsh_kind();   // gmsh_kind.cpp
 
 }  // namespace mpm::geometry

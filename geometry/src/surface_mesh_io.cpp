@@ -74,6 +74,11 @@ SurfaceMesh load_surface_mesh(const MeshShape& shape, std::vector<std::string>* 
     p = Point3(x[0], x[1], x[2]);
   }
 
+  return close_polygon_soup(file, std::move(points), std::move(polygons), warnings);
+}
+
+SurfaceMesh close_polygon_soup(const std::string& file, std::vector<Point3> points,
+                               std::vector<std::vector<std::size_t>> polygons, std::vector<std::string>* warnings) {
   // STL repeats every vertex per triangle: merge them; drop degenerate and duplicated faces.
   PMP::repair_polygon_soup(points, polygons);
   if (polygons.empty()) throw GeometryError(file, "the mesh has no face of positive area");

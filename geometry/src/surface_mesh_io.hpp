@@ -4,6 +4,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,16 @@ using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 /// the shape's scale, rotation and translation applied. Throws GeometryError naming the file and the
 /// problem; an inside-out or inconsistently oriented mesh is repaired and a warning appended.
 SurfaceMesh load_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings);
+
+/// The closed, manifold, self-intersection-free, outward-oriented triangle mesh of a polygon soup (points in m):
+/// duplicated points merged, degenerate faces dropped, orientation repaired (with a warning). Throws GeometryError
+/// naming `file` (the file, or the file and the solid it came from) and the problem.
+SurfaceMesh close_polygon_soup(const std::string& file, std::vector<Point3> points,
+                               std::vector<std::vector<std::size_t>> polygons, std::vector<std::string>* warnings);
+
+/// The region inside a closed mesh (close_polygon_soup's): CGAL's inside test, its volume and exact properties
+/// (mass_properties.hpp).
+std::unique_ptr<Region<3>> surface_region(SurfaceMesh mesh);
 
 /// Builds a box as a closed triangle mesh (12 triangles, outward).
 SurfaceMesh box_mesh(const Box<3>& box);

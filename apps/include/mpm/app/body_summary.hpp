@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "mpm/scene/scene.hpp"
 #include "mpm/simulation/simulation.hpp"
 
 namespace mpm::app {
@@ -15,5 +16,12 @@ namespace mpm::app {
 /// the full revolution (m^3, kg).
 template <int Dim>
 std::string body_summary(const Simulation<Dim>& sim);
+
+/// The fidelity certificate (geometry/mass_properties.hpp) of every 3D body whose shape knows its source's exact
+/// properties (a CAD file's B-rep, a surface mesh's or a Gmsh mesh's integrals): the particles' volume, centroid and
+/// inertia as built (volume0; with `volume: exact` their volumes sum to the exact volume by construction) against
+/// them, a few lines per body. "" in 1D and 2D and for other shapes.
+template <int Dim>
+std::string body_certificates(const Simulation<Dim>& sim, const SceneDescription& scene);
 
 }  // namespace mpm::app
