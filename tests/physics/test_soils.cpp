@@ -1,0 +1,169 @@
+// drucker_prager and mohr_coulomb (physics/soils, docs/theory.md §17) at one material point, driven by the
+// material-test driver's library function (apps material_test.hpp), against closed forms:
+//  - triaxial compression at three confining pressures: the peak deviatoric stress q on the yield surface
+//    (eqs. 17.14, 17.15) to 1e-10, and the ratio of the volumetric to the axial strain rate once the stress no longer
+//    changes, which the flow rule fixes through the dilation angle alone (eqs. 17.16, 17.17);
+//  - triaxial extension (eqs. 17.14, 17.15): Drucker-Prager's inner cone and Mohr-Coulomb agree there;
+//  - the apex and the tension cut-off: a point pulled apart isotropically ends at p = min(T, c cot phi), on or inside
+//    the yield surface, s = 0 at the apex.
+// Measured errors are printed as "[ measured ]" lines.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "mpm/app/material_test.hpp"
+#include "mpm/soils/drucker_prager.hpp"
+#include "mpm/soils/mohr_coulomb.hpp"
+#include "mpm/soils/soil_batch.hpp"
+
+namespace mpm::soils {
+namespace {
+
+using app::LoadPath;
+using app::MaterialTestOptions;
+using app::MaterialTestResult;
+
+constexpr Real degree = std::numbers::pi / 180;
+
+/// A dense sand with some cohesion: E = 50 MPa, nu = 0.3, phi = 30 deg, psi = 10 deg, c = 10 kPa, no tension.
+SoilParams sand(ConeMatching matching = ConeMatching::outer_cone) {
+  SoilParams s;
+  s.density = 1800;
+  const Real E = 50e6, nu = 0.3;
+  s.shear_modulus = E / (2 * (1 + nu));
+  s.bulk_modulus = E / (3 * (1 - 2 * nu));
+  s.friction = 30 * degree;
+  s.dilation = 10 * degree;
+  s.cohesion = 10e3;
+  s.tension_cutoff = 0;
+  s.matching = matching;
+  return s;
+}
+
+template <class Return>
+MaterialTestResult triaxial(const SoilParams& s, Real confining, LoadPath path) {
+  SoilBatch<3, Return> material(s);
+  MaterialTestOptions o;
+  o.path = path;
+  o.confining_pressure = confining;
+  o.strain = 0.05;  // far beyond yield (about 1e-2 here)
+  o.steps = 200;
+  return app::run_material_test(material, o);
+}
+
+Real relative(Real a, Real b) { return std::abs(a - b) / std::abs(b); }
+
+/// Delta eps_v / Delta eps_axial over the last step.
+Real dilatancy_ratio(const MaterialTestResult& r) {
+  const auto& a = r.rows[r.rows.size() - 2];
+  const auto& b = r.rows.back();
+  return (b.volumetric_strain - a.volumetric_strain) / (b.strain(0, 0) - a.strain(0, 0));
+}
+
+Real peak_q(const MaterialTestResult& r) {
+  Real q = 0;
+  for (const auto& row : r.rows) q = std::max(q, row.deviatoric_stress);
+  return q;
+}
+
+TEST(DruckerPrager, TriaxialCompressionPeakAndDilatancy) {
+  for (const ConeMatching matching : {ConeMatching::outer_cone, ConeMatching::inner_cone, ConeMatching::plane_strain}) {
+    const SoilParams s = sand(matching);
+    const ConeCoefficients yield = cone_coefficients(matching, s.friction);
+    const Real eta_bar = cone_coefficients(matching, s.dilation).eta;
+    for (const Real confining : {50e3, 100e3, 200e3}) {
+      const MaterialTestResult r = triaxial<DruckerPrager>(s, confining, LoadPath::triaxial_compression);
+      // sigma = diag(-p_c - q, -p_c, -p_c): sqrt(J2) = q / sqrt(3), p = -p_c - q / 3 on the cone (eq. 17.14)
+      const Real expected = (yield.xi * s.cohesion + yield.eta * confining) / (1 / std::sqrt(3.0) - yield.eta / 3);
+      const Real error = relative(peak_q(r), expected);
+      // d eps_p = d gamma (s / (2 sqrt(J2)) + eta_bar / 3 1): axial -1/sqrt(3) + eta_bar / 3, volume eta_bar (17.16)
+      const Real ratio = eta_bar / (eta_bar / 3 - 1 / std::sqrt(3.0));
+      const Real ratio_error = std::abs(dilatancy_ratio(r) - ratio);
+      std::printf("[ measured ] DP matching %d, p_c = %g kPa: q %.6g (error %.2e), dilatancy %.6f (error %.2e)\n",
+                  static_cast<int>(matching), confining / 1e3, peak_q(r), error, dilatancy_ratio(r), ratio_error);
+      EXPECT_LT(error, 1e-10);
+      EXPECT_LT(ratio_error, 1e-10);
+      EXPECT_GT(r.rows.back().model_fields.at(1), 0);  // plastic_volumetric_strain: dilation
+    }
+  }
+}
+
+TEST(MohrCoulomb, TriaxialCompressionPeakAndDilatancy) {
+  const SoilParams s = sand();
+  const Real sp = std::sin(s.friction), sd = std::sin(s.dilation);
+  for (const Real confining : {50e3, 100e3, 200e3}) {
+    const MaterialTestResult r = triaxial<MohrCoulomb>(s, confining, LoadPath::triaxial_compression);
+    // sigma_1 = sigma_2 = -p_c, sigma_3 = -p_c - q on the main plane (an edge of the pyramid, eq. 17.15)
+    const Real expected = (2 * confining * sp + 2 * s.cohesion * std::cos(s.friction)) / (1 - sp);
+    const Real error = relative(peak_q(r), expected);
+    // two equal multipliers on the edge: d eps = d gamma (1 + sin psi, 1 + sin psi, -2 (1 - sin psi)) (eq. 17.17)
+    const Real ratio = -2 * sd / (1 - sd);
+    const Real ratio_error = std::abs(dilatancy_ratio(r) - ratio);
+    std::printf("[ measured ] MC p_c = %g kPa: q %.6g (error %.2e), dilatancy %.6f (error %.2e)\n", confining / 1e3,
+                peak_q(r), error, dilatancy_ratio(r), ratio_error);
+    EXPECT_LT(error, 1e-10);
+    EXPECT_LT(ratio_error, 1e-10);
+  }
+}
+
+TEST(SoilModels, TriaxialExtensionInnerConeAgreesWithMohrCoulomb) {
+  const SoilParams s = sand(ConeMatching::inner_cone);
+  const Real sp = std::sin(s.friction);
+  for (const Real confining : {50e3, 100e3, 200e3}) {
+    // sigma = diag(-p_c + q, -p_c, -p_c): Mohr-Coulomb q = (2 p_c sin phi + 2 c cos phi) / (1 + sin phi)
+    const Real expected = (2 * confining * sp + 2 * s.cohesion * std::cos(s.friction)) / (1 + sp);
+    const Real mc = peak_q(triaxial<MohrCoulomb>(s, confining, LoadPath::triaxial_extension));
+    const Real dp = peak_q(triaxial<DruckerPrager>(s, confining, LoadPath::triaxial_extension));
+    std::printf("[ measured ] extension p_c = %g kPa: MC error %.2e, DP inner cone error %.2e\n", confining / 1e3,
+                relative(mc, expected), relative(dp, expected));
+    EXPECT_LT(relative(mc, expected), 1e-10);
+    EXPECT_LT(relative(dp, expected), 1e-10);
+  }
+}
+
+/// Isotropic extension (with a little shear) beyond the apex: the stress ends at p = min(T, c cot phi), inside the
+/// yield surface, with no deviator at the apex itself, for both models.
+template <class Return>
+void check_apex(Real tension_cutoff) {
+  SoilParams s = sand();
+  s.tension_cutoff = tension_cutoff;
+  SoilBatch<3, Return> material(s);
+  MaterialTestOptions o;
+  o.path = LoadPath::deformation_csv;
+  for (int k = 1; k <= 10; ++k) {
+    app::DeformationSample sample;
+    sample.time = k * 0.1;
+    sample.F = Mat3::Identity() * (1 + 1e-3 * k);
+    sample.F(0, 1) = 2e-4 * k;  // and some shear, so that the return has a deviator to remove
+    o.samples.push_back(sample);
+  }
+  const MaterialTestResult r = app::run_material_test(material, o);
+  const Real apex = s.cohesion / std::tan(s.friction);
+  const Real cap = std::min(tension_cutoff, apex);
+  const Mat3 stress = r.rows.back().stress;
+  const Real mean = stress.trace() / 3;
+  const Real error = std::abs(mean - cap) / apex;
+  // below the apex the deviator is what the yield surface leaves at p = T (on or inside it); at the apex none
+  const Real deviator = (stress - mean * Mat3::Identity()).norm() / apex;
+  const Real yield = material.return_mapping().yield_function(stress) / s.cohesion;
+  std::printf("[ measured ] %s, T = %g kPa: |p - min(T, c cot phi)| / (c cot phi) = %.2e, yield function %.2e c\n",
+              Return::key, tension_cutoff / 1e3, error, yield);
+  EXPECT_LT(error, 1e-12);
+  EXPECT_LT(yield, 1e-12);
+  if (cap == apex) {
+    EXPECT_LT(deviator, 1e-12);
+  }
+}
+
+TEST(SoilModels, ApexAndTensionCutoff) {
+  for (const Real T : {0.0, 5e3, 1e6}) {
+    check_apex<DruckerPrager>(T);
+    check_apex<MohrCoulomb>(T);
+  }
+}
+
+}  // namespace
+}  // namespace mpm::soils
