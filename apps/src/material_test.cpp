@@ -94,6 +94,54 @@ class Point {
   std::vector<std::string> fields_;
 };
 
+/// The fallback of a single stress-controlled stretch: where the stress does not depend on the stretch on one side of
+/// a kink (a soil whose mean stress sits on the tension cut-off while its deviator is on the cone), Newton's method
+/// finds no slope. The stress grows with the stretch for every model here, so the root is bracketed by steps that
+/// double away from the side of the residual's sign, then found by the Illinois variant of regula falsi. True when
+/// the residual is within `tolerance`; `x`, `state` and `r` are then the root's.
+template <class With, class Residual>
+bool bracket_root(const Point& point, const StepControl& control, const With& with, const Residual& residual, double dt,
+                  Eigen::VectorXd& x, ParticleSet<3>& state, Eigen::VectorXd& r) {
+  const auto at = [&](double value, ParticleSet<3>& p) {
+    p = point.trial(with(control, Eigen::VectorXd::Constant(1, value)).deformation(), dt);
+    return residual(p)[0];
+  };
+  const double tolerance = 1e-12 * std::max(std::abs(r[0]), state.stress[0].full().cwiseAbs().maxCoeff());
+  double a = x[0], fa = r[0], b = a, fb = fa;
+  ParticleSet<3> trial;
+  for (double h = 1e-6 * std::abs(a); fa * fb > 0; h *= 2) {
+    if (h > std::abs(a)) return false;
+    b = a + (fa > 0 ? -h : h);
+    fb = at(b, trial);
+  }
+  int side = 0;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double c = (a * fb - b * fa) / (fb - fa);
+    const double fc = at(c, trial);
+    // the stress's round-off: 16 eps times the slope times the stretch (as mixed_step's)
+    const double round_off = 16 * std::numeric_limits<double>::epsilon() * std::abs((fb - fa) / (b - a) * c);
+    if (std::abs(fc) <= tolerance + round_off ||
+        std::abs(b - a) <= 4 * std::numeric_limits<double>::epsilon() * std::abs(c)) {
+      x[0] = c;
+      state = std::move(trial);
+      r = Eigen::VectorXd::Constant(1, fc);
+      return std::abs(fc) <= tolerance + round_off;
+    }
+    if (fc * fb > 0) {
+      b = c;
+      fb = fc;
+      if (side == -1) fa /= 2;
+      side = -1;
+    } else {
+      a = c;
+      fa = fc;
+      if (side == 1) fb /= 2;
+      side = 1;
+    }
+  }
+  return false;
+}
+
 /// One step of mixed control: Newton's method on the stress-controlled stretches (StepControl::unknown) with a
 /// finite-difference Jacobian and backtracking, to |sigma_ii - target_i| <= 1e-12 of the stress scale, or to the
 /// round-off of the stress (16 eps times the stiffness times the stretch: a stiff material's stress is known to no
@@ -127,8 +175,10 @@ void mixed_step(Point& point, StepControl control, double dt, double time) {
   double target_scale = 0;
   for (double t : control.target_stress) target_scale = std::max(target_scale, std::abs(t));
   Eigen::VectorXd r = residual(state);
+  const Eigen::VectorXd x_start = x, r_start = r;
+  ParticleSet<3> state_start = state;
   Eigen::VectorXd round_off = Eigen::VectorXd::Zero(n);
-  for (int iteration = 0; iteration < 60; ++iteration) {
+  for (int iteration = 0; iteration < 200; ++iteration) {
     const double scale = std::max({target_scale, state.stress[0].full().cwiseAbs().maxCoeff(), 1e-300});
     if ((r.array().abs() <= 1e-12 * scale + round_off.array()).all()) return point.commit(std::move(state));
     Eigen::MatrixXd jacobian(n, n);
@@ -139,8 +189,16 @@ void mixed_step(Point& point, StepControl control, double dt, double time) {
       jacobian.col(k) = (residual(point.trial(with(control, probe).deformation(), dt)) - r) / h;
     }
     round_off = 16 * std::numeric_limits<double>::epsilon() * (jacobian.cwiseAbs() * x.cwiseAbs());
-    const Eigen::VectorXd dx = jacobian.fullPivLu().solve(-r);
+    // The minimum-norm correction, with the rank cut at 1e-5 of the largest pivot (the differences' own error is
+    // about 1e-7): a fluid's stress depends on det F alone, and of the stretches that give it the symmetric split is
+    // taken.
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(jacobian);
+    cod.setThreshold(1e-5);
+    Eigen::VectorXd dx = cod.solve(-r);
     if (!dx.allFinite()) break;
+    // at most 10% of a stretch per iteration: a slope of round-off (the stress flat in a stretch) would send it far
+    if (const double largest = (dx.cwiseAbs().cwiseQuotient(x.cwiseAbs())).maxCoeff(); largest > 0.1)
+      dx *= 0.1 / largest;
     // Backtracking: a full step across a kink of the yield surface (an edge, the apex) can land where the stress no
     // longer depends on the stretches; the step is halved until the residual decreases.
     const double before = r.norm();
@@ -152,6 +210,12 @@ void mixed_step(Point& point, StepControl control, double dt, double time) {
       if (r.norm() < before) break;
     }
     x = next;
+  }
+  if (n == 1) {  // from where the step started, not from where Newton's method lost its way
+    x = x_start;
+    r = r_start;
+    state = std::move(state_start);
+    if (bracket_root(point, control, with, residual, dt, x, state, r)) return point.commit(std::move(state));
   }
   throw MaterialTestError(fmt::format(
       "the stress-controlled step at t = {} s did not converge (stress residual {} Pa): the material cannot carry "

@@ -69,6 +69,10 @@ int material_test_command(const MaterialTestCommandOptions& options, std::ostrea
                                           options.scene, did_you_mean(options.material, names),
                                           fmt::join(names, ", ")));
     }
+    if (const MaterialModel* model = find_material_model(it->second.model);
+        model && model->phase == MaterialPhase::rigid)
+      throw MaterialTestError(fmt::format("material '{}' is rigid (model {}): it has no stress to drive along a path",
+                                          options.material, it->second.model));
     const std::unique_ptr<Material<3>> material = make_material<3>(it->second);
     const std::string csv = material_test_csv(run_material_test(*material, driver));
     if (options.output.empty()) {
