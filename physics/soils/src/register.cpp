@@ -25,7 +25,7 @@ std::vector<ParameterSpec> soil_parameters() {
       ParameterSpec::required("youngs_modulus", "Pa", Range::above(0), "Young's modulus E"),
       ParameterSpec::required("poisson_ratio", "-", Range::open(-1, 0.5), "Poisson's ratio nu"),
       ParameterSpec::required("friction_angle", "deg", Range{0, true, 90, false},
-                              "internal friction angle phi, in [0, 90) degrees"),
+                              "internal friction angle phi"),
       ParameterSpec::with_default("dilation_angle", "deg", 0, Range{0, true, 90, false},
                                   "dilation angle psi of the plastic potential, in [0, phi]; psi = phi is associated "
                                   "flow, 0 no plastic volume change"),
