@@ -277,7 +277,8 @@ std::vector<DeformationSample> read_deformation_csv(const std::filesystem::path&
                                                     values.size()));
     DeformationSample s;
     s.time = values[0];
-    for (int i = 0; i < 9; ++i) s.F(i / 3, i % 3) = values[static_cast<std::size_t>(i + 1)];
+    for (std::size_t i = 0; i < 9; ++i)
+      s.F(static_cast<Eigen::Index>(i / 3), static_cast<Eigen::Index>(i % 3)) = values[i + 1];
     if (s.time == 0 && samples.empty() && last_time == 0) {
       if (!s.F.isIdentity(0))
         throw MaterialTestError(where() + "the path starts from F = I at t = 0; a row at t = 0 must be F = I");

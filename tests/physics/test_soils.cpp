@@ -4,17 +4,21 @@
 //    (eqs. 17.14, 17.15) to 1e-10, and the ratio of the volumetric to the axial strain rate once the stress no longer
 //    changes, which the flow rule fixes through the dilation angle alone (eqs. 17.16, 17.17);
 //  - triaxial extension (eqs. 17.14, 17.15): Drucker-Prager's inner cone and Mohr-Coulomb agree there;
+//  - objectivity: a stressed point spun rigidly keeps its principal stresses (Hughes-Winget, eq. 17.12) and flows
+//    no more; the particle history is plain doubles, so checkpoints and migration carry it;
 //  - the apex and the tension cut-off: a point pulled apart isotropically ends at p = min(T, c cot phi), on or inside
 //    the yield surface, s = 0 at the apex.
 // Measured errors are printed as "[ measured ]" lines.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <string>
 
 #include "mpm/app/material_test.hpp"
+#include "mpm/particles/field_layout.hpp"
 #include "mpm/soils/drucker_prager.hpp"
 #include "mpm/soils/mohr_coulomb.hpp"
 #include "mpm/soils/soil_batch.hpp"
@@ -163,6 +167,43 @@ TEST(SoilModels, ApexAndTensionCutoff) {
     check_apex<DruckerPrager>(T);
     check_apex<MohrCoulomb>(T);
   }
+}
+
+// A point at a stress on the cone (p = -100 kPa, q at 90% of the cone's) spun by a rigid rotation of 4 turns in 400
+// steps: the Hughes-Winget rotation R = (1 - w/2)^-1 (1 + w/2) is orthogonal, so the principal stresses stay to
+// round-off and no plastic flow occurs.
+TEST(SoilModels, RigidRotationKeepsThePrincipalStresses) {
+  const SoilParams s = sand(ConeMatching::outer_cone);
+  SoilBatch<3, DruckerPrager> material(s);
+  const ConeCoefficients yield = cone_coefficients(s.matching, s.friction);
+  const Real p = -100e3, sqrt_j2 = 0.9 * (yield.xi * s.cohesion - yield.eta * p);
+  Mat3 sigma = p * Mat3::Identity();
+  sigma(0, 0) += -2 * sqrt_j2 / std::sqrt(3.0);  // s = diag(-2, 1, 1) sqrt(J2) / sqrt(3)
+  sigma(1, 1) += sqrt_j2 / std::sqrt(3.0);
+  sigma(2, 2) += sqrt_j2 / std::sqrt(3.0);
+  const Eigen::Vector3d before = Eigen::SelfAdjointEigenSolver<Mat3>(sigma).eigenvalues();
+  Mat3 spin = Mat3::Zero();
+  const Real omega = 2 * std::numbers::pi * 4, dt = 1.0 / 400;  // 4 turns in 1 s
+  spin(0, 1) = -omega;
+  spin(1, 0) = omega;
+  spin(1, 2) = -0.5 * omega;  // about an oblique axis
+  spin(2, 1) = 0.5 * omega;
+  SoilState state;
+  for (int k = 0; k < 400; ++k) sigma = material.update_point(spin, dt, 1, sigma, state);
+  const Eigen::Vector3d after = Eigen::SelfAdjointEigenSolver<Mat3>(sigma).eigenvalues();
+  const Real error = (after - before).cwiseAbs().maxCoeff() / std::abs(p);
+  std::printf("[ measured ] 400 spin steps: principal stresses kept to %.2e of p, plastic strain %g\n", error,
+              state.plastic_strain);
+  EXPECT_LT(error, 1e-12);
+  EXPECT_EQ(state.plastic_strain, 0);
+  EXPECT_EQ(state.plastic_volumetric_strain, 0);
+}
+
+// The history field is three doubles: checkpoints store it as float64 values and migration copies it as bytes.
+TEST(SoilModels, HistoryIsCheckpointedAsDoubles) {
+  const FieldLayout layout = field_layout_of<SoilState>("soil");
+  EXPECT_EQ(layout.scalar, ScalarType::float64);
+  EXPECT_EQ(layout.components, 3u);
 }
 
 }  // namespace

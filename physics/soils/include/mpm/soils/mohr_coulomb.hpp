@@ -23,7 +23,7 @@ class MohrCoulomb {
  public:
   static constexpr const char* key = "mohr_coulomb";
 
-  explicit MohrCoulomb(const SoilParams& p) : cohesion_(p.cohesion) {
+  explicit MohrCoulomb(const SoilParams& p) {
     const Real sp = std::sin(p.friction), sd = std::sin(p.dilation);
     bound_ = 2 * p.cohesion * std::cos(p.friction);
     const Real apex = sp > 0 ? p.cohesion * std::cos(p.friction) / sp : std::numeric_limits<Real>::infinity();
@@ -110,7 +110,6 @@ class MohrCoulomb {
     return Vec3::Constant(cap_);  // the apex (eq. 17.11): the only admissible stress left
   }
 
-  Real cohesion_;
   Real bound_ = 0;  ///< 2 c cos phi
   Real cap_ = 0;    ///< min(T, c cot phi)
   std::array<Vec3, 4> normal_;
