@@ -217,6 +217,8 @@ int main(int argc, char** argv) {
   material_test_cmd->add_option("--amplitude", material_test.amplitude, "cyclic_shear: shear strain amplitude");
   material_test_cmd->add_option("--cycles", material_test.cycles, "cyclic_shear: number of cycles (default 1)");
   material_test_cmd->add_option("-o,--output", material_test.output, "CSV file (default: stdout)");
+  material_test_cmd->add_option("--plot", material_test.plot,
+                                "also draw the path into this PNG (q, shear, volume, stress path; needs matplotlib)");
   DiffOptions diff;  // `mpm diff`: two output directories compared for regression checks
   std::string diff_a, diff_b;
   auto* diff_cmd = cli.add_subcommand("diff", "compare two output directories frame by frame and field by field");

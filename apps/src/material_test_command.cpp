@@ -5,6 +5,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <fstream>
 #include <ostream>
 
@@ -19,6 +22,57 @@
 
 namespace mpm::app {
 namespace {
+
+/// The plot of --plot (matplotlib): q against the axial strain, the shear stress against the shear strain (the loops
+/// of a cyclic path), the volumetric against the axial strain, and the stress path q against p.
+constexpr const char* plot_script =
+    R"PY(# Plot of `mpm material-test` (written by mpm): python3 SCRIPT PATH.csv PLOT.png
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+rows = list(csv.DictReader(open(sys.argv[1])))
+col = lambda name: [float(r[name]) for r in rows]
+fig, ax = plt.subplots(2, 2, figsize=(10, 7.5))
+panels = [("strain_xx", "q", "axial log strain", "q (Pa)"), ("strain_xy", "stress_xy", "shear strain xy", "shear stress xy (Pa)"),
+          ("strain_xx", "volumetric_strain", "axial log strain", "volumetric strain ln J"), ("p", "q", "p (Pa)", "q (Pa)")]
+for a, (x, y, xl, yl) in zip(ax.flat, panels):
+    a.plot(col(x), col(y), "-")
+    a.set_xlabel(xl)
+    a.set_ylabel(yl)
+    a.grid(True, alpha=0.3)
+fig.suptitle(sys.argv[3], fontsize=10)
+fig.tight_layout()
+tmp = sys.argv[2] + ".tmp.png"
+fig.savefig(tmp, dpi=110)
+os.replace(tmp, sys.argv[2])
+)PY";
+
+/// Draws `csv` into `png` with /usr/bin/python3 and matplotlib; a message when it could not.
+std::string draw_plot(const std::string& csv, const std::filesystem::path& png, const std::string& title) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / fmt::format("mpm_material_test_{}", ::getpid());
+  fs::create_directories(dir);
+  std::ofstream(dir / "path.csv") << csv;
+  std::ofstream(dir / "plot.py") << plot_script;
+  const std::string command =
+      fmt::format("/usr/bin/python3 '{}' '{}' '{}' '{}' > '{}' 2>&1", (dir / "plot.py").string(),
+                  (dir / "path.csv").string(), png.string(), title, (dir / "plot.log").string());
+  const bool drawn = ::access("/usr/bin/python3", X_OK) == 0 && std::system(command.c_str()) == 0 && fs::exists(png);
+  std::string log;
+  if (!drawn) {
+    std::ifstream in(dir / "plot.log");
+    std::getline(in, log);
+  }
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  return drawn ? "" : fmt::format("no plot: /usr/bin/python3 with matplotlib failed ({})", log);
+}
 
 /// The driver's options from the command's, or a MaterialTestError for a bad combination.
 MaterialTestOptions driver_options(const MaterialTestCommandOptions& c) {
@@ -84,6 +138,11 @@ int material_test_command(const MaterialTestCommandOptions& options, std::ostrea
         if (!file.flush()) throw std::runtime_error("cannot write " + options.output);
       });
     }
+    if (!options.plot.empty())
+      if (const std::string problem = draw_plot(
+              csv, options.plot, fmt::format("{} ({}), {}", options.material, it->second.model, options.path));
+          !problem.empty())
+        err << "warning: " << problem << '\n';
     return exit_ok;
   } catch (const SceneError& e) {
     err << "error: " << e.what() << '\n';

@@ -138,6 +138,17 @@ TEST(MaterialTest, OutputFileHoldsTheTable) {
   EXPECT_EQ(cli::slurp(s.dir / "path.csv"), to_stdout.out);
 }
 
+// --plot draws the path with matplotlib, or warns that it could not: the CSV is written either way.
+TEST(MaterialTest, PlotOrWarning) {
+  mpm::app::register_modules();
+  const Scratch s("plot");
+  const fs::path png = s.dir / "path.png";
+  const auto r = s.run("--material linear_elastic --path cyclic_shear --steps 40 --plot " + png.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(lines(r.out).size(), 42u);
+  EXPECT_TRUE(fs::exists(png) || r.err.find("warning: no plot") != std::string::npos) << r.err;
+}
+
 /// Runs a bad command: exit 2, the message on stderr, nothing on stdout and no output file.
 void expect_refused(const Scratch& s, const std::string& args, const std::string& message) {
   const fs::path output = s.dir / "refused.csv";

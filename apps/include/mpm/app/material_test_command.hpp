@@ -15,6 +15,7 @@ struct MaterialTestCommandOptions {
   std::string path = "triaxial_compression";
   std::string csv;     ///< deformation_csv: the F(t) file
   std::string output;  ///< empty: stdout
+  std::string plot;    ///< a PNG of the path (matplotlib through /usr/bin/python3); empty: none
   double strain = 0.05;
   int steps = 1000;
   double duration = 1;
