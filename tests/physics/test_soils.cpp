@@ -169,6 +169,39 @@ TEST(SoilModels, ApexAndTensionCutoff) {
   }
 }
 
+// Linear softening (eq. 17.19) of c from 10 to 2 kPa and phi from 30 to 25 deg over eps_p = 0.01: the peak stays at or
+// below the peak strength, and once eps_p passed 0.01 the stress is the residual strength's closed form (17.14, 17.15;
+// the strength lags eps_p by one step, which no longer matters once it is constant).
+TEST(SoilModels, SofteningEndsOnTheResidualStrength) {
+  SoilParams s = sand(ConeMatching::outer_cone);
+  s.softening = {.enabled = true, .residual_cohesion = 2e3, .residual_friction = 25 * degree, .strain = 0.01};
+  const SoilParams residual = s.softened(1);
+  const Real confining = 100e3;
+  const auto dp_q = [&](const SoilParams& p) {
+    const ConeCoefficients y = cone_coefficients(p.matching, p.friction);
+    return (y.xi * p.cohesion + y.eta * confining) / (1 / std::sqrt(3.0) - y.eta / 3);
+  };
+  const auto mc_q = [&](const SoilParams& p) {
+    const Real sp = std::sin(p.friction);
+    return (2 * confining * sp + 2 * p.cohesion * std::cos(p.friction)) / (1 - sp);
+  };
+  const MaterialTestResult dp = triaxial<DruckerPrager>(s, confining, LoadPath::triaxial_compression);
+  const MaterialTestResult mc = triaxial<MohrCoulomb>(s, confining, LoadPath::triaxial_compression);
+  ASSERT_GT(dp.rows.back().model_fields.at(0), s.softening.strain);  // plastic_strain beyond the softening range
+  const Real dp_error = relative(dp.rows.back().deviatoric_stress, dp_q(residual));
+  const Real mc_error = relative(mc.rows.back().deviatoric_stress, mc_q(residual));
+  std::printf(
+      "[ measured ] softening: residual q DP %.6g (error %.2e), MC %.6g (error %.2e); peaks %.6g <= %.6g, "
+      "%.6g <= %.6g\n",
+      dp.rows.back().deviatoric_stress, dp_error, mc.rows.back().deviatoric_stress, mc_error, peak_q(dp), dp_q(s),
+      peak_q(mc), mc_q(s));
+  EXPECT_LT(dp_error, 1e-10);
+  EXPECT_LT(mc_error, 1e-10);
+  EXPECT_LE(peak_q(dp), dp_q(s) * (1 + 1e-10));
+  EXPECT_LE(peak_q(mc), mc_q(s) * (1 + 1e-10));
+  EXPECT_LT(dp.rows.back().deviatoric_stress, 0.9 * peak_q(dp));
+}
+
 // A point at a stress on the cone (p = -100 kPa, q at 90% of the cone's) spun by a rigid rotation of 4 turns in 400
 // steps: the Hughes-Winget rotation R = (1 - w/2)^-1 (1 + w/2) is orthogonal, so the principal stresses stay to
 // round-off and no plastic flow occurs.

@@ -24,8 +24,7 @@ std::vector<ParameterSpec> soil_parameters() {
       ParameterSpec::required("density", "kg/m^3", Range::above(0), "reference mass density rho0"),
       ParameterSpec::required("youngs_modulus", "Pa", Range::above(0), "Young's modulus E"),
       ParameterSpec::required("poisson_ratio", "-", Range::open(-1, 0.5), "Poisson's ratio nu"),
-      ParameterSpec::required("friction_angle", "deg", Range{0, true, 90, false},
-                              "internal friction angle phi"),
+      ParameterSpec::required("friction_angle", "deg", Range{0, true, 90, false}, "internal friction angle phi"),
       ParameterSpec::with_default("dilation_angle", "deg", 0, Range{0, true, 90, false},
                                   "dilation angle psi of the plastic potential, in [0, phi]; psi = phi is associated "
                                   "flow, 0 no plastic volume change"),
@@ -33,6 +32,15 @@ std::vector<ParameterSpec> soil_parameters() {
       ParameterSpec::with_default("tension_cutoff", "Pa", 0, Range::at_least(0),
                                   "largest mean stress tr(sigma)/3 the soil carries (tension positive); the apex "
                                   "c cot(phi) caps it anyway; 0: no tension (cohesionless soil)"),
+      ParameterSpec::optional("softening_strain", "-", Range::above(0), "absent: no softening",
+                              "equivalent plastic strain at which cohesion and friction angle reach their residual "
+                              "values, linearly from the peak (theory eq. 17.19)"),
+      ParameterSpec::optional("residual_cohesion", "Pa", Range::at_least(0), "absent: cohesion does not soften",
+                              "cohesion at and beyond softening_strain (<= cohesion)"),
+      ParameterSpec::optional("residual_friction_angle", "deg", Range{0, true, 90, false},
+                              "absent: friction angle does not soften",
+                              "friction angle at and beyond softening_strain (<= friction_angle); the dilation angle "
+                              "never exceeds the softened friction angle"),
   };
 }
 
@@ -42,6 +50,24 @@ std::optional<ParameterError> check_soil(const std::map<std::string, double>& p)
                           fmt::format("dilation_angle ({} deg) must not exceed friction_angle ({} deg): a dilation "
                                       "above the friction angle creates energy in plastic flow",
                                       p.at("dilation_angle"), p.at("friction_angle"))};
+  const bool residual = p.count("residual_cohesion") || p.count("residual_friction_angle");
+  if (residual && !p.count("softening_strain")) {
+    const char* key = p.count("residual_cohesion") ? "residual_cohesion" : "residual_friction_angle";
+    return ParameterError{key, fmt::format("{} is reached at the plastic strain softening_strain; give "
+                                           "softening_strain too",
+                                           key)};
+  }
+  if (p.count("softening_strain") && !residual)
+    return ParameterError{"softening_strain",
+                          "softening_strain softens nothing without residual_cohesion (Pa) or "
+                          "residual_friction_angle (deg)"};
+  if (p.count("residual_cohesion") && p.at("residual_cohesion") > p.at("cohesion"))
+    return ParameterError{"residual_cohesion", fmt::format("residual_cohesion ({} Pa) must not exceed cohesion ({} Pa)",
+                                                           p.at("residual_cohesion"), p.at("cohesion"))};
+  if (p.count("residual_friction_angle") && p.at("residual_friction_angle") > p.at("friction_angle"))
+    return ParameterError{"residual_friction_angle",
+                          fmt::format("residual_friction_angle ({} deg) must not exceed friction_angle ({} deg)",
+                                      p.at("residual_friction_angle"), p.at("friction_angle"))};
   if (p.at("friction_angle") == 0 && p.at("cohesion") == 0)
     return ParameterError{"friction_angle",
                           "with friction_angle 0 and cohesion 0 the soil has no strength; give a friction angle "
@@ -62,6 +88,13 @@ SoilParams soil_params(const MaterialDescription& d) {
   s.cohesion = p.at("cohesion");
   s.tension_cutoff = p.at("tension_cutoff");
   if (const auto m = p.find("cone_matching"); m != p.end()) s.matching = static_cast<ConeMatching>(m->second);
+  if (const auto e = p.find("softening_strain"); e != p.end()) {
+    s.softening.enabled = true;
+    s.softening.strain = e->second;
+    s.softening.residual_cohesion = p.count("residual_cohesion") ? p.at("residual_cohesion") : s.cohesion;
+    s.softening.residual_friction =
+        p.count("residual_friction_angle") ? p.at("residual_friction_angle") * degree : s.friction;
+  }
   return s;
 }
 

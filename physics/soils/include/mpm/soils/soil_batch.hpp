@@ -59,7 +59,10 @@ class SoilBatch final : public Material<Dim> {
     const Real tr = d.trace();
     const Mat3 trial =
         rotation * sigma_old * rotation.transpose() + 2 * G * d + (K - 2 * G / 3) * tr * Mat3::Identity();
-    const Mat3 sigma = return_.return_map(trial);
+    // With softening the strength is that of the plastic strain at the start of the step (explicit, as the
+    // plasticity module's hardening): the return is built for it.
+    const Mat3 sigma = params_.softening.enabled ? Return(params_.softened(state.plastic_strain)).return_map(trial)
+                                                 : return_.return_map(trial);
     // d eps_p = C^-1 : (sigma_trial - sigma) = dev / (2G) + tr / (9K) 1 (eq. 17.13)
     const Mat3 relaxed = trial - sigma;
     const Real dp = relaxed.trace() / 3;

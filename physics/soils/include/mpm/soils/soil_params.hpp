@@ -3,6 +3,7 @@
 /// The constants of a frictional soil (drucker_prager, mohr_coulomb), built once from the scene: isotropic
 /// elasticity, friction and dilation angles, cohesion and the tension cut-off (docs/theory.md §17).
 
+#include <algorithm>
 #include <cmath>
 
 #include "mpm/core/types.hpp"
@@ -40,6 +41,15 @@ inline ConeCoefficients cone_coefficients(ConeMatching matching, Real phi) {
   return {};
 }
 
+/// Linear softening of the strength with the equivalent plastic strain eps_p (theory eq. 17.19): c and phi go from
+/// their peak values at eps_p = 0 to their residual values at eps_p = strain, and stay there.
+struct Softening {
+  bool enabled = false;
+  Real residual_cohesion = 0;  ///< Pa
+  Real residual_friction = 0;  ///< rad
+  Real strain = 1;             ///< eps_p at which the residual values are reached, -
+};
+
 struct SoilParams {
   Real density = 0;         ///< kg/m^3
   Real shear_modulus = 0;   ///< G, Pa
@@ -49,6 +59,18 @@ struct SoilParams {
   Real cohesion = 0;        ///< c, Pa
   Real tension_cutoff = 0;  ///< T: the mean stress p = tr(sigma)/3 never exceeds min(T, apex), Pa
   ConeMatching matching = ConeMatching::plane_strain;  ///< Drucker-Prager only
+  Softening softening;
+
+  /// The constants at the equivalent plastic strain eps_p: c and phi softened linearly (eq. 17.19), psi kept at or
+  /// below phi.
+  SoilParams softened(Real eps_p) const {
+    SoilParams p = *this;
+    const Real t = std::min(eps_p / softening.strain, Real(1));
+    p.cohesion = cohesion + t * (softening.residual_cohesion - cohesion);
+    p.friction = friction + t * (softening.residual_friction - friction);
+    p.dilation = std::min(dilation, p.friction);
+    return p;
+  }
 
   /// Dilatational wave speed sqrt((K + 4G/3)/rho), m/s: plastic flow only softens the response.
   Real wave_speed() const { return std::sqrt((bulk_modulus + 4 * shear_modulus / 3) / density); }
