@@ -4,6 +4,7 @@
 //    (eqs. 17.14, 17.15) to 1e-10, and the ratio of the volumetric to the axial strain rate once the stress no longer
 //    changes, which the flow rule fixes through the dilation angle alone (eqs. 17.16, 17.17);
 //  - triaxial extension (eqs. 17.14, 17.15): Drucker-Prager's inner cone and Mohr-Coulomb agree there;
+//  - a column of sand collapsing under gravity in 2D MUSL: every particle admissible, the energy audit closed;
 //  - objectivity: a stressed point spun rigidly keeps its principal stresses (Hughes-Winget, eq. 17.12) and flows
 //    no more; the particle history is plain doubles, so checkpoints and migration carry it;
 //  - the apex and the tension cut-off: a point pulled apart isotropically ends at p = min(T, c cot phi), on or inside
@@ -12,11 +13,14 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <vector>
 
+#include "../libmpm/scene_fixture.hpp"
 #include "mpm/app/material_test.hpp"
 #include "mpm/particles/field_layout.hpp"
 #include "mpm/soils/drucker_prager.hpp"
@@ -230,6 +234,55 @@ TEST(SoilModels, RigidRotationKeepsThePrincipalStresses) {
   EXPECT_LT(error, 1e-12);
   EXPECT_EQ(state.plastic_strain, 0);
   EXPECT_EQ(state.plastic_volumetric_strain, 0);
+}
+
+// The model inside a run: a 0.1 m square column of cohesionless sand (Drucker-Prager, plane-strain cone, phi = 30 deg,
+// psi = 0) collapsing under gravity on a fixed floor and wall, 2D MUSL, 0.2 s. Every particle ends on or inside the
+// cone and below the apex p = 0, the plastic work is positive, and the energy audit (kinetic + strain + gravity +
+// plastic work, fixed faces doing no work) closes to 1% of the initial potential energy.
+TEST(SoilModels, ColumnCollapseStaysAdmissibleAndBooksItsEnergy) {
+  for (const std::string model : {"drucker_prager", "mohr_coulomb"}) {
+    auto sim = test::simulation_from_yaml<2>(R"(
+dimension: 2
+grid: {origin: [0, 0], extent: [0.4, 0.15], cell_size: 0.01, boundary: {x_min: fixed, y_min: fixed}}
+materials:
+  sand: {model: )" + model + R"(, density: 1800, youngs_modulus: 5.0e6, poisson_ratio: 0.3, friction_angle: 30 deg}
+bodies: [{material: sand, shape: {type: box, min: [0, 0], max: [0.1, 0.1]}}]
+solver: {scheme: musl, cfl: 0.4, end_time: 0.2, gravity: [0, -9.81]}
+output: {fields: [plastic_strain, plastic_volumetric_strain]}
+)",
+                                             "collapse.yaml");
+    const EnergyBalance e0 = sim->energy();
+    sim->run();
+    const EnergyBalance e = sim->energy();
+    const auto& body = sim->bodies()[0];
+    const auto& p = body.particles;
+    SoilParams s;
+    s.friction = 30 * degree;
+    s.shear_modulus = 1;
+    s.bulk_modulus = 1;
+    const DruckerPrager dp(s);
+    const MohrCoulomb mc(s);
+    Real worst = 0, largest_mean = -1e300, stress_scale = 0;
+    for (Index i = 0; i < p.size(); ++i) {
+      const Mat3 sigma = p.stress[i].full();
+      stress_scale = std::max(stress_scale, sigma.cwiseAbs().maxCoeff());
+      worst = std::max(worst, model == "drucker_prager" ? dp.yield_function(sigma) : mc.yield_function(sigma));
+      largest_mean = std::max(largest_mean, sigma.trace() / 3);
+    }
+    std::vector<double> eps_p;
+    ASSERT_TRUE(body.material->append_output("plastic_strain", p, eps_p));
+    const Real balance = std::abs(e.total() - e0.total()) / std::abs(e0.gravity);
+    std::printf(
+        "[ measured ] %s column collapse: max yield function %.2e of the largest stress, max mean stress "
+        "%.2e Pa, max plastic strain %.3f, plastic work %.4g J/m, energy balance %.2e of the potential\n",
+        model.c_str(), worst / stress_scale, largest_mean, *std::max_element(eps_p.begin(), eps_p.end()),
+        e.plastic_work, balance);
+    EXPECT_LT(worst, 1e-9 * stress_scale);
+    EXPECT_LE(largest_mean, 1e-9 * stress_scale);
+    EXPECT_GT(e.plastic_work, 0);
+    EXPECT_LT(balance, 0.01);
+  }
 }
 
 // The history field is three doubles: checkpoints store it as float64 values and migration copies it as bytes.
