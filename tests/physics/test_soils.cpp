@@ -1,12 +1,12 @@
-// drucker_prager and mohr_coulomb (physics/soils, docs/theory.md §17) at one material point, driven by the
+// drucker_prager and mohr_coulomb (physics/soils, docs/theory.md §18) at one material point, driven by the
 // material-test driver's library function (apps material_test.hpp), against closed forms:
 //  - triaxial compression at three confining pressures: the peak deviatoric stress q on the yield surface
-//    (eqs. 17.14, 17.15) to 1e-10, and the ratio of the volumetric to the axial strain rate once the stress no longer
-//    changes, which the flow rule fixes through the dilation angle alone (eqs. 17.16, 17.17);
-//  - triaxial extension (eqs. 17.14, 17.15): Drucker-Prager's inner cone and Mohr-Coulomb agree there;
+//    (eqs. 18.14, 18.15) to 1e-10, and the ratio of the volumetric to the axial strain rate once the stress no longer
+//    changes, which the flow rule fixes through the dilation angle alone (eqs. 18.16, 18.17);
+//  - triaxial extension (eqs. 18.14, 18.15): Drucker-Prager's inner cone and Mohr-Coulomb agree there;
 //  - a column of sand collapsing under gravity in 2D MUSL: every particle admissible, the energy audit closed, and a
 //    restart from its saved state bit-identical;
-//  - objectivity: a stressed point spun rigidly keeps its principal stresses (Hughes-Winget, eq. 17.12) and flows
+//  - objectivity: a stressed point spun rigidly keeps its principal stresses (Hughes-Winget, eq. 18.12) and flows
 //    no more; the particle history is plain doubles, so checkpoints and migration carry it;
 //  - the apex and the tension cut-off: a point pulled apart isotropically ends at p = min(T, c cot phi), on or inside
 //    the yield surface, s = 0 at the apex.
@@ -86,10 +86,10 @@ TEST(DruckerPrager, TriaxialCompressionPeakAndDilatancy) {
     const Real eta_bar = cone_coefficients(matching, s.dilation).eta;
     for (const Real confining : {50e3, 100e3, 200e3}) {
       const MaterialTestResult r = triaxial<DruckerPrager>(s, confining, LoadPath::triaxial_compression);
-      // sigma = diag(-p_c - q, -p_c, -p_c): sqrt(J2) = q / sqrt(3), p = -p_c - q / 3 on the cone (eq. 17.14)
+      // sigma = diag(-p_c - q, -p_c, -p_c): sqrt(J2) = q / sqrt(3), p = -p_c - q / 3 on the cone (eq. 18.14)
       const Real expected = (yield.xi * s.cohesion + yield.eta * confining) / (1 / std::sqrt(3.0) - yield.eta / 3);
       const Real error = relative(peak_q(r), expected);
-      // d eps_p = d gamma (s / (2 sqrt(J2)) + eta_bar / 3 1): axial -1/sqrt(3) + eta_bar / 3, volume eta_bar (17.16)
+      // d eps_p = d gamma (s / (2 sqrt(J2)) + eta_bar / 3 1): axial -1/sqrt(3) + eta_bar / 3, volume eta_bar (18.16)
       const Real ratio = eta_bar / (eta_bar / 3 - 1 / std::sqrt(3.0));
       const Real ratio_error = std::abs(dilatancy_ratio(r) - ratio);
       std::printf("[ measured ] DP matching %d, p_c = %g kPa: q %.6g (error %.2e), dilatancy %.6f (error %.2e)\n",
@@ -106,10 +106,10 @@ TEST(MohrCoulomb, TriaxialCompressionPeakAndDilatancy) {
   const Real sp = std::sin(s.friction), sd = std::sin(s.dilation);
   for (const Real confining : {50e3, 100e3, 200e3}) {
     const MaterialTestResult r = triaxial<MohrCoulomb>(s, confining, LoadPath::triaxial_compression);
-    // sigma_1 = sigma_2 = -p_c, sigma_3 = -p_c - q on the main plane (an edge of the pyramid, eq. 17.15)
+    // sigma_1 = sigma_2 = -p_c, sigma_3 = -p_c - q on the main plane (an edge of the pyramid, eq. 18.15)
     const Real expected = (2 * confining * sp + 2 * s.cohesion * std::cos(s.friction)) / (1 - sp);
     const Real error = relative(peak_q(r), expected);
-    // two equal multipliers on the edge: d eps = d gamma (1 + sin psi, 1 + sin psi, -2 (1 - sin psi)) (eq. 17.17)
+    // two equal multipliers on the edge: d eps = d gamma (1 + sin psi, 1 + sin psi, -2 (1 - sin psi)) (eq. 18.17)
     const Real ratio = -2 * sd / (1 - sd);
     const Real ratio_error = std::abs(dilatancy_ratio(r) - ratio);
     std::printf("[ measured ] MC p_c = %g kPa: q %.6g (error %.2e), dilatancy %.6f (error %.2e)\n", confining / 1e3,
@@ -175,8 +175,8 @@ TEST(SoilModels, ApexAndTensionCutoff) {
   }
 }
 
-// Linear softening (eq. 17.19) of c from 10 to 2 kPa and phi from 30 to 25 deg over eps_p = 0.01: the peak stays at or
-// below the peak strength, and once eps_p passed 0.01 the stress is the residual strength's closed form (17.14, 17.15;
+// Linear softening (eq. 18.19) of c from 10 to 2 kPa and phi from 30 to 25 deg over eps_p = 0.01: the peak stays at or
+// below the peak strength, and once eps_p passed 0.01 the stress is the residual strength's closed form (18.14, 18.15;
 // the strength lags eps_p by one step, which no longer matters once it is constant).
 TEST(SoilModels, SofteningEndsOnTheResidualStrength) {
   SoilParams s = sand(ConeMatching::outer_cone);

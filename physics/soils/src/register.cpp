@@ -34,7 +34,7 @@ std::vector<ParameterSpec> soil_parameters() {
                                   "c cot(phi) caps it anyway; 0: no tension (cohesionless soil)"),
       ParameterSpec::optional("softening_strain", "-", Range::above(0), "absent: no softening",
                               "equivalent plastic strain at which cohesion and friction angle reach their residual "
-                              "values, linearly from the peak (theory eq. 17.19)"),
+                              "values, linearly from the peak (theory eq. 18.19)"),
       ParameterSpec::optional("residual_cohesion", "Pa", Range::at_least(0), "absent: cohesion does not soften",
                               "cohesion at and beyond softening_strain (<= cohesion)"),
       ParameterSpec::optional("residual_friction_angle", "deg", Range{0, true, 90, false},
@@ -108,11 +108,11 @@ MaterialModel drucker_prager_model() {
   parameters.push_back(ParameterSpec::choice(
       "cone_matching", {"outer_cone", "inner_cone", "plane_strain"}, static_cast<int>(ConeMatching::plane_strain),
       "how the cone is fitted to the Mohr-Coulomb pyramid of the same friction_angle and cohesion (theory eq. "
-      "17.3): through its compressive meridians (outer_cone: triaxial compression agrees), its tensile meridians "
+      "18.3): through its compressive meridians (outer_cone: triaxial compression agrees), its tensile meridians "
       "(inner_cone: triaxial extension agrees) or with the same plane-strain collapse load (plane_strain)"));
   return {.key = "drucker_prager",
           .description =
-              "Drucker-Prager elastic-perfectly plastic soil (theory §17): hypoelastic trial stress, return to the "
+              "Drucker-Prager elastic-perfectly plastic soil (theory §18): hypoelastic trial stress, return to the "
               "cone or its apex (de Souza Neto et al. 2008, §8.3), non-associated flow (dilation_angle), tension "
               "cut-off on the mean stress",
           .parameters = std::move(parameters),
@@ -126,7 +126,7 @@ MaterialModel drucker_prager_model() {
 MaterialModel mohr_coulomb_model() {
   return {.key = "mohr_coulomb",
           .description =
-              "Mohr-Coulomb elastic-perfectly plastic soil (theory §17): hypoelastic trial stress, return in "
+              "Mohr-Coulomb elastic-perfectly plastic soil (theory §18): hypoelastic trial stress, return in "
               "principal stresses to the main plane, an edge or the apex (de Souza Neto et al. 2008, §8.2), "
               "non-associated flow (dilation_angle), tension cut-off on the mean stress",
           .parameters = soil_parameters(),

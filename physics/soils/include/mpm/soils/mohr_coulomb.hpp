@@ -1,11 +1,11 @@
 #pragma once
 /// \file mohr_coulomb.hpp
 /// The return mapping of the perfectly plastic Mohr-Coulomb pyramid with non-associated flow and a tension cut-off
-/// (docs/theory.md §17, eqs. 17.8-17.11), in principal stresses sigma_1 >= sigma_2 >= sigma_3 (tension positive)
+/// (docs/theory.md §18, eqs. 18.8-18.11), in principal stresses sigma_1 >= sigma_2 >= sigma_3 (tension positive)
 /// with the principal directions of the trial stress kept, as de Souza Neto, Peric & Owen, Computational Methods
 /// for Plasticity (2008), §8.2: the return to the main plane, then to the edge the main return overshot (two
 /// multipliers), then to the apex. Every surface is a plane in principal space here (perfect plasticity), so each
-/// candidate return is one small linear solve (eq. 17.10); the candidates are tried in the book's order, the
+/// candidate return is one small linear solve (eq. 18.10); the candidates are tried in the book's order, the
 /// cut-off plane p = T added, and the first that meets the Kuhn-Tucker conditions (multipliers >= 0, every surface
 /// <= 0, the principal order kept) is taken. No smoothing of the edges.
 
@@ -28,7 +28,7 @@ class MohrCoulomb {
     bound_ = 2 * p.cohesion * std::cos(p.friction);
     const Real apex = sp > 0 ? p.cohesion * std::cos(p.friction) / sp : std::numeric_limits<Real>::infinity();
     cap_ = std::min(p.tension_cutoff, apex);
-    // Planes a . sigma <= b and flow directions n (eqs. 17.8, 17.9): main (1, 3), edge A (2, 3), edge B (1, 2),
+    // Planes a . sigma <= b and flow directions n (eqs. 18.8, 18.9): main (1, 3), edge A (2, 3), edge B (1, 2),
     // cut-off.
     normal_ = {Vec3(1 + sp, 0, -(1 - sp)), Vec3(0, 1 + sp, -(1 - sp)), Vec3(1 + sp, -(1 - sp), 0),
                Vec3::Constant(1.0 / 3)};
@@ -41,7 +41,7 @@ class MohrCoulomb {
   }
 
   /// The Mohr-Coulomb yield function of a stress (sigma_1 - sigma_3) + (sigma_1 + sigma_3) sin phi - 2 c cos phi
-  /// (eq. 17.8), Pa.
+  /// (eq. 18.8), Pa.
   Real yield_function(const Mat3& sigma) const {
     const Vec3 s = sorted_eigenvalues(sigma);
     return normal_[0].dot(s) - bound_;
@@ -88,7 +88,7 @@ class MohrCoulomb {
       if (cap_ == std::numeric_limits<Real>::infinity() &&
           std::find(set.begin(), set.begin() + n, 3) != set.begin() + n)
         continue;
-      // M gamma = Phi_trial, M_ij = a_i . D n_j (eq. 17.10).
+      // M gamma = Phi_trial, M_ij = a_i . D n_j (eq. 18.10).
       Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> M(n, n);
       Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 3, 1> rhs(n);
       for (int i = 0; i < n; ++i) {
@@ -107,7 +107,7 @@ class MohrCoulomb {
       if (s[0] + tol < s[1] || s[1] + tol < s[2] || !admissible(s, tol)) continue;
       return s;
     }
-    return Vec3::Constant(cap_);  // the apex (eq. 17.11): the only admissible stress left
+    return Vec3::Constant(cap_);  // the apex (eq. 18.11): the only admissible stress left
   }
 
   Real bound_ = 0;  ///< 2 c cos phi

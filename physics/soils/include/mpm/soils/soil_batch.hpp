@@ -1,9 +1,9 @@
 #pragma once
 /// \file soil_batch.hpp
 /// A frictional soil as a material of the explicit schemes: a hypoelastic trial stress with the Hughes-Winget
-/// rotation of the previous stress (objective for large rotations, theory eq. 17.12), then the model's return
+/// rotation of the previous stress (objective for large rotations, theory eq. 18.12), then the model's return
 /// mapping (`Return`: DruckerPrager or MohrCoulomb), one virtual call per block and the point law inlined. The
-/// plastic strain increment is recovered from the return, d eps_p = C^-1 : (sigma_trial - sigma) (eq. 17.13), so
+/// plastic strain increment is recovered from the return, d eps_p = C^-1 : (sigma_trial - sigma) (eq. 18.13), so
 /// that one bookkeeping serves every return (cone, apex, edges, cut-off).
 
 #include <cmath>
@@ -53,7 +53,7 @@ class SoilBatch final : public Material<Dim> {
   Mat3 update_point(const Mat3& l, Real dt, Real J, const Mat3& sigma_old, SoilState& state) const {
     const Mat3 d = 0.5 * (l + l.transpose()) * dt;  // strain increment
     const Mat3 w = 0.5 * (l - l.transpose()) * dt;  // spin increment
-    // Hughes-Winget: R = (I - w/2)^-1 (I + w/2), an exact rotation for any w (eq. 17.12).
+    // Hughes-Winget: R = (I - w/2)^-1 (I + w/2), an exact rotation for any w (eq. 18.12).
     const Mat3 rotation = (Mat3::Identity() - 0.5 * w).inverse() * (Mat3::Identity() + 0.5 * w);
     const Real G = params_.shear_modulus, K = params_.bulk_modulus;
     const Real tr = d.trace();
@@ -63,7 +63,7 @@ class SoilBatch final : public Material<Dim> {
     // plasticity module's hardening): the return is built for it.
     const Mat3 sigma = params_.softening.enabled ? Return(params_.softened(state.plastic_strain)).return_map(trial)
                                                  : return_.return_map(trial);
-    // d eps_p = C^-1 : (sigma_trial - sigma) = dev / (2G) + tr / (9K) 1 (eq. 17.13)
+    // d eps_p = C^-1 : (sigma_trial - sigma) = dev / (2G) + tr / (9K) 1 (eq. 18.13)
     const Mat3 relaxed = trial - sigma;
     const Real dp = relaxed.trace() / 3;
     const Mat3 de_dev = (relaxed - dp * Mat3::Identity()) / (2 * G);

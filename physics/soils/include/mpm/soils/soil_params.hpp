@@ -1,7 +1,7 @@
 #pragma once
 /// \file soil_params.hpp
 /// The constants of a frictional soil (drucker_prager, mohr_coulomb), built once from the scene: isotropic
-/// elasticity, friction and dilation angles, cohesion and the tension cut-off (docs/theory.md §17).
+/// elasticity, friction and dilation angles, cohesion and the tension cut-off (docs/theory.md §18).
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 namespace mpm::soils {
 
 /// How a Drucker-Prager cone is fitted to the Mohr-Coulomb pyramid of the same friction angle and cohesion
-/// (de Souza Neto, Peric & Owen 2008, §6.4.6; theory eq. 17.3). The index is the value of the scene key
+/// (de Souza Neto, Peric & Owen 2008, §6.4.6; theory eq. 18.3). The index is the value of the scene key
 /// cone_matching.
 enum class ConeMatching {
   outer_cone = 0,    ///< through the compressive meridians (triaxial compression agrees with Mohr-Coulomb)
@@ -20,7 +20,7 @@ enum class ConeMatching {
 };
 
 /// The coefficients of sqrt(J2) + eta p - xi c (p = tr(sigma)/3, tension positive) for a friction angle `phi`
-/// (rad), theory eq. 17.3.
+/// (rad), theory eq. 18.3.
 struct ConeCoefficients {
   Real eta = 0;
   Real xi = 0;
@@ -41,7 +41,7 @@ inline ConeCoefficients cone_coefficients(ConeMatching matching, Real phi) {
   return {};
 }
 
-/// Linear softening of the strength with the equivalent plastic strain eps_p (theory eq. 17.19): c and phi go from
+/// Linear softening of the strength with the equivalent plastic strain eps_p (theory eq. 18.19): c and phi go from
 /// their peak values at eps_p = 0 to their residual values at eps_p = strain, and stay there.
 struct Softening {
   bool enabled = false;
@@ -61,7 +61,7 @@ struct SoilParams {
   ConeMatching matching = ConeMatching::plane_strain;  ///< Drucker-Prager only
   Softening softening;
 
-  /// The constants at the equivalent plastic strain eps_p: c and phi softened linearly (eq. 17.19), psi kept at or
+  /// The constants at the equivalent plastic strain eps_p: c and phi softened linearly (eq. 18.19), psi kept at or
   /// below phi.
   SoilParams softened(Real eps_p) const {
     SoilParams p = *this;
