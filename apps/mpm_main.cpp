@@ -1,6 +1,7 @@
 // The `mpm` command line program: `mpm run SCENE [--restart FILE|DIR]`, `mpm check SCENE`, `mpm particles INPUT`,
 // `mpm reference [--keys|--section PATH|--materials|--output-fields|--history-kinds|--energy-hints] [FILE]`, `mpm diff
-// RUN_A RUN_B`, `mpm verify SCENE`, `mpm checkpoint FILE`. Exit statuses in run_scene.hpp.
+// RUN_A RUN_B`, `mpm verify SCENE`, `mpm checkpoint FILE`, `mpm material-test --scene S --material NAME`. Exit statuses
+// in run_scene.hpp.
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -20,6 +21,7 @@
 
 #include "mpm/app/checkpoint_command.hpp"
 #include "mpm/app/diff_command.hpp"
+#include "mpm/app/material_test_command.hpp"
 #include "mpm/app/modules.hpp"
 #include "mpm/app/out_of_memory.hpp"
 #include "mpm/app/parallel_launch.hpp"
@@ -190,6 +192,33 @@ int main(int argc, char** argv) {
   reference_cmd->add_flag("--energy-hints", reference.energy_hints,
                           "the documented instabilities the energy sentinel and the flight recorder quote");
   reference_cmd->add_option("file", reference_file, "Markdown file whose generated blocks to rewrite");
+  MaterialTestCommandOptions material_test;  // `mpm material-test`: one material point along a prescribed path
+  auto* material_test_cmd = cli.add_subcommand(
+      "material-test",
+      "drive one material point of a scene's material along a path (oedometer, triaxial, simple or cyclic shear, "
+      "F(t) from a CSV) and write its stress-strain path as CSV");
+  material_test_cmd->add_option("--scene", material_test.scene, "scene file (YAML) with the material")->required();
+  material_test_cmd->add_option("--material", material_test.material, "name of the material in the scene")->required();
+  material_test_cmd->add_option("--path", material_test.path,
+                                "uniaxial_strain, triaxial_compression (default), triaxial_extension, simple_shear, "
+                                "cyclic_shear or deformation_csv");
+  material_test_cmd->add_option("--csv", material_test.csv,
+                                "deformation_csv: rows time,F11,F12,F13,F21,F22,F23,F31,F32,F33 (from F = I at t = 0)");
+  material_test_cmd->add_option("--strain", material_test.strain,
+                                "final axial log strain (uniaxial, triaxial) or shear strain (simple_shear), "
+                                "default 0.05");
+  material_test_cmd->add_option("--steps", material_test.steps, "steps of the loading stage (default 1000)");
+  material_test_cmd->add_option("--duration", material_test.duration, "time of the loading stage, s (default 1)");
+  material_test_cmd->add_option("--confining-pressure", material_test.confining_pressure,
+                                "Pa: isotropic consolidation first, then the lateral (triaxial) or normal (shear) "
+                                "stress held at it (default 0)");
+  material_test_cmd->add_option("--consolidation-steps", material_test.consolidation_steps,
+                                "steps of the consolidation (default 10)");
+  material_test_cmd->add_option("--amplitude", material_test.amplitude, "cyclic_shear: shear strain amplitude");
+  material_test_cmd->add_option("--cycles", material_test.cycles, "cyclic_shear: number of cycles (default 1)");
+  material_test_cmd->add_option("-o,--output", material_test.output, "CSV file (default: stdout)");
+  material_test_cmd->add_option("--plot", material_test.plot,
+                                "also draw the path into this PNG (q, shear, volume, stress path; needs matplotlib)");
   DiffOptions diff;  // `mpm diff`: two output directories compared for regression checks
   std::string diff_a, diff_b;
   auto* diff_cmd = cli.add_subcommand("diff", "compare two output directories frame by frame and field by field");
@@ -282,6 +311,7 @@ int main(int argc, char** argv) {
     return diff_command(diff, std::cout, std::cerr);
   }
   if (checkpoint_cmd->parsed()) return checkpoint_command(checkpoint_file, std::cout, std::cerr);
+  if (material_test_cmd->parsed()) return material_test_command(material_test, std::cout, std::cerr);
   if (reference_cmd->parsed()) {
     if (!reference_file.empty()) reference.file = reference_file;
     return reference_command(reference, std::cout, std::cerr);

@@ -1,6 +1,7 @@
 #include "mpm/app/material_reference.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <sstream>
@@ -22,6 +23,7 @@ std::string cell(const std::string& text) {
 }
 
 std::string default_cell(const ParameterSpec& p) {
+  if (!p.choices.empty() && p.default_value) return p.choices.at(static_cast<std::size_t>(*p.default_value));
   if (p.default_value && !p.applies_with.empty())
     return fmt::format("{} (with `{}`)", *p.default_value, p.applies_with);
   if (p.default_value) return fmt::format("{}", *p.default_value);
@@ -30,8 +32,10 @@ std::string default_cell(const ParameterSpec& p) {
 }
 
 std::string row(const ParameterSpec& p) {
-  return fmt::format("`{}` | {} | {} | {} | {} |\n", p.name, cell(p.unit), cell(default_cell(p)),
-                     cell(p.range.describe()), cell(p.description));
+  // a choice parameter: its words, not their indices
+  const std::string allowed = p.choices.empty() ? p.range.describe() : fmt::format("{}", fmt::join(p.choices, ", "));
+  return fmt::format("`{}` | {} | {} | {} | {} |\n", p.name, cell(p.unit), cell(default_cell(p)), cell(allowed),
+                     cell(p.description));
 }
 
 std::string table(const std::vector<ParameterSpec>& parameters) {

@@ -31,17 +31,26 @@ bool declares(const std::vector<ParameterSpec>& specs, const std::string& name) 
 }  // namespace
 
 ParameterSpec ParameterSpec::required(std::string name, std::string unit, io::Range range, std::string description) {
-  return {std::move(name), std::move(unit), range, std::nullopt, "", std::move(description), ""};
+  return {std::move(name), std::move(unit), range, std::nullopt, "", std::move(description), "", {}};
 }
 
 ParameterSpec ParameterSpec::with_default(std::string name, std::string unit, double value, io::Range range,
                                           std::string description) {
-  return {std::move(name), std::move(unit), range, value, "", std::move(description), ""};
+  return {std::move(name), std::move(unit), range, value, "", std::move(description), "", {}};
 }
 
 ParameterSpec ParameterSpec::optional(std::string name, std::string unit, io::Range range, std::string absent,
                                       std::string description) {
-  return {std::move(name), std::move(unit), range, std::nullopt, std::move(absent), std::move(description), ""};
+  return {std::move(name), std::move(unit), range, std::nullopt, std::move(absent), std::move(description), "", {}};
+}
+
+ParameterSpec ParameterSpec::choice(std::string name, std::vector<std::string> choices, int default_index,
+                                    std::string description) {
+  const auto last = static_cast<double>(choices.size()) - 1;
+  ParameterSpec spec{
+      std::move(name), "-", io::Range::closed(0, last), default_index, "", std::move(description), "", {}};
+  spec.choices = std::move(choices);
+  return spec;
 }
 
 ParameterSpec ParameterSpec::only_with(std::string parameter) const {

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+
 #include "mpm/core/closest_name.hpp"
 #include "mpm/materials/material_registry.hpp"
 #include "mpm/scene/scene_keys.hpp"
@@ -30,6 +32,16 @@ const std::vector<io::KeySpec>& material_keys() {
 namespace sections {
 namespace {
 
+/// The index of the word a choice parameter (ParameterSpec::choices) names.
+double read_choice(const YamlReader& reader, const io::YamlValue& value, const ParameterSpec& p) {
+  const std::string word = reader.string(value);
+  const auto it = std::find(p.choices.begin(), p.choices.end(), word);
+  if (it == p.choices.end())
+    reader.fail(value, fmt::format("unknown {} '{}'{}; valid values: {}", p.name, word, did_you_mean(word, p.choices),
+                                   fmt::join(p.choices, ", ")));
+  return static_cast<double>(it - p.choices.begin());
+}
+
 MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry& entry) {
   MaterialDescription material;
   material.name = entry.key;
@@ -50,7 +62,8 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
   map.allow(keys, "parameter", " for model " + material.model);
   for (const auto& p : parameters) {
     if (const auto value = map.map().find(p.name)) {
-      material.parameters[p.name] = reader.number(*value, p.range, p.unit);
+      material.parameters[p.name] =
+          p.choices.empty() ? reader.number(*value, p.range, p.unit) : read_choice(reader, *value, p);
     } else if (p.default_value) {
       if (p.applies_with.empty()) material.parameters[p.name] = *p.default_value;  // else material_parameter()
     } else if (p.is_required()) {

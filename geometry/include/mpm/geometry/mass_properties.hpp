@@ -2,7 +2,7 @@
 /// \file mass_properties.hpp
 /// Volume, centroid and inertia tensor of a body (per unit density), of its source (a B-rep's exact values from
 /// OpenCASCADE, a closed triangle mesh's or a volume mesh's exact integrals) and of its particles, and the fidelity
-/// certificate that compares them (issue 51, item 4): what `mpm particles` prints for a body made from CAD or a mesh.
+/// certificate that compares them: what `mpm particles` prints for a body made from CAD or a mesh.
 
 #include <array>
 #include <optional>

@@ -38,6 +38,9 @@ struct ParameterSpec {
   /// check can refuse it without its feature), and the maker reads it with material_parameter(), which falls
   /// back to this default. Empty: the loader fills the default in.
   std::string applies_with;
+  /// A parameter that names one of a few choices (e.g. cone_matching: outer_cone): the scene gives one of these words
+  /// and the model reads its index (0, 1, ...) as the value; empty for a number.
+  std::vector<std::string> choices;
 
   /// A parameter the scene must give.
   static ParameterSpec required(std::string name, std::string unit, io::Range range, std::string description);
@@ -47,6 +50,11 @@ struct ParameterSpec {
   /// A parameter that may be omitted, meaning `absent`.
   static ParameterSpec optional(std::string name, std::string unit, io::Range range, std::string absent,
                                 std::string description);
+
+  /// A parameter that names one of `choices`, the one of index `default_index` when omitted; the value the model
+  /// reads is the index of the choice.
+  static ParameterSpec choice(std::string name, std::vector<std::string> choices, int default_index,
+                              std::string description);
 
   /// This spec as a part of the feature `parameter` switches on (see applies_with).
   ParameterSpec only_with(std::string parameter) const;
