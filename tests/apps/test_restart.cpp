@@ -341,29 +341,30 @@ Case erosion() {
 // on another and pushed by a third; the membership field, the reactions accumulated since the last row and the
 // statistics over a set continue from the checkpoint.
 Case particle_sets() {
-  return {"particle_sets",
-          "dimension: 2\n"
-          "grid: {origin: [-0.1, -0.3], extent: [1.3, 0.5], cell_size: [0.05, 0.05]}\n"
-          "materials: {gel: {model: neo_hookean, density: 1000, youngs_modulus: 1.0e5, poisson_ratio: 0.3}}\n"
-          "bodies:\n"
-          "  - {name: beam, material: gel, shape: {type: box, min: [0, 0], max: [1.1, 0.1]}}\n"
-          "sets:\n"
-          "  clamp: {body: beam, region: {type: box, min: [0, 0], max: [0.1, 0.1]}}\n"
-          "  tip: {body: beam, region: {type: box, min: [1.05, 0], max: [1.1, 0.1]}}\n"
-          "  middle: {ids: [[40, 47]]}\n"
-          "conditions:\n"
-          "  - {set: clamp, velocity: [0, 0]}\n"
-          "  - {set: tip, force: [0, \"-5 * min(t / 0.05, 1)\"]}\n"
-          "  - {set: middle, velocity: [free, \"0.2 * t\"]}\n"
-          "solver: {scheme: tlmpm, cfl: 0.5, end_time: 0.2}\n"
-          "output:\n"
-          "  interval: 0.05\n"
-          "  fields: [velocity, stress, particle_sets]\n"
-          "  histories:\n"
-          "    - {name: clamp, type: reaction, set: clamp, moment_about: [0.1, 0.05], interval: 0.007}\n"
-          "    - {name: tip_force, type: force, set: tip, interval: 0.009}\n"
-          "    - {name: tip, type: probe, set: tip, fields: [velocity], statistics: [mean, max_at], interval: 0.011}\n" +
-              checkpoint_at(0.1)};
+  return {
+      "particle_sets",
+      "dimension: 2\n"
+      "grid: {origin: [-0.1, -0.3], extent: [1.3, 0.5], cell_size: [0.05, 0.05]}\n"
+      "materials: {gel: {model: neo_hookean, density: 1000, youngs_modulus: 1.0e5, poisson_ratio: 0.3}}\n"
+      "bodies:\n"
+      "  - {name: beam, material: gel, shape: {type: box, min: [0, 0], max: [1.1, 0.1]}}\n"
+      "sets:\n"
+      "  clamp: {body: beam, region: {type: box, min: [0, 0], max: [0.1, 0.1]}}\n"
+      "  tip: {body: beam, region: {type: box, min: [1.05, 0], max: [1.1, 0.1]}}\n"
+      "  middle: {ids: [[40, 47]]}\n"
+      "conditions:\n"
+      "  - {set: clamp, velocity: [0, 0]}\n"
+      "  - {set: tip, force: [0, \"-5 * min(t / 0.05, 1)\"]}\n"
+      "  - {set: middle, velocity: [free, \"0.2 * t\"]}\n"
+      "solver: {scheme: tlmpm, cfl: 0.5, end_time: 0.2}\n"
+      "output:\n"
+      "  interval: 0.05\n"
+      "  fields: [velocity, stress, particle_sets]\n"
+      "  histories:\n"
+      "    - {name: clamp, type: reaction, set: clamp, moment_about: [0.1, 0.05], interval: 0.007}\n"
+      "    - {name: tip_force, type: force, set: tip, interval: 0.009}\n"
+      "    - {name: tip, type: probe, set: tip, fields: [velocity], statistics: [mean, max_at], interval: 0.011}\n" +
+          checkpoint_at(0.1)};
 }
 
 class InterruptedRun : public ::testing::TestWithParam<Case> {};

@@ -126,9 +126,10 @@ output:
   const double E = 1e7, nu = 0.3, t = 0.05, a = 0.5, q = 1000 * 2 * t, D = E * t * t * t / (12 * (1 - nu * nu));
   const double theory = q * std::pow(a, 4) / (64 * D) * (1 + 8 / (3 * 5.0 / 6 * (1 - nu)) * (t / a) * (t / a));
   const double weight = 2 * std::numbers::pi * 1000 * 2 * t * 0.55 * 0.55 / 2;  // N, the whole plate
-  std::printf("[ measured ] centre deflection %.6g m, Reissner-Mindlin %.6g m (%+.2f%%); rim reaction %.12g N, weight "
-              "%.12g N (%.2g relative)\n",
-              -centre[1], theory, 100 * (-centre[1] / theory - 1), rim[1], weight, rim[1] / weight - 1);
+  std::printf(
+      "[ measured ] centre deflection %.6g m, Reissner-Mindlin %.6g m (%+.2f%%); rim reaction %.12g N, weight "
+      "%.12g N (%.2g relative)\n",
+      -centre[1], theory, 100 * (-centre[1] / theory - 1), rim[1], weight, rim[1] / weight - 1);
   EXPECT_NEAR(-centre[1], theory, 0.03 * theory);
   EXPECT_NEAR(rim[1], weight, 1e-9 * weight);
 }

@@ -10,8 +10,8 @@
 #include <stdexcept>
 
 #include "mpm/particles/field_keys.hpp"
-#include "mpm/sets/particle_sets.hpp"
 #include "mpm/schemes/axisymmetric.hpp"
+#include "mpm/sets/particle_sets.hpp"
 
 namespace mpm {
 namespace {

@@ -290,14 +290,15 @@ class SetConditions final : public Module<Dim>, public ReactionProvider<Dim> {
         f3.template head<Dim>() = impulse;
         const Vec3 moment = x3.cross(f3);
         for (int d = 0; d < Dim; ++d) sums[static_cast<std::size_t>(d)] += impulse[d];
-        for (int d = 0; d < 3; ++d) sums[static_cast<std::size_t>(Dim + d)] += moment[d];
+        for (int d = 0; d < 3; ++d) sums[static_cast<std::size_t>(Dim) + static_cast<std::size_t>(d)] += moment[d];
         for (const auto& c : prescribed_[k])
           if (c.moving) sums[Dim + 3] += impulse[c.component] * c.at<Dim>(x, tm);
       }
     if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(sums));
     Reaction<Dim>& out = reactions_[k];
     for (int d = 0; d < Dim; ++d) out.force[d] = sums[static_cast<std::size_t>(d)].value() / ctx.dt;
-    for (int d = 0; d < 3; ++d) out.first_moment[d] = sums[static_cast<std::size_t>(Dim + d)].value() / ctx.dt;
+    for (int d = 0; d < 3; ++d)
+      out.first_moment[d] = sums[static_cast<std::size_t>(Dim) + static_cast<std::size_t>(d)].value() / ctx.dt;
     work_[k] = sums[Dim + 3].value();
   }
 

@@ -18,7 +18,8 @@ namespace {
 
 using io::Range;
 
-/// The parameters both models share, in the order the reference lists them (names fixed so that scenes written for other geotechnical codes read alike).
+/// The parameters both models share, in the order the reference lists them (names fixed so that scenes written for
+/// other geotechnical codes read alike).
 std::vector<ParameterSpec> soil_parameters() {
   return {
       ParameterSpec::required("density", "kg/m^3", Range::above(0), "reference mass density rho0"),
