@@ -1,12 +1,14 @@
 #include "mpm/app/body_summary.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 
 #include "mpm/body_shape/shape_kind.hpp"
 #include "mpm/core/exact_sum.hpp"
 #include "mpm/geometry/mass_properties.hpp"
+#include "mpm/sets/particle_sets.hpp"
 
 namespace mpm::app {
 
@@ -25,6 +27,38 @@ std::string body_summary(const Simulation<Dim>& sim) {
     text +=
         fmt::format("  body '{}': {} particle{}, volume {:.10g} m^{}, mass {:.10g} {}\n", b.name, b.particles.size(),
                     b.particles.size() == 1 ? "" : "s", volume.value(), volume_power, mass.value(), mass_unit);
+  }
+  return text;
+}
+
+template <int Dim>
+std::string set_summary(const Simulation<Dim>& sim, const SceneDescription& scene) {
+  const bool revolved = sim.grid().geometry.coordinates == Coordinates::axisymmetric;
+  const char* mass_unit = revolved || Dim == 3 ? "kg" : Dim == 2 ? "kg/m" : "kg/m^2";
+  std::string text;
+  for (std::size_t k = 0; k < scene.sets.size(); ++k) {
+    const std::uint32_t bit = set_bit(static_cast<int>(k));
+    Index count = 0;
+    ExactSum mass;
+    std::vector<std::string> bodies;
+    for (const auto& b : sim.bodies()) {
+      if (!b.particles.has_field(keys::particle_sets)) continue;
+      const auto& bits = b.particles.field(keys::particle_sets);
+      const Index before = count;
+      for (Index i = 0; i < b.particles.size(); ++i)
+        if (bits[static_cast<std::size_t>(i)] & bit) {
+          ++count;
+          mass.add(b.particles.mass[i]);
+        }
+      if (count > before) bodies.push_back(b.name);
+    }
+    const std::string& name = scene.sets[k].name;
+    if (count == 0) {
+      text += fmt::format("  set '{}': no particle (its bodies, region and ids select none)\n", name);
+      continue;
+    }
+    text += fmt::format("  set '{}': {} particle{} in {}, mass {:.10g} {}\n", name, count, count == 1 ? "" : "s",
+                        fmt::join(bodies, ", "), mass.value(), mass_unit);
   }
   return text;
 }
@@ -60,6 +94,9 @@ template std::string body_summary<1>(const Simulation<1>&);
 template std::string body_summary<2>(const Simulation<2>&);
 template std::string body_summary<3>(const Simulation<3>&);
 
+template std::string set_summary<1>(const Simulation<1>&, const SceneDescription&);
+template std::string set_summary<2>(const Simulation<2>&, const SceneDescription&);
+template std::string set_summary<3>(const Simulation<3>&, const SceneDescription&);
 template std::string body_certificates<1>(const Simulation<1>&, const SceneDescription&);
 template std::string body_certificates<2>(const Simulation<2>&, const SceneDescription&);
 template std::string body_certificates<3>(const Simulation<3>&, const SceneDescription&);

@@ -193,9 +193,10 @@ std::string write_scene(const ParticlesOptions& o, const SceneDescription& scene
                         scene.solver.shape_function));
   io::write_vtu(o.output, cloud);
   if (!o.domains.empty()) io::write_cells_vtu(domains_path(o.output), particle_domain_mesh(sim->bodies()));
-  std::string bodies = body_summary<Dim>(*sim) + body_certificates<Dim>(*sim, scene);  // a line per body, then CAD
-                                                                                       // and mesh bodies' certificates
-  bodies.pop_back();                                                                   // the caller ends the text
+  std::string bodies = body_summary<Dim>(*sim) + set_summary<Dim>(*sim, scene) +
+                       body_certificates<Dim>(*sim, scene);  // a line per body, then CAD
+                                                             // and mesh bodies' certificates
+  bodies.pop_back();                                         // the caller ends the text
   return fmt::format("{}: {} particles in {} {} ({}D), volume {:.10g} m^{}\n{}", o.output.string(), cloud.size(),
                      sim->bodies().size(), sim->bodies().size() == 1 ? "body" : "bodies", Dim, total, Dim, bodies);
 }

@@ -82,7 +82,7 @@ void check(const SceneDescription& scene, std::ostream& out, std::ostream& log, 
              sim->grid().size(), scene.solver.scheme_name(), scene.solver.shape_function, dt, sim->stable_time_step(),
              sim->time_step_limiter(), static_cast<long long>(std::ceil(scene.solver.end_time / dt)),
              scene.solver.end_time, scene.solver.dt ? "" : " at this first dt (the adaptive step follows the run)");
-  fmt::print(out, "{}", body_summary<Dim>(*sim));
+  fmt::print(out, "{}{}", body_summary<Dim>(*sim), set_summary<Dim>(*sim, scene));
   const MemoryEstimate memory = estimate_memory<Dim>(scene, sim->grid().geometry, true);
   const MemoryBudget budget = available_memory();
   fmt::print(out, "memory: about {} estimated before building ({:.4g} particles, {} grid nodes), {} available ({})\n",

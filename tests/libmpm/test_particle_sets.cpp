@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "history_fixture.hpp"
+#include "mpm/app/body_summary.hpp"
 #include "mpm/particles/field_keys.hpp"
 #include "mpm/sets/particle_sets.hpp"
 
@@ -59,6 +60,16 @@ TEST(ParticleSets, MembershipIsDecidedAtTheStartByBodyRegionAndId) {
   EXPECT_EQ(clamp, 8 * 8);  // particles 0.0125 m apart: 8 columns of 8 in the first 0.1 m
   EXPECT_EQ(tip, 2 * 8);
   EXPECT_EQ(first, 4);
+}
+
+TEST(ParticleSets, CheckReportsEachSetsParticlesAndAnEmptySet) {
+  std::string yaml = cantilever;
+  yaml.replace(yaml.find("  tip: {body"), 0, "  above: {region: {type: box, min: [0, 0.15], max: [1, 0.2]}}\n");
+  auto m = measured<2>(yaml);
+  EXPECT_EQ(app::set_summary<2>(*m->sim, m->scene),
+            "  set 'clamp': 64 particles in beam, mass 10 kg/m\n"
+            "  set 'above': no particle (its bodies, region and ids select none)\n"
+            "  set 'tip': 16 particles in beam, mass 2.5 kg/m\n");
 }
 
 TEST(ParticleSets, CantileverClampedByASetMatchesBeamTheoryAndItsReactionIsTheLoad) {

@@ -17,6 +17,12 @@ namespace mpm::app {
 template <int Dim>
 std::string body_summary(const Simulation<Dim>& sim);
 
+/// "  set 'NAME': N particles in BODY[, BODY], mass M kg" per particle set of the scene (`sets:`), and " (none: its
+/// bodies, region and ids select no particle)" for an empty one: what `mpm check` and `mpm particles --scene` show so
+/// that a region that misses its body is seen before the run.
+template <int Dim>
+std::string set_summary(const Simulation<Dim>& sim, const SceneDescription& scene);
+
 /// The fidelity certificate (geometry/mass_properties.hpp) of every 3D body whose shape knows its source's exact
 /// properties (a CAD file's B-rep, a surface mesh's or a Gmsh mesh's integrals): the particles' volume, centroid and
 /// inertia as built (volume0; with `volume: exact` their volumes sum to the exact volume by construction) against
