@@ -164,13 +164,10 @@ class SetConditions final : public Module<Dim>, public ReactionProvider<Dim> {
       for (std::size_t k = 0; k < held_.size(); ++k) hold_updated(ctx, k);
     } else {
       for (std::size_t k = 0; k < held_.size(); ++k)
-        for (auto& h : nodes_[k])
-          for (const Index n : h.nodes) {
-            if (!(h.grid->node[n].mass > 0)) continue;
-            const Vec<Dim> x = position(*h.grid, n);
-            for (const auto& c : prescribed_[k])
-              h.grid->velocity[n].mapped[c.component] = c.at<Dim>(x, ctx.time + ctx.dt);
-          }
+        for_each_held_node(k, [&](HeldNodes<Dim>& h, std::size_t, Index n, const NodeRecord<Dim>&, const Vec<Dim>& x) {
+          for (const auto& c : prescribed_[k])
+            h.grid->velocity[n].mapped[c.component] = c.at<Dim>(x, ctx.time + ctx.dt);
+        });
     }
   }
 
@@ -243,21 +240,28 @@ class SetConditions final : public Module<Dim>, public ReactionProvider<Dim> {
       }
   }
 
-  /// v(t) on the held nodes; the impulse m_I v(t) − p_I of each (eq. 13.2) kept for the updated stage.
-  void hold_mapped(StepContext<Dim>& ctx, std::size_t k) {
-    const Real cutoff = ctx.settings.mass_cutoff;
+  /// f(slot, j, node, its record, its position) for every held node of set k that has mass (the others have no
+  /// velocity to hold), in the order of the joined lists.
+  template <class F>
+  void for_each_held_node(std::size_t k, F&& f) {
     for (auto& h : nodes_[k])
       for (std::size_t j = 0; j < h.nodes.size(); ++j) {
         const Index n = h.nodes[j];
         const NodeRecord<Dim>& r = h.grid->node[n];
-        if (!(r.mass > 0)) continue;
-        const Vec<Dim> x = position(*h.grid, n);
-        for (const auto& c : prescribed_[k]) {
-          const Real v = c.at<Dim>(x, ctx.time);
-          if (r.mass > cutoff) h.jm[j][static_cast<std::size_t>(c.component)] = r.mass * v - r.momentum[c.component];
-          h.grid->velocity[n].mapped[c.component] = v;
-        }
+        if (r.mass > 0) f(h, j, n, r, position(*h.grid, n));
       }
+  }
+
+  /// v(t) on the held nodes; the impulse m_I v(t) − p_I of each (eq. 13.2) kept for the updated stage.
+  void hold_mapped(StepContext<Dim>& ctx, std::size_t k) {
+    const Real cutoff = ctx.settings.mass_cutoff;
+    for_each_held_node(k, [&](HeldNodes<Dim>& h, std::size_t j, Index n, const NodeRecord<Dim>& r, const Vec<Dim>& x) {
+      for (const auto& c : prescribed_[k]) {
+        const Real v = c.at<Dim>(x, ctx.time);
+        if (r.mass > cutoff) h.jm[j][static_cast<std::size_t>(c.component)] = r.mass * v - r.momentum[c.component];
+        h.grid->velocity[n].mapped[c.component] = v;
+      }
+    });
   }
 
   /// v(t + dt) on the held nodes, and the set's reaction of the step: R dt = Σ_I m_I (v(t + dt) − v(t)) − Δt (f_I +
@@ -268,32 +272,27 @@ class SetConditions final : public Module<Dim>, public ReactionProvider<Dim> {
   void hold_updated(StepContext<Dim>& ctx, std::size_t k) {
     const Real cutoff = ctx.settings.mass_cutoff, t1 = ctx.time + ctx.dt, tm = ctx.time + 0.5 * ctx.dt;
     std::array<ExactSum, Dim + 4> sums;  // force (Dim), first moment (3), work
-    for (auto& h : nodes_[k])
-      for (std::size_t j = 0; j < h.nodes.size(); ++j) {
-        const Index n = h.nodes[j];
-        const NodeRecord<Dim>& r = h.grid->node[n];
-        if (!(r.mass > 0)) continue;
-        const Vec<Dim> x = position(*h.grid, n);
-        Vec<Dim> impulse = Vec<Dim>::Zero();
-        for (const auto& c : prescribed_[k]) {
-          const int d = c.component;
-          const Real v = c.at<Dim>(x, t1);
-          if (r.mass > cutoff)
-            impulse[d] = r.mass * (v - c.at<Dim>(x, ctx.time)) -
-                         ctx.dt * (r.force[d] + r.mass * ctx.settings.gravity[d]) +
-                         pic_share_ * h.jm[j][static_cast<std::size_t>(d)];
-          h.grid->velocity[n].updated[d] = v;
-        }
-        if (!ctx.owned_nodes.contains(n)) continue;
-        Vec3 x3 = Vec3::Zero(), f3 = Vec3::Zero();
-        x3.template head<Dim>() = x;
-        f3.template head<Dim>() = impulse;
-        const Vec3 moment = x3.cross(f3);
-        for (int d = 0; d < Dim; ++d) sums[static_cast<std::size_t>(d)] += impulse[d];
-        for (int d = 0; d < 3; ++d) sums[static_cast<std::size_t>(Dim) + static_cast<std::size_t>(d)] += moment[d];
-        for (const auto& c : prescribed_[k])
-          if (c.moving) sums[Dim + 3] += impulse[c.component] * c.at<Dim>(x, tm);
+    for_each_held_node(k, [&](HeldNodes<Dim>& h, std::size_t j, Index n, const NodeRecord<Dim>& r, const Vec<Dim>& x) {
+      Vec<Dim> impulse = Vec<Dim>::Zero();
+      for (const auto& c : prescribed_[k]) {
+        const int d = c.component;
+        const Real v = c.at<Dim>(x, t1);
+        if (r.mass > cutoff)
+          impulse[d] = r.mass * (v - c.at<Dim>(x, ctx.time)) -
+                       ctx.dt * (r.force[d] + r.mass * ctx.settings.gravity[d]) +
+                       pic_share_ * h.jm[j][static_cast<std::size_t>(d)];
+        h.grid->velocity[n].updated[d] = v;
       }
+      if (!ctx.owned_nodes.contains(n)) return;
+      Vec3 x3 = Vec3::Zero(), f3 = Vec3::Zero();
+      x3.template head<Dim>() = x;
+      f3.template head<Dim>() = impulse;
+      const Vec3 moment = x3.cross(f3);
+      for (int d = 0; d < Dim; ++d) sums[static_cast<std::size_t>(d)] += impulse[d];
+      for (int d = 0; d < 3; ++d) sums[static_cast<std::size_t>(Dim) + static_cast<std::size_t>(d)] += moment[d];
+      for (const auto& c : prescribed_[k])
+        if (c.moving) sums[Dim + 3] += impulse[c.component] * c.at<Dim>(x, tm);
+    });
     if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(sums));
     Reaction<Dim>& out = reactions_[k];
     for (int d = 0; d < Dim; ++d) out.force[d] = sums[static_cast<std::size_t>(d)].value() / ctx.dt;
