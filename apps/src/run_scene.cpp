@@ -21,6 +21,7 @@
 #include "mpm/app/scene_builder.hpp"
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/app/stop_signals.hpp"
+#include "mpm/core/units.hpp"
 #include "mpm/diagnostics/energy_sentinel.hpp"
 #include "mpm/failure/failure_module.hpp"
 #include "mpm/history/history_kind.hpp"
@@ -82,6 +83,9 @@ void check(const SceneDescription& scene, std::ostream& out, std::ostream& log, 
              sim->grid().size(), scene.solver.scheme_name(), scene.solver.shape_function, dt, sim->stable_time_step(),
              sim->time_step_limiter(), static_cast<long long>(std::ceil(scene.solver.end_time / dt)),
              scene.solver.end_time, scene.solver.dt ? "" : " at this first dt (the adaptive step follows the run)");
+  if (scene.units != units::unit_systems().front().name)
+    fmt::print(out, "units: the scene's numbers are in {} ({}); every value above and every output is SI\n",
+               scene.units, units::find_unit_system(scene.units)->derived);
   fmt::print(out, "{}{}", body_summary<Dim>(*sim), set_summary<Dim>(*sim, scene));
   const MemoryEstimate memory = estimate_memory<Dim>(scene, sim->grid().geometry, true);
   const MemoryBudget budget = available_memory();

@@ -14,9 +14,8 @@
 namespace mpm::app {
 namespace {
 
-/// The run-control keys of the sections whose readers do not read through key specs (solver, grid).
-const std::vector<std::string> unspecified_run_control_keys{"solver.end_time", "solver.cfl",
-                                                            "grid.boundary.*.velocity"};
+/// The run-control keys the specs do not mark: a face condition's velocity (its kind's keys are not KeySpecs).
+const std::vector<std::string> unspecified_run_control_keys{"grid.boundary.*.velocity"};
 
 /// Every run-control key: those the sections' specs mark (KeySpec::run_control), the others'.
 std::vector<std::string> run_control_keys() {

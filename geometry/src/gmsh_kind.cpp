@@ -41,8 +41,9 @@ const std::vector<io::KeySpec>& keys() {
        .unit = "-",
        .range = io::Range::above(0),
        .default_value = 1.0,
-       .description = "factor on the file's coordinates (`1.0e-3` for millimetres; .msh files carry no unit), "
-                      "applied first"},
+       .description = "factor on the file's coordinates, which are in the scene's length unit (m, or that of "
+                      "`units`; .msh files carry no unit): `1.0e-3` for a file in millimetres in an SI scene; applied "
+                      "first"},
       {.name = "translation",
        .type = KeyType::list,
        .unit = "m",
@@ -80,6 +81,7 @@ std::any parse(const io::YamlReader& reader, const io::YamlMap& map, const Shape
   GmshShape gmsh;
   gmsh.file = read_shape_file(reader, file, context.scene_file, {".msh"}, "Gmsh mesh");
   if (const auto scale = map.find("scale")) gmsh.scale = reader.number(*scale, io::Range::above(0), "");
+  gmsh.scale *= reader.unit_system().length_unit();  // the file's coordinates are in the scene's length unit
   if (const auto translation = map.find("translation"))
     gmsh.translation = reader.vector(*translation, dimension, io::Range::any(), "m");
   if (const auto group = map.find("group")) {

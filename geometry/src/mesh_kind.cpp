@@ -24,7 +24,8 @@ const std::vector<io::KeySpec>& keys() {
        .unit = "-",
        .range = io::Range::above(0),
        .default_value = 1.0,
-       .description = "factor on the file's coordinates (`1.0e-3` for millimetres), applied first"},
+       .description = "factor on the file's coordinates, which are in the scene's length unit (m, or that of `units`): "
+                      "`1.0e-3` for a file in millimetres in an SI scene; applied first"},
       {.name = "rotation",
        .type = KeyType::list,
        .unit = "degrees",
@@ -55,6 +56,7 @@ std::any parse(const io::YamlReader& reader, const io::YamlMap& map, const Shape
   MeshShape mesh;
   mesh.file = read_shape_file(reader, file, context.scene_file, {".stl", ".obj", ".off", ".ply"}, "mesh");
   if (const auto scale = map.find("scale")) mesh.scale = reader.number(*scale, io::Range::above(0), "");
+  mesh.scale *= reader.unit_system().length_unit();  // the file's coordinates are in the scene's length unit
   if (const auto rotation = map.find("rotation"))
     mesh.rotation = reader.vector(*rotation, 3, io::Range::any(), "degrees");
   if (const auto translation = map.find("translation"))

@@ -133,6 +133,20 @@ TEST(SceneKeys, StructDefaultsAreTheSpecs) {
   for (const auto& component : b.velocity) EXPECT_EQ(component, mpm::io::find_key(body, "velocity")->default_text());
   EXPECT_EQ(b.domains, mpm::io::find_key(body, "domains")->default_text());
 
+  const std::vector<mpm::io::KeySpec> solver = mpm::solver_keys();
+  const mpm::SolverDescription s;
+  const auto solver_default = [&](const char* key) { return mpm::io::find_key(solver, key)->default_number(); };
+  EXPECT_EQ(s.scheme, mpm::io::find_key(solver, "scheme")->default_text());
+  EXPECT_EQ(s.shape_function, mpm::io::find_key(solver, "shape_function")->default_text());
+  EXPECT_EQ(enum_name(s.velocity_transfer), mpm::io::find_key(solver, "velocity_transfer")->default_text());
+  EXPECT_EQ(s.flip_fraction, solver_default("flip_fraction"));
+  EXPECT_EQ(s.damping, solver_default("damping"));
+  EXPECT_EQ(s.mass_cutoff, solver_default("mass_cutoff"));
+  EXPECT_EQ(s.snapshot_interval, solver_default("snapshot_interval"));
+  EXPECT_EQ(s.sort_interval, solver_default("sort_interval"));
+  EXPECT_EQ(s.energy_tolerance, solver_default("energy_tolerance"));
+  EXPECT_EQ(enum_name(s.on_energy_drift), mpm::io::find_key(solver, "on_energy_drift")->default_text());
+
   mpm::app::register_modules();
 #ifdef MPM_WITH_THERMAL
   const auto& thermal = mpm::find_scene_extension("thermal")->keys;
@@ -192,6 +206,7 @@ output: {checkpoint: {}}
       {"{material: steel,", "{unknown: 1, material: steel,", "bodies"},
       {"output: {checkpoint: {}}", "output: {unknown: 1}", "output"},
       {"checkpoint: {}", "checkpoint: {unknown: 1}", "output.checkpoint"},
+      {"solver: {end_time", "solver: {unknown: 1, end_time", "solver"},
   };
   const std::vector<mpm::io::KeySpec> top = mpm::scene_keys();
   for (const auto& c : cases) {

@@ -16,6 +16,7 @@
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/scene_loader.hpp"
 #include "mpm/scene/yaml_reader.hpp"
+#include "scene_fixture.hpp"
 
 namespace {
 
@@ -211,6 +212,94 @@ TEST(Units, AKeyWithoutAUnitRefusesOne) {
               std::string::npos)
         << e.what();
   }
+}
+
+/// `text` read as a bare number of `system` for a key in `key_unit`.
+double in_system(const std::string& text, const std::string& key_unit, const std::string& system) {
+  return units::to_key_unit(*units::split_number(text), key_unit, *units::find_unit_system(system));
+}
+
+// Each system's units are powers of ten of kg, m and s, so a bare number converts to the correctly rounded SI value
+// of what it means: the same double as that value written in SI.
+TEST(Units, AUnitSystemReadsBareNumbersInItsUnitsExactly) {
+  EXPECT_EQ(in_system("7.85e-3", "kg/m^3", "mm-ms-g"), 7850.0);  // g/mm^3
+  EXPECT_EQ(in_system("210000", "Pa", "mm-ms-g"), 210e9);        // MPa
+  EXPECT_EQ(in_system("800", "m/s", "mm-ms-g"), 800.0);          // mm/ms
+  EXPECT_EQ(in_system("0.025", "s", "mm-ms-g"), 25e-6);          // ms
+  EXPECT_EQ(in_system("5", "m", "mm-ms-g"), 5e-3);               // mm
+  EXPECT_EQ(in_system("10", "N", "mm-ms-g"), 10.0);              // g mm/ms^2 = N
+  EXPECT_EQ(in_system("1", "J", "mm-ms-g"), 1e-3);               // N mm
+  EXPECT_EQ(in_system("9.81e-3", "m/s^2", "mm-ms-g"), 9.81);     // mm/ms^2
+  EXPECT_EQ(in_system("7.85e-9", "kg/m^3", "mm-s-tonne"), 7850.0);
+  EXPECT_EQ(in_system("210000", "Pa", "mm-s-tonne"), 210e9);
+  EXPECT_EQ(in_system("800000", "m/s", "mm-s-tonne"), 800.0);
+  EXPECT_EQ(in_system("210", "Pa", "mm-ms-kg"), 210e9);  // GPa
+  EXPECT_EQ(in_system("7.85", "kg/m^3", "cm-us-g"), 7850.0);
+  EXPECT_EQ(in_system("2.1", "Pa", "cm-us-g"), 210e9);  // Mbar
+  // Temperatures, angles and ratios are the same in every system; a number with its unit is that value in any.
+  EXPECT_EQ(in_system("293.15", "K", "mm-ms-g"), 293.15);
+  EXPECT_EQ(in_system("90", "degrees", "mm-ms-g"), 90.0);
+  EXPECT_EQ(in_system("0.3", "-", "mm-ms-g"), 0.3);
+  EXPECT_EQ(in_system("500", "J/(kg K)", "mm-ms-g"), 500.0);  // mm^2/(ms^2 K) = m^2/(s^2 K)
+  EXPECT_EQ(in_system("210 GPa", "Pa", "mm-ms-g"), 210e9);
+  EXPECT_EQ(in_system("25 us", "s", "mm-s-tonne"), 25e-6);
+  EXPECT_EQ(in_system("210000", "Pa", "m-s-kg"), 210000.0);
+  EXPECT_EQ(units::find_unit_system("mm-ms-gram"), nullptr);
+}
+
+/// The disk scene of disk_scene() in `system` with its numbers `numbers` substituted.
+std::string system_scene(const std::string& system, const std::string& numbers) {
+  return "dimension: 2\nunits: " + system + "\n" + numbers;
+}
+
+// A scene written in mm-ms-g is the SI scene: every number of the description the same double, so its run is the
+// same bits; an expression of x, y, z, t in the system's units gives the same values to rounding.
+TEST(Units, ASceneInMmMsGIsTheSceneInSi) {
+  mpm::app::register_modules();
+  const std::string mm = R"yaml(grid: {origin: [0, 0], extent: [1000, 1000], cell_size: 50}
+materials: {steel: {model: linear_elastic, density: 7.85e-3, youngs_modulus: 210000, poisson_ratio: 0.3}}
+bodies: [{name: disk, material: steel, shape: {type: disk, center: [500, 500], radius: 200},
+          velocity: ["-0.8 * (y - 500)", "0.8 * (x - 500)"]
+}]
+solver: {cfl: 0.5, end_time: 0.025, gravity: [0, -9.81e-3]}
+output: {interval: 0.005}
+)yaml";
+  const std::string si = R"yaml(grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.05}
+materials: {steel: {model: linear_elastic, density: 7850, youngs_modulus: 210e9, poisson_ratio: 0.3}}
+bodies: [{name: disk, material: steel, shape: {type: disk, center: [0.5, 0.5], radius: 0.2},
+          velocity: ["-800 * (y - 0.5)", "800 * (x - 0.5)"]
+}]
+solver: {cfl: 0.5, end_time: 25e-6, gravity: [0, -9.81]}
+output: {interval: 5e-6}
+)yaml";
+  const auto a = load(system_scene("mm-ms-g", mm));
+const auto b = load(system_scene("m-s-kg", si));
+EXPECT_EQ(a.units, "mm-ms-g");
+EXPECT_EQ(a.grid.extent, b.grid.extent);
+EXPECT_EQ(a.grid.cell_size, b.grid.cell_size);
+EXPECT_EQ(a.materials.at("steel").parameters, b.materials.at("steel").parameters);
+EXPECT_EQ(a.solver.end_time, b.solver.end_time);
+EXPECT_EQ(a.solver.gravity, b.solver.gravity);
+EXPECT_EQ(a.output.interval, b.output.interval);
+auto sim_a = mpm::test::simulation_from_yaml<2>(system_scene("mm-ms-g", mm));
+auto sim_b = mpm::test::simulation_from_yaml<2>(system_scene("m-s-kg", si));
+const auto& pa = sim_a->bodies()[0].particles;
+const auto& pb = sim_b->bodies()[0].particles;
+ASSERT_EQ(pa.size(), pb.size());
+ASSERT_GT(pa.size(), 100);
+double largest = 0;
+for (mpm::Index i = 0; i < pa.size(); ++i) {
+  EXPECT_EQ(mpm::Vec<2>(pa.x[i]), mpm::Vec<2>(pb.x[i]));
+  largest = std::max(largest, (mpm::Vec<2>(pa.v[i]) - mpm::Vec<2>(pb.v[i])).norm());
+}
+EXPECT_LT(largest, 1e-12 * 160);  // the spin's rim speed is 160 m/s
+}
+
+// The unit system is a choice of the named ones; a slip gets "did you mean".
+TEST(Units, AnUnknownUnitSystemIsRefusedWithTheValidOnes) {
+  const std::string error = load_error("dimension: 2\nunits: mm-ms-gram\n");
+  EXPECT_NE(error.find("units: "), std::string::npos) << error;
+  EXPECT_NE(error.find("mm-ms-g"), std::string::npos) << error;
 }
 
 }  // namespace

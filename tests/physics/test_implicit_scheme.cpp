@@ -39,6 +39,35 @@ solver: {scheme: implicit, dt: 0.02, end_time: 0.2}
   EXPECT_LT(max_error, 1e-12);
 }
 
+// The options' defaults are their key specs' (read through `implicit: {}`): the struct a scene without the map gets
+// is the same, field by field, so the reference's Default column is what a run uses.
+TEST(ImplicitScheme, OptionsOfAnEmptyMapAreTheStructsDefaults) {
+  const std::string scene = R"(
+dimension: 1
+grid: {extent: [1], cell_size: 0.1}
+materials: {m: {model: hencky_j2, density: 1000, bulk_modulus: 1.0e6, shear_modulus: 5.0e5}}
+bodies: [{material: m, shape: {type: box, min: [0.2], max: [0.6]}}]
+solver: {scheme: implicit, dt: 0.01, end_time: 0.03@MAP@}
+)";
+  app::register_modules();
+  const auto read = [&](const std::string& map) {
+    return std::any_cast<implicit::ImplicitOptions>(
+        parse_scene(fill(scene, {{"MAP", map}}), "t.yaml").solver.scheme_options);
+  };
+  const implicit::ImplicitOptions absent = read(""), empty = read(", implicit: {}");
+  EXPECT_EQ(absent.newton_rtol, empty.newton_rtol);
+  EXPECT_EQ(absent.newton_atol, empty.newton_atol);
+  EXPECT_EQ(absent.max_newton_iterations, empty.max_newton_iterations);
+  EXPECT_EQ(absent.linear_rtol, empty.linear_rtol);
+  EXPECT_EQ(absent.max_linear_iterations, empty.max_linear_iterations);
+  EXPECT_EQ(absent.gmres_restart, empty.gmres_restart);
+  EXPECT_EQ(absent.mass_rtol, empty.mass_rtol);
+  EXPECT_EQ(absent.volumetric, empty.volumetric);
+  EXPECT_EQ(absent.weak_node_fraction, empty.weak_node_fraction);
+  EXPECT_EQ(absent.newton_trace, empty.newton_trace);
+  EXPECT_EQ(read(", implicit: {max_newton_iterations: 7, volumetric: pointwise}").max_newton_iterations, 7);
+}
+
 // `newton_trace: true` prints each Newton iteration to stderr and changes no bit of the result: a block falling
 // under gravity (Newton iterates: the predictor dt v_n misses the gravity increment) with and without the trace.
 TEST(ImplicitScheme, NewtonTracePrintsIterationsAndKeepsTheBits) {

@@ -365,6 +365,38 @@ double shifted(const NumberWithUnit& value, int shift) {
 
 }  // namespace
 
+int UnitSystem::exponent(const Dimension& dimension) const {
+  return mass * dimension.exponent[0] + length * dimension.exponent[1] + time * dimension.exponent[2];
+}
+
+double UnitSystem::length_unit() const { return std::pow(10.0, length); }
+
+const std::vector<UnitSystem>& unit_systems() {
+  static const std::vector<UnitSystem> systems{
+      {"m-s-kg", 0, 0, 0, "SI: N, Pa, J, kg/m^3"},
+      {"mm-ms-g", -3, -3, -3, "N, MPa, mJ (N mm), g/mm^3 (LS-DYNA's mm-ms-g)"},
+      {"mm-ms-kg", 0, -3, -3, "kN, GPa, J (kN mm), kg/mm^3"},
+      {"mm-s-tonne", 3, -3, 0, "N, MPa, mJ (N mm), tonne/mm^3 (Abaqus' and LS-DYNA's mm-s-t)"},
+      {"cm-us-g", -3, -2, -6, "10 MN, Mbar, 100 kJ (10 MN cm), g/cm^3"},
+  };
+  return systems;
+}
+
+const UnitSystem* find_unit_system(std::string_view name) {
+  for (const auto& system : unit_systems())
+    if (system.name == name) return &system;
+  return nullptr;
+}
+
+double to_key_unit(const NumberWithUnit& value, std::string_view key_unit, const UnitSystem& system) {
+  if (!value.unit.empty() || system.si()) return to_key_unit(value, key_unit);
+  const Unit wanted = parse_unit(key_unit);
+  const int exponent = system.exponent(wanted.dimension);
+  if (exponent == 0) return value.number;  // the system's unit of this dimension is SI's: the key's own unit
+  // the number in the system's unit, i.e. times 10^exponent in SI, then in the key's unit
+  return shifted(value, exponent - wanted.decimal_exponent) / wanted.factor;
+}
+
 double to_key_unit(const NumberWithUnit& value, std::string_view key_unit) {
   const Unit wanted = parse_unit(key_unit);
   if (value.unit.empty()) return value.number;

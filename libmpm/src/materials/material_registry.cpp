@@ -4,18 +4,19 @@
 #include <stdexcept>
 
 #include "elastic_models.hpp"
+#include "mpm/core/kind_table.hpp"
 
 namespace mpm {
 namespace {
 
-/// The registered models by key (a map, so that pointers handed out stay valid when models are added).
-std::map<std::string, MaterialModel, std::less<>>& registry() {
-  static std::map<std::string, MaterialModel, std::less<>> models = [] {
-    std::map<std::string, MaterialModel, std::less<>> core;
-    for (auto& model : elastic_material_models()) core.emplace(model.key, std::move(model));
+/// The registered models, the core's first (core/kind_table.hpp); listed by key.
+KindTable<MaterialModel, &MaterialModel::key>& registry() {
+  static KindTable<MaterialModel, &MaterialModel::key> table{[] {
+    std::deque<MaterialModel> core;
+    for (auto& model : elastic_material_models()) core.push_back(std::move(model));
     return core;
-  }();
-  return models;
+  }()};
+  return table;
 }
 
 /// Parameters that an optional module adds to every model (the thermal module: conductivity, expansion).
@@ -59,26 +60,20 @@ ParameterSpec ParameterSpec::only_with(std::string parameter) const {
   return spec;
 }
 
-void register_material_model(MaterialModel model) {
-  const std::string key = model.key;
-  registry().insert_or_assign(key, std::move(model));
-}
+void register_material_model(MaterialModel model) { registry().add(std::move(model)); }
 
-const MaterialModel* find_material_model(std::string_view key) {
-  const auto it = registry().find(key);
-  return it == registry().end() ? nullptr : &it->second;
-}
+const MaterialModel* find_material_model(std::string_view key) { return registry().find(key); }
 
 std::vector<std::string> material_model_names() {
-  std::vector<std::string> names;
-  for (const auto& [key, model] : registry()) names.push_back(key);
+  std::vector<std::string> names = registry().names();
+  std::sort(names.begin(), names.end());
   return names;
 }
 
 std::string material_model_names_where(const std::function<bool(const MaterialModel&)>& accept) {
   std::vector<std::string> names;
-  for (const auto& [key, model] : registry())
-    if (accept(model)) names.push_back(key);
+  for (const auto& key : material_model_names())
+    if (accept(*find_material_model(key))) names.push_back(key);
   std::string text;
   for (std::size_t k = 0; k < names.size(); ++k)
     text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];

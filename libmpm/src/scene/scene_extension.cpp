@@ -1,37 +1,50 @@
 #include "mpm/scene/scene_extension.hpp"
 
-#include <map>
-#include <mutex>
+#include <algorithm>
+
+#include "mpm/core/kind_table.hpp"
 
 namespace mpm {
 namespace {
 
-std::mutex& registry_mutex() {
-  static std::mutex m;
-  return m;
+/// The registered sections (core/kind_table.hpp), listed by key.
+KindTable<SceneExtension, &SceneExtension::key>& registry() {
+  static KindTable<SceneExtension, &SceneExtension::key> table;
+  return table;
 }
-std::map<std::string, SceneExtension>& registry() {
-  static std::map<std::string, SceneExtension> r;
-  return r;
+
+/// The keys of `solver:` a scheme owns.
+struct SchemeSolverKeys {
+  std::string scheme;
+  std::vector<io::KeySpec> keys;
+};
+KindTable<SchemeSolverKeys, &SchemeSolverKeys::scheme>& solver_key_registry() {
+  static KindTable<SchemeSolverKeys, &SchemeSolverKeys::scheme> table;
+  return table;
 }
 
 }  // namespace
 
-void register_scene_extension(SceneExtension extension) {
-  std::lock_guard lock(registry_mutex());
-  registry()[extension.key] = std::move(extension);
-}
+void register_scene_extension(SceneExtension extension) { registry().add(std::move(extension)); }
 
-const SceneExtension* find_scene_extension(const std::string& key) {
-  std::lock_guard lock(registry_mutex());
-  const auto it = registry().find(key);
-  return it == registry().end() ? nullptr : &it->second;
-}
+const SceneExtension* find_scene_extension(const std::string& key) { return registry().find(key); }
 
 std::vector<std::string> scene_extension_keys() {
-  std::lock_guard lock(registry_mutex());
-  std::vector<std::string> keys;
-  for (const auto& [key, e] : registry()) keys.push_back(key);
+  std::vector<std::string> keys = registry().names();
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+void register_scheme_solver_keys(const std::string& scheme, std::vector<io::KeySpec> keys) {
+  solver_key_registry().add({scheme, std::move(keys)});
+}
+
+std::vector<SchemeSolverKey> scheme_solver_keys() {
+  std::vector<std::string> schemes = solver_key_registry().names();
+  std::sort(schemes.begin(), schemes.end());
+  std::vector<SchemeSolverKey> keys;
+  for (const auto& scheme : schemes)
+    for (const auto& spec : solver_key_registry().find(scheme)->keys) keys.push_back({spec, scheme});
   return keys;
 }
 
@@ -39,11 +52,8 @@ template <int Dim>
 std::vector<std::shared_ptr<Module<Dim>>> prepare_scene_extensions(const SceneDescription& scene,
                                                                    std::vector<Body<Dim>>& bodies,
                                                                    const GridGeometry<Dim>& grid) {
-  std::vector<SceneExtension> extensions;  // copied: a preparer may not hold the registry's lock
-  {
-    std::lock_guard lock(registry_mutex());
-    for (const auto& [key, e] : registry()) extensions.push_back(e);
-  }
+  std::vector<SceneExtension> extensions;  // in key order; copied: a preparer may register kinds of its own
+  for (const auto& key : scene_extension_keys()) extensions.push_back(*find_scene_extension(key));
   std::vector<std::shared_ptr<Module<Dim>>> modules;
   for (const auto& e : extensions) {
     SectionPreparer<Dim> prepare = nullptr;

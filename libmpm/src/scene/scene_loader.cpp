@@ -9,6 +9,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "mpm/core/units.hpp"
 #include "mpm/scene/scene_extension.hpp"
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/spec_map.hpp"
@@ -17,6 +18,12 @@
 
 namespace mpm {
 namespace {
+
+std::vector<std::string> unit_system_names() {
+  std::vector<std::string> names;
+  for (const auto& system : units::unit_systems()) names.emplace_back(system.name);
+  return names;
+}
 
 /// The core's sections.
 const std::vector<io::KeySpec>& core_keys() {
@@ -27,6 +34,13 @@ const std::vector<io::KeySpec>& core_keys() {
        .range = io::Range::closed(1, 3),
        .required = true,
        .description = "1D is uniaxial strain, 2D is plane strain (or axisymmetric, `grid.coordinates`)"},
+      {.name = "units",
+       .type = KeyType::choice,
+       .choices = unit_system_names(),
+       .default_value = std::string("m-s-kg"),
+       .description = "[Units](#units): the unit system of the scene's bare numbers (`mm-ms-g`: lengths in mm, times "
+                      "in ms, masses in g, so forces in N, stresses in MPa, densities in g/mm^3); a number with its "
+                      "unit (`210 GPa`) is that value in any system. The program computes and writes in SI"},
       {.name = "grid",
        .type = KeyType::map,
        .required = true,
@@ -69,6 +83,9 @@ const std::vector<io::KeySpec>& core_keys() {
 
 std::vector<io::KeySpec> scene_keys() {
   std::vector<io::KeySpec> keys = core_keys();
+  // the solver's keys name the registered schemes and shape functions: built now, not cached with the others
+  for (auto& key : keys)
+    if (key.name == "solver") key.keys = solver_keys();
   for (const auto& name : scene_extension_keys()) {
     const SceneExtension& extension = *find_scene_extension(name);
     keys.push_back({.name = name,
@@ -81,7 +98,7 @@ std::vector<io::KeySpec> scene_keys() {
 }
 
 SceneDescription parse_scene(const std::string& yaml_text, const std::string& file_name_for_messages) {
-  const io::YamlReader reader(file_name_for_messages);
+  io::YamlReader reader(file_name_for_messages);
   YAML::Node root;
   try {
     root = YAML::Load(yaml_text);
@@ -102,6 +119,8 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   scene.file = file_name_for_messages;
   scene.source = yaml_text;
   scene.dimension = top.integer("dimension");
+  scene.units = top.choice("units");  // before any other number is read: they are in its units
+  reader.set_unit_system(*units::find_unit_system(scene.units));
   scene.grid = sections::read_grid(reader, top.required("grid"), scene.dimension);
   scene.materials = sections::read_materials(reader, top.required("materials"));
   scene.bodies = sections::read_bodies(reader, top.required("bodies"), scene);

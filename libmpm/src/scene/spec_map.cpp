@@ -71,7 +71,8 @@ YamlValue SpecMap::required(std::string_view key) const {
 
 double SpecMap::number(std::string_view key) const {
   const KeySpec& s = spec(key);
-  if (const auto value = map_.find(key)) return reader_.number(*value, s.range, s.unit);
+  if (const auto value = s.required ? std::optional(map_.required(key)) : map_.find(key))
+    return reader_.number(*value, s.range, s.unit);
   return spec_default<double>(s);
 }
 

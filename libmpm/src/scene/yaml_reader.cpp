@@ -56,6 +56,54 @@ void YamlReader::fail(const YamlValue& value, const std::string& message) const 
   fail(value.mark, value.path, message);
 }
 
+namespace {
+
+/// An expression of a unit system's x, y, z (lengths) and t (a time), with its value in the system's unit of
+/// `key_unit`, rewritten as one of SI's: each variable divided by its unit's size in SI, the whole multiplied by the
+/// system's unit of the key in the key's unit. Numbers (with their exponents) and other names are kept as written.
+std::string expression_in_si(const std::string& text, const units::UnitSystem& system, std::string_view key_unit) {
+  const auto variable_in_si = [&](std::string_view name) -> std::optional<std::string> {
+    if (name == "x" || name == "y" || name == "z") return fmt::format("({}/1e{})", name, system.length);
+    if (name == "t") return fmt::format("(t/1e{})", system.time);
+    return std::nullopt;
+  };
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string out;
+  out.reserve(2 * text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    std::size_t end = i + 1;
+    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {  // a number literal, exponent included
+      while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) || text[end] == '.')) ++end;
+      if (end < text.size() && (text[end] == 'e' || text[end] == 'E')) {
+        std::size_t e = end + 1;
+        if (e < text.size() && (text[e] == '+' || text[e] == '-')) ++e;
+        if (e < text.size() && std::isdigit(static_cast<unsigned char>(text[e]))) {
+          end = e;
+          while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+        }
+      }
+      out.append(text, i, end - i);
+    } else if (word(c)) {
+      while (end < text.size() && word(text[end])) ++end;
+      const std::string_view name(text.data() + i, end - i);
+      const auto replaced = variable_in_si(name);
+      out.append(replaced ? *replaced : std::string(name));
+    } else {
+      out += c;
+    }
+    i = end;
+  }
+  const units::Unit wanted = units::parse_unit(key_unit);
+  const int exponent = system.exponent(wanted.dimension);
+  if (exponent == 0) return out;  // the system's unit of the value is SI's: the key's own unit
+  const int shift = exponent - wanted.decimal_exponent;
+  return wanted.factor == 1 ? fmt::format("1e{}*({})", shift, out)
+                            : fmt::format("1e{}/{}*({})", shift, wanted.factor, out);
+}
+
+}  // namespace
+
 double YamlReader::number(const YamlValue& value) const {
   if (value.node.IsScalar())
     if (const auto x = units::split_number(value.node.Scalar())) {
@@ -70,11 +118,13 @@ double YamlReader::number(const YamlValue& value, const Range& range, std::strin
   if (!x) fail(value, "expected a number, got " + describe(value.node));
   double si = 0;
   try {
-    si = units::to_key_unit(*x, unit);
+    si = units::to_key_unit(*x, unit, *system_);
   } catch (const units::UnitError& e) {
     fail(value, e.what());
   }
-  const std::string written = x->unit.empty() ? "" : fmt::format(" ({})", value.node.Scalar());
+  const std::string written = !x->unit.empty() ? fmt::format(" ({})", value.node.Scalar())
+                              : system_->si()  ? ""
+                                               : fmt::format(" ({} in {})", value.node.Scalar(), system_->name);
   if (!std::isfinite(si))
     fail(value, fmt::format("{} is beyond the range of a double in {}", value.node.Scalar(), unit));
   if (!range.contains(si))
@@ -163,7 +213,7 @@ std::string YamlReader::expression(const YamlValue& value, const std::vector<std
   // "2*t", is left to muparser.
   std::string unit_problem;  // when the text reads as a number and a word that is not a unit ("-800 m/ss")
   if (const auto x = units::split_number(text)) {
-    if (x->unit.empty()) return fmt::format("{}", x->number);
+    if (x->unit.empty()) return fmt::format("{}", system_->si() ? x->number : number(value, Range::any(), unit));
     const bool variable = std::find(variables.begin(), variables.end(), x->unit) != variables.end();
     if (!variable) try {
         units::parse_unit(x->unit);  // a unit: of the key's dimension, or refused
@@ -180,7 +230,7 @@ std::string YamlReader::expression(const YamlValue& value, const std::vector<std
     fail(value, fmt::format("{} (variables allowed here: {}){}", e.what(), allowed,
                             unit_problem.empty() ? "" : "; as a number with a unit: " + unit_problem));
   }
-  return text;
+  return system_->si() ? text : expression_in_si(text, *system_, unit);
 }
 
 YamlMap YamlReader::map(const YamlValue& value) const { return YamlMap(*this, value); }

@@ -42,7 +42,9 @@ std::vector<SchemeSpec> core_schemes() {
           "musl", "Modified Update Stress Last (review Alg. 2): the grid velocity re-mapped before the stress update",
           {.scatters_per_step = 2}),
       explicit_scheme<ExplicitScheme<Tlmpm, true>>(
-          "tlmpm", "Total-Lagrangian MPM (review Alg. 3): weights at the reference positions, cached once",
+          "tlmpm",
+          "Total-Lagrangian MPM (review Alg. 3): weights at the reference positions, cached once; the grid only "
+          "needs to cover the initial shape; no automatic contact between bodies",
           {.affine_transfers = Support::no("review Remark 35: APIC does not work well with the TLMPM"),
            .contact = Support::no(
                "TLMPM has no contact between bodies: it maps on the reference configuration, where they never "

@@ -1,52 +1,28 @@
 #include "mpm/schemes/scheme_registry.hpp"
 
-#include <map>
-#include <mutex>
 #include <stdexcept>
 
 #include "core_schemes.hpp"
+#include "mpm/core/kind_table.hpp"
 
 namespace mpm {
 namespace {
 
-/// The registered schemes by name (a map, so that pointers handed out stay valid when schemes are added), and
-/// their names in registration order.
-struct Registry {
-  std::map<std::string, SchemeSpec, std::less<>> specs;
-  std::vector<std::string> order;
-
-  void add(SchemeSpec spec) {
-    const std::string name = spec.name;
-    if (!specs.count(name)) order.push_back(name);
-    specs.insert_or_assign(name, std::move(spec));
-  }
-};
-
-std::mutex& registry_mutex() {
-  static std::mutex m;
-  return m;
-}
-Registry& registry() {
-  static Registry r = [] {
-    Registry core;
-    for (auto& spec : core_schemes()) core.add(std::move(spec));
+/// The registered schemes, the core's first (core/kind_table.hpp).
+KindTable<SchemeSpec>& registry() {
+  static KindTable<SchemeSpec> table{[] {
+    std::deque<SchemeSpec> core;
+    for (auto& spec : core_schemes()) core.push_back(std::move(spec));
     return core;
-  }();
-  return r;
+  }()};
+  return table;
 }
 
 }  // namespace
 
-void register_scheme(SchemeSpec spec) {
-  std::lock_guard lock(registry_mutex());
-  registry().add(std::move(spec));
-}
+void register_scheme(SchemeSpec spec) { registry().add(std::move(spec)); }
 
-const SchemeSpec* find_scheme(std::string_view name) {
-  std::lock_guard lock(registry_mutex());
-  const auto it = registry().specs.find(name);
-  return it == registry().specs.end() ? nullptr : &it->second;
-}
+const SchemeSpec* find_scheme(std::string_view name) { return registry().find(name); }
 
 const SchemeSpec& scheme_of(const SolverDescription& solver) {
   if (const SchemeSpec* spec = find_scheme(solver.scheme)) return *spec;
@@ -54,10 +30,7 @@ const SchemeSpec& scheme_of(const SolverDescription& solver) {
                               "' (valid: " + scheme_names_where([](const SchemeTraits&) { return true; }) + ")");
 }
 
-std::vector<std::string> scheme_names() {
-  std::lock_guard lock(registry_mutex());
-  return registry().order;
-}
+std::vector<std::string> scheme_names() { return registry().names(); }
 
 std::string scheme_names_where(const std::function<bool(const SchemeTraits&)>& accept) {
   std::vector<std::string> names;
@@ -67,14 +40,6 @@ std::string scheme_names_where(const std::function<bool(const SchemeTraits&)>& a
   for (std::size_t k = 0; k < names.size(); ++k)
     text += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
   return text;
-}
-
-std::vector<std::pair<std::string, std::string>> scheme_solver_keys() {
-  std::lock_guard lock(registry_mutex());
-  std::vector<std::pair<std::string, std::string>> keys;
-  for (const auto& name : registry().order)
-    for (const auto& key : registry().specs.at(name).solver_keys) keys.emplace_back(key, name);
-  return keys;
 }
 
 template <int Dim>

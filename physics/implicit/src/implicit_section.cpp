@@ -8,6 +8,7 @@
 #include "mpm/implicit/implicit_options.hpp"
 #include "mpm/materials/material_registry.hpp"
 #include "mpm/scene/scene_error.hpp"
+#include "mpm/scene/spec_map.hpp"
 #include "mpm/schemes/scheme.hpp"
 
 namespace mpm::implicit {
@@ -16,19 +17,18 @@ namespace {
 using io::Range;
 
 void read_options(const io::YamlReader& reader, const io::YamlValue& value, ImplicitOptions& o) {
-  const io::YamlMap map = reader.map(value);
-  map.allow({"newton_rtol", "newton_atol", "max_newton_iterations", "linear_rtol", "max_linear_iterations",
-             "gmres_restart", "mass_rtol", "volumetric", "weak_node_fraction", "newton_trace"});
-  if (const auto v = map.find("newton_rtol")) o.newton_rtol = reader.number(*v, Range::open(0, 1), "");
-  if (const auto v = map.find("newton_atol")) o.newton_atol = reader.number(*v, Range::at_least(0), "N");
-  if (const auto v = map.find("max_newton_iterations")) o.max_newton_iterations = reader.integer(*v, 1);
-  if (const auto v = map.find("linear_rtol")) o.linear_rtol = reader.number(*v, Range::open(0, 1), "");
-  if (const auto v = map.find("max_linear_iterations")) o.max_linear_iterations = reader.integer(*v, 1);
-  if (const auto v = map.find("gmres_restart")) o.gmres_restart = reader.integer(*v, 1);
-  if (const auto v = map.find("mass_rtol")) o.mass_rtol = reader.number(*v, Range::open(0, 1), "");
-  if (const auto v = map.find("volumetric")) o.volumetric = reader.choice<VolumetricMode>(*v);
-  if (const auto v = map.find("weak_node_fraction")) o.weak_node_fraction = reader.number(*v, Range::closed(0, 1), "");
-  if (const auto v = map.find("newton_trace")) o.newton_trace = reader.boolean(*v);
+  const std::vector<io::KeySpec>& keys = implicit_keys().front().keys;
+  const io::SpecMap map(reader, value, keys);
+  o.newton_rtol = map.number("newton_rtol");
+  o.newton_atol = map.number("newton_atol");
+  o.max_newton_iterations = map.integer("max_newton_iterations");
+  o.linear_rtol = map.number("linear_rtol");
+  o.max_linear_iterations = map.integer("max_linear_iterations");
+  o.gmres_restart = map.integer("gmres_restart");
+  o.mass_rtol = map.number("mass_rtol");
+  o.volumetric = *enum_from_name<VolumetricMode>(map.choice("volumetric"));
+  o.weak_node_fraction = map.number("weak_node_fraction");
+  o.newton_trace = map.boolean("newton_trace");
 }
 
 /// The transfer choices: (92) is the FLIP update of the grid increment, nothing else.
@@ -77,6 +77,84 @@ void refuse_materials(const SceneDescription& scene) {
 }
 
 }  // namespace
+
+const std::vector<io::KeySpec>& implicit_keys() {
+  using io::KeyType;
+  static const std::vector<io::KeySpec> keys{
+      {.name = "implicit",
+       .type = KeyType::map,
+       .absent = "every key's default",
+       .description = "the options of the Newton-Krylov solve, see [solver.implicit](#solverimplicit)",
+       .keys =
+           {{.name = "newton_rtol",
+             .type = KeyType::number,
+             .unit = "-",
+             .range = Range::open(0, 1),
+             .default_value = 1e-10,
+             .description =
+                 "Newton stops at ‖R‖ ≤ newton_rtol · R_ref, with the reference residual R_ref = ‖2 M v_n/Δt‖ + "
+                 "‖F^int(predictor)‖ + ‖F^ext‖ (the sizes of the residual's terms at the predictor, free degrees of "
+                 "freedom); or where no step reduces ‖R‖ any more while the Newton update is below 10⁻⁸ of the "
+                 "unknowns (the residual's rounding floor, theory.md §15)"},
+            {.name = "newton_atol",
+             .type = KeyType::number,
+             .unit = "N",
+             .range = Range::at_least(0),
+             .default_value = 0.0,
+             .description = "or at ‖R‖ ≤ newton_atol"},
+            {.name = "max_newton_iterations",
+             .type = KeyType::integer,
+             .range = Range::at_least(1),
+             .default_value = 25.0,
+             .description = "not converged by then: the run stops (exit 3) with the last good state written, naming "
+                            "step, time, ‖R‖, iterations and tolerance"},
+            {.name = "linear_rtol",
+             .type = KeyType::number,
+             .unit = "-",
+             .range = Range::open(0, 1),
+             .default_value = 1e-4,
+             .description = "GMRES relative tolerance of each Newton direction"},
+            {.name = "max_linear_iterations",
+             .type = KeyType::integer,
+             .range = Range::at_least(1),
+             .default_value = 200.0,
+             .description = "GMRES iterations per Newton direction at most"},
+            {.name = "gmres_restart",
+             .type = KeyType::integer,
+             .range = Range::at_least(1),
+             .default_value = 50.0,
+             .description = "GMRES restart length"},
+            {.name = "mass_rtol",
+             .type = KeyType::number,
+             .unit = "-",
+             .range = Range::open(0, 1),
+             .default_value = 1e-12,
+             .description = "conjugate-gradient tolerance of the projection (87), relative to ‖Σ N π‖"},
+            {.name = "volumetric",
+             .type = KeyType::choice,
+             .choices = enum_names<VolumetricMode>(),
+             .default_value = std::string("mixed_cell"),
+             .description = "`mixed_cell`: Q1/P0 three-field volume per cell (88c)-(88e); `pointwise`: Θ = J per "
+                            "particle"},
+            {.name = "weak_node_fraction",
+             .type = KeyType::number,
+             .unit = "-",
+             .range = Range::closed(0, 1),
+             .default_value = 0.1,
+             .description =
+                 "a node whose particles cover less than this fraction of a cell (Σ N^A V_p / h^dim) is weak: its "
+                 "velocity components are extrapolated linearly from the two nodes further in along a grid axis "
+                 "(u_A = 2u_B − u_C), the same prolongation in (87) and (88a), which keeps the energy identity and "
+                 "both momenta (docs/theory.md §15, \"Weak nodes\"); 0 keeps every node"},
+            {.name = "newton_trace",
+             .type = KeyType::boolean,
+             .default_value = false,
+             .description = "print every Newton iteration (‖R‖ before and after, step length, GMRES iterations, the "
+                            "worst degree of freedom), each step's weak-node split and, when a solve fails, the "
+                            "degrees of freedom where the residual stays, to stderr; the results are the same bits"}}},
+  };
+  return keys;
+}
 
 std::any parse_implicit_solver(const io::YamlReader& reader, const io::YamlMap& solver_map,
                                const SolverDescription& solver, const SceneDescription& scene) {

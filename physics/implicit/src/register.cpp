@@ -4,6 +4,7 @@
 
 #include "implicit_section.hpp"
 #include "mpm/implicit/implicit_scheme.hpp"
+#include "mpm/scene/scene_extension.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
 
 namespace mpm::implicit {
@@ -23,7 +24,6 @@ void register_module() {
         {.name = "implicit",
          .description = "Energy-consistent implicit MPM (Love & Sulsky, ref. 003): consistent mass, midpoint rule, "
                         "Newton-Krylov; stable for any dt",
-         .solver_keys = {"implicit"},
          .parse = &parse_implicit_solver,
          .check = &check_implicit_scene,
          .make_1d = &make_implicit<1>,
@@ -39,6 +39,7 @@ void register_module() {
              .contact_releases_separating_nodes = false,
              .unconditionally_stable = true,
              .runs_distributed = false}});
+    register_scheme_solver_keys("implicit", implicit_keys());
   });
 }
 

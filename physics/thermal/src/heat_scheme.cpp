@@ -67,7 +67,9 @@ void register_heat_scheme() {
   register_scheme(
       {.name = "heat",
        .description = "Heat conduction alone (module `thermal`, Alg. 8): the bodies stay still and the step is the "
-                      "diffusion bound, not the CFL bound",
+                      "diffusion bound, not the CFL bound; needs `thermal:`, takes contact's `thermal_conductance`, "
+                      "refuses `thermal_expansion`, `gravity`, `damping` and the affine transfers "
+                      "(physics/thermal/README.md, Thermal time scales)",
        .check = &check_heat_scene,
        .make_1d = &make_heat_only<1>,
        .make_2d = &make_heat_only<2>,

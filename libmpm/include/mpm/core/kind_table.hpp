@@ -1,9 +1,9 @@
 #pragma once
 /// \file core/kind_table.hpp
-/// The table behind every registry of kinds a scene names by a string (face conditions, body shapes, history
-/// kinds): the core's kinds first, then whatever modules register, each found by its name. Registering a name
-/// again replaces its entry. Entries never move (a deque), so the pointers `find` hands out stay valid while modules
-/// register more; the mutex makes registration from several threads safe.
+/// The table behind every registry of kinds a scene names by a string (schemes, material models, module sections,
+/// face conditions, body shapes, history kinds): the core's kinds first, then whatever modules register, each found
+/// by its name. Registering a name again replaces its entry. Entries never move (a deque), so the pointers `find` hands
+/// out stay valid while modules register more; the mutex makes registration from several threads safe.
 
 #include <deque>
 #include <mutex>

@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace mpm::units {
 
@@ -65,10 +66,36 @@ struct NumberWithUnit {
 };
 std::optional<NumberWithUnit> split_number(std::string_view text);
 
+/// A system of units for a scene's bare numbers (`units: mm-ms-g`, docs/scene-reference.md "Units"): its units of
+/// mass, length and time as powers of ten of kg, m and s, from which every other unit follows (mm-ms-g: force
+/// g mm/ms^2 = 1 N, stress N/mm^2 = 1 MPa, density g/mm^3 = 10^6 kg/m^3). Temperatures and angles are SI's in every
+/// system. The program converts to SI as it reads, and computes and writes in SI.
+struct UnitSystem {
+  std::string_view name;
+  int mass = 0;              ///< decimal exponent of its mass unit in kg (g: -3, tonne: 3)
+  int length = 0;            ///< of its length unit in m (mm: -3)
+  int time = 0;              ///< of its time unit in s (ms: -3)
+  std::string_view derived;  ///< its force, stress, energy and density units, for the reference
+
+  /// The decimal exponent of the system's unit of `dimension` in SI units (mm-ms-g: a pressure 6, 1 MPa = 10^6 Pa).
+  int exponent(const Dimension& dimension) const;
+  bool si() const { return mass == 0 && length == 0 && time == 0; }
+  /// Its length unit in m (mm: 1e-3).
+  double length_unit() const;
+};
+
+/// The systems a scene may name, SI (`m-s-kg`) first.
+const std::vector<UnitSystem>& unit_systems();
+/// The system named `name`, or nullptr.
+const UnitSystem* find_unit_system(std::string_view name);
+
 /// The value converted to the unit `key_unit` of a key (a unit as key specs write it: "Pa", "kg/m^3", "W/(m^2 K)",
 /// "degrees", "-" or "" for none): the number itself when no unit is written. A key in degrees takes degrees:
 /// `1.5708 rad` is 90. Throws UnitError when the unit is not one or has another dimension: "expected a length (m),
 /// got a pressure (GPa)".
 double to_key_unit(const NumberWithUnit& value, std::string_view key_unit);
+/// The same, with a bare number in `system`'s unit of the key's dimension (correctly rounded: the powers of ten
+/// move in the number's text).
+double to_key_unit(const NumberWithUnit& value, std::string_view key_unit, const UnitSystem& system);
 
 }  // namespace mpm::units

@@ -196,6 +196,8 @@ struct SceneDescription {
   std::string file;    ///< path of the scene file
   std::string source;  ///< the file's YAML text as read (written into every output file's field data)
   int dimension = 2;
+  /// `units:`, the unit system of the scene's bare numbers (core/units.hpp); every value here is SI.
+  std::string units = "m-s-kg";
   GridDescription grid;
   std::map<std::string, MaterialDescription> materials;
   std::vector<BodyDescription> bodies;

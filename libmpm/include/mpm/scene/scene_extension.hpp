@@ -81,4 +81,17 @@ std::vector<std::shared_ptr<Module<Dim>>> prepare_scene_extensions(const SceneDe
 template <int Dim>
 void build_scene_extensions(const SceneDescription& scene, Simulation<Dim>& simulation);
 
+/// Declares the keys of `solver:` that only the registered scheme `scheme` reads (a module's scheme: `implicit` its
+/// `solver.implicit` map), with their specs: the solver's reader allows them and refuses them with any other scheme,
+/// and the reference lists them in the table of `solver` (solver_keys(), scene_keys.hpp). The scheme's
+/// SchemeSpec::parse reads them. Called by a module's register_module().
+void register_scheme_solver_keys(const std::string& scheme, std::vector<io::KeySpec> keys);
+/// A key of `solver:` that one scheme owns.
+struct SchemeSolverKey {
+  io::KeySpec spec;
+  std::string scheme;
+};
+/// Every key registered by register_scheme_solver_keys, ordered by scheme name, then as declared.
+std::vector<SchemeSolverKey> scheme_solver_keys();
+
 }  // namespace mpm

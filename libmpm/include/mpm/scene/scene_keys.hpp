@@ -15,6 +15,10 @@ namespace mpm {
 const std::vector<io::KeySpec>& grid_keys();
 /// `output:` (src/scene/output_section.cpp), with `checkpoint:` and the common keys of `histories:` entries.
 const std::vector<io::KeySpec>& output_keys();
+/// `solver:` (src/scene/solver_section.cpp): the core's keys, then those a registered scheme owns
+/// (register_scheme_solver_keys, scene_extension.hpp), each refused with any other scheme. Built on each call: the
+/// schemes and the shape functions it lists are the registered ones.
+std::vector<io::KeySpec> solver_keys();
 /// One entry of `output.histories` (src/scene/histories_section.cpp): the keys every history kind takes.
 const std::vector<io::KeySpec>& history_keys();
 /// One entry of `bodies:` (src/scene/bodies_section.cpp).

@@ -18,6 +18,7 @@
 
 #include "mpm/core/enum_names.hpp"
 #include "mpm/core/range.hpp"
+#include "mpm/core/units.hpp"
 #include "mpm/scene/scene.hpp"
 
 namespace mpm::io {
@@ -48,6 +49,10 @@ class YamlReader {
   explicit YamlReader(std::string file) : file_(std::move(file)) {}
 
   const std::string& file() const { return file_; }
+  /// The unit system of the scene's bare numbers (`units:`; SI unless set): number(), vector() and expression()
+  /// read a bare number in the system's unit of the key's dimension and return it in the key's SI unit.
+  void set_unit_system(const units::UnitSystem& system) { system_ = &system; }
+  const units::UnitSystem& unit_system() const { return *system_; }
   /// The 1-based place of `mark` in the file (line 0 when unknown).
   SourceLocation location(const YAML::Mark& mark) const;
 
@@ -85,7 +90,9 @@ class YamlReader {
   /// A list of `dimension` numbers in `range`, padded with zeros to 3.
   std::array<double, 3> vector(const YamlValue& value, int dimension, const Range& range, std::string_view unit) const;
   /// A number or a muparser expression of `variables`, as expression text (numbers in shortest form). A number with
-  /// a unit (`-800 m/s`) is converted to the key's unit `unit` as number() does; an expression is in that unit.
+  /// a unit (`-800 m/s`) is converted to the key's unit `unit` as number() does; an expression is in that unit. In
+  /// a unit system other than SI the expression is in the system's units, of the variables x, y, z (lengths) and t
+  /// (a time) in them too: the text returned evaluates it so, in SI.
   std::string expression(const YamlValue& value, const std::vector<std::string>& variables,
                          std::string_view unit) const;
   /// `value` as a map (fails unless it is one, with plain and distinct keys).
@@ -93,6 +100,7 @@ class YamlReader {
 
  private:
   std::string file_;
+  const units::UnitSystem* system_ = &units::unit_systems().front();
 };
 
 /// A YAML map being read: finds keys, rejects unknown and duplicate ones, reports missing ones.

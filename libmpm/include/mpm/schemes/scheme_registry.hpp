@@ -1,7 +1,8 @@
 #pragma once
 /// \file scheme_registry.hpp
 /// The one registry of time-integration schemes (`solver.scheme`). A scheme is declared once by a SchemeSpec: its
-/// name and description, the keys of `solver:` it owns with their parser and a check of the whole scene, its makers
+/// name and description, the parser of the keys of `solver:` it owns (declared with their specs by
+/// register_scheme_solver_keys, scene/scene_extension.hpp) and a check of the whole scene, its makers
 /// per dimension, and its traits (scheme_traits.hpp). The core registers USL, MUSL, USF and TLMPM
 /// (src/schemes/core_schemes.cpp); an optional module registers its own from its register_module() (physics/implicit:
 /// `implicit`). The loader's list of valid schemes, its checks of what combines with what, the builder, contact, heat
@@ -31,9 +32,8 @@ template <int Dim>
 using SchemeMaker = std::unique_ptr<Scheme<Dim>> (*)(const SceneDescription& scene);
 
 struct SchemeSpec {
-  std::string name{};                      ///< the value of `solver.scheme`
-  std::string description{};               ///< one line for the scene reference
-  std::vector<std::string> solver_keys{};  ///< keys of `solver:` only this scheme reads (e.g. "implicit")
+  std::string name{};         ///< the value of `solver.scheme`
+  std::string description{};  ///< one line for the scene reference
   /// Reads the scheme's keys of `solver:` (`solver` holds what the core read so far: shape function, velocity
   /// transfer) and refuses what the scheme does not support, through the reader (file:line:column: key). Called
   /// before the time step is read. The result is stored in SolverDescription::scheme_options. Null: no keys.
@@ -66,8 +66,6 @@ std::vector<std::string> scheme_names();
 /// The names of the registered schemes whose traits satisfy `accept`, as "a, b or c" (for refusals that say
 /// what would work).
 std::string scheme_names_where(const std::function<bool(const SchemeTraits&)>& accept);
-/// Every key of `solver:` some registered scheme owns, with its scheme: {key, scheme name}.
-std::vector<std::pair<std::string, std::string>> scheme_solver_keys();
 
 /// The scheme of a validated scene, made by the maker of the scheme it names; throws std::invalid_argument when
 /// that scheme is not registered or has no maker in this dimension.
