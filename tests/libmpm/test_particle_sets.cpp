@@ -170,5 +170,65 @@ TEST_P(HeldSetReaction, IsTheForceOnTheBodyAtEveryStep) {
 INSTANTIATE_TEST_SUITE_P(Transfers, HeldSetReaction,
                          ::testing::Values("flip_fraction: 1", "flip_fraction: 0", "velocity_transfer: apic"));
 
+// A soil column at rest under gravity, laterally confined (slip walls, fixed base), plane strain: its geostatic
+// stress is sigma_yy = -rho g (H - y), sigma_xx = sigma_zz = K0 sigma_yy with K0 = nu / (1 - nu). Started from it
+// (`initial_stress` on a set of the whole column) the column stays at rest; started from zero stress it settles by
+// rho g H^2 / (2 M) at its top (M the constrained modulus) and rings about that. @MODEL@ chooses the material.
+const std::string geostatic = R"yaml(
+dimension: 2
+grid: {origin: [0, 0], extent: [1, 2.5], cell_size: 0.1, boundary: {x_min: slip, x_max: slip, y_min: fixed}}
+materials:
+  soil: {model: linear_elastic, density: 2000, youngs_modulus: 1.0e7, poisson_ratio: 0.3}
+bodies:
+  - {name: column, material: soil, shape: {type: box, min: [0, 0], max: [1, 2]}}
+sets:
+  all: {body: column}
+conditions:
+  - {set: all, initial_stress: ["-0.3 / 0.7 * 2000 * 10 * (2 - y)", "-2000 * 10 * (2 - y)",
+                                "-0.3 / 0.7 * 2000 * 10 * (2 - y)", 0]}
+solver: {scheme: musl, cfl: 0.5, gravity: [0, -10], end_time: 0.1}
+)yaml";
+
+struct ColumnState {
+  double largest_displacement = 0;  ///< m, over the particles and the steps
+  double largest_stress_change = 0;  ///< Pa, |sigma - sigma(0)| over the particles and components, at the end
+  double energy_change = 0;          ///< of E(t) - E(0), J/m, largest
+};
+
+ColumnState run_column(const std::string& yaml) {
+  auto m = measured<2>(yaml);
+  const auto& p = m->sim->bodies()[0].particles;
+  const std::vector<SymTensor<2>> stress0 = p.stress;
+  const double e0 = m->sim->energy().total();
+  ColumnState s;
+  m->sim->run([&](const Simulation<2>& sim) {
+    const auto& q = sim.bodies()[0].particles;
+    for (Index i = 0; i < q.size(); ++i)
+      s.largest_displacement =
+          std::max(s.largest_displacement, (q.x[i] - q.field(keys::reference_position<2>)[i]).norm());
+    s.energy_change = std::max(s.energy_change, std::abs(sim.energy().total() - e0));
+  });
+  for (Index i = 0; i < p.size(); ++i)
+    for (int k = 0; k < 4; ++k)
+      s.largest_stress_change = std::max(s.largest_stress_change, std::abs(p.stress[i].c[k] - stress0[i].c[k]));
+  return s;
+}
+
+TEST(ParticleSets, InitialStressKeepsAGeostaticColumnAtRest) {
+  const ColumnState started = run_column(geostatic);
+  std::string unstressed = geostatic;
+  unstressed.replace(unstressed.find("conditions:"), unstressed.find("solver:") - unstressed.find("conditions:"), "");
+  const ColumnState settling = run_column(unstressed);
+  const double rho_g_H = 2000 * 10 * 2.0, M = 1e7 * 0.7 / (1.3 * 0.4);
+  const double settlement = 2000 * 10 * 2.0 * 2.0 / (2 * M);
+  std::printf("[ measured ] from the geostatic stress: displacement %.3g m, stress change %.3g Pa, energy %.3g J/m; "
+              "from zero stress: displacement %.3g m (static settlement %.3g m)\n",
+              started.largest_displacement, started.largest_stress_change, started.energy_change,
+              settling.largest_displacement, settlement);
+  EXPECT_GT(settling.largest_displacement, 0.5 * settlement);
+  EXPECT_LT(started.largest_displacement, 1e-3 * settlement);
+  EXPECT_LT(started.largest_stress_change, 1e-3 * rho_g_H);
+}
+
 }  // namespace
 }  // namespace mpm::test

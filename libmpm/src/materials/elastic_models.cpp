@@ -25,18 +25,15 @@ std::unique_ptr<Material<Dim>> make_elastic(const MaterialDescription& d) {
 }
 
 template <class Law>
-MaterialModel elastic_model(std::string description, ThermalExpansion expansion) {
-  return {Law::key,
-          std::move(description),
-          elastic_parameters(),
-          {},
-          &make_elastic<1, Law>,
-          &make_elastic<2, Law>,
-          &make_elastic<3, Law>,
-          expansion,
-          /*implicit_stress=*/false,
-          /*tracks_plastic_strain=*/false,
-          /*damage_enabled_by=*/{}};
+MaterialModel elastic_model(std::string description, ThermalExpansion expansion, bool takes_initial_stress) {
+  return {.key = Law::key,
+          .description = std::move(description),
+          .parameters = elastic_parameters(),
+          .make_1d = &make_elastic<1, Law>,
+          .make_2d = &make_elastic<2, Law>,
+          .make_3d = &make_elastic<3, Law>,
+          .thermal_expansion = expansion,
+          .takes_initial_stress = takes_initial_stress};
 }
 
 }  // namespace
@@ -46,9 +43,9 @@ std::vector<MaterialModel> elastic_material_models() {
       // thermal stress -3 K alpha (T - T0) I (eq. 5.26) from its isotropic constants, added by heat conduction
       elastic_model<LinearElastic>(
           "Isotropic linear elasticity, incremental (hypoelastic) form B.5 with the Jaumann rate",
-          ThermalExpansion::by_heat_conduction),
+          ThermalExpansion::by_heat_conduction, /*takes_initial_stress=*/true),
       elastic_model<NeoHookean>("Compressible Neo-Hookean hyperelasticity, eq. B.6-B.7 (Bonet & Wood)",
-                                ThermalExpansion::unsupported),
+                                ThermalExpansion::unsupported, /*takes_initial_stress=*/false),
   };
 }
 

@@ -1,12 +1,13 @@
 // `sets:` and `conditions:` (docs/scene-reference.md#sets): named particle sets, chosen by body, by a region of
 // their initial positions and by id, and what is prescribed on them (held velocity components, a total force, an
-// initial velocity). Membership is decided once at t = 0 (sets/particle_sets.hpp); the conditions are applied by
+// initial velocity, an initial stress). Membership is decided once at t = 0 (sets/particle_sets.hpp); the conditions are applied by
 // the set conditions module (sets/set_conditions.hpp).
 #include <fmt/format.h>
 
 #include <limits>
 
 #include "mpm/body_shape/shape_kind.hpp"
+#include "mpm/materials/material_registry.hpp"
 #include "mpm/scene/scene_keys.hpp"
 #include "mpm/scene/spec_map.hpp"
 #include "mpm/sets/particle_sets.hpp"
@@ -68,6 +69,16 @@ const std::vector<io::KeySpec>& condition_keys() {
        .absent = "the body's `velocity`",
        .description = "velocity of the set's particles at t = 0, expressions of x, y, z (replaces the body's)",
        .type_text = "list of `dimension` expressions"},
+      {.name = "initial_stress",
+       .type = KeyType::list,
+       .unit = "Pa",
+       .absent = "zero stress",
+       .description = "Cauchy stress of the set's particles at t = 0, expressions of x, y, z, in the order of the "
+                      "output field `stress` (xx, yy, zz in 1D; xx, yy, zz, xy in 2D, axisymmetric rr, zz, "
+                      "thetatheta, rz; xx, yy, zz, xy, yz, xz in 3D): e.g. a geostatic state. For models whose "
+                      "stress is their state (hypoelastic: the models marked so in [materials](#materials)); the "
+                      "others refuse it",
+       .type_text = "list of 3, 4 or 6 expressions"},
   };
   return keys;
 }
@@ -149,6 +160,36 @@ std::array<std::optional<std::string>, 3> read_components(const YamlReader& read
   return out;
 }
 
+/// `initial_stress`: the components of the stress field in this dimension, on bodies whose model takes an initial
+/// stress (MaterialModel::takes_initial_stress).
+std::array<std::optional<std::string>, 6> read_initial_stress(const YamlReader& reader, const YamlValue& value,
+                                                              const SceneDescription& scene, int set) {
+  const std::size_t count = scene.dimension == 1 ? 3 : scene.dimension == 2 ? 4 : 6;
+  const char* const order = scene.dimension == 1                                  ? "xx, yy, zz"
+                            : scene.grid.coordinates == Coordinates::axisymmetric ? "rr, zz, thetatheta, rz"
+                            : scene.dimension == 2                                ? "xx, yy, zz, xy"
+                                                                                  : "xx, yy, zz, xy, yz, xz";
+  const auto items = reader.list(value, count, "components", order);
+  std::array<std::optional<std::string>, 6> out;
+  for (std::size_t k = 0; k < count; ++k) out[k] = reader.expression(items[k], {"x", "y", "z"}, "Pa");
+  std::vector<int> bodies = scene.sets[static_cast<std::size_t>(set)].bodies;
+  if (bodies.empty())
+    for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b) bodies.push_back(b);
+  for (const int b : bodies) {
+    const BodyDescription& body = scene.bodies[static_cast<std::size_t>(b)];
+    const MaterialDescription& material = scene.materials.at(body.material);
+    if (const MaterialModel* model = find_material_model(material.model); !model || !model->takes_initial_stress)
+      reader.fail(value, fmt::format("body '{}' of the set has material '{}' of model {}, whose stress follows from "
+                                     "its deformation (it has no state to start from); an initial stress is for "
+                                     "the models whose stress is their state: {}",
+                                     body.name, material.name, material.model,
+                                     material_model_names_where([](const MaterialModel& m) {
+                                       return m.takes_initial_stress;
+                                     })));
+  }
+  return out;
+}
+
 SetConditionDescription read_condition(const YamlReader& reader, const YamlValue& item, const SceneDescription& scene) {
   const io::SpecMap map(reader, item, condition_keys());
   SetConditionDescription c;
@@ -162,8 +203,9 @@ SetConditionDescription read_condition(const YamlReader& reader, const YamlValue
   const std::string name = reader.choice(set, names);
   c.set = static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
   const auto velocity = map.find("velocity"), force = map.find("force"), initial = map.find("initial_velocity");
-  if (!velocity && !force && !initial)
-    reader.fail(item, "give what the condition prescribes: velocity, force or initial_velocity");
+  const auto stress = map.find("initial_stress");
+  if (!velocity && !force && !initial && !stress)
+    reader.fail(item, "give what the condition prescribes: velocity, force, initial_velocity or initial_stress");
   const int dim = scene.dimension;
   if (velocity) {
     c.velocity = read_components(reader, *velocity, dim, {"x", "y", "z", "t"}, "m/s", true);
@@ -176,6 +218,7 @@ SetConditionDescription read_condition(const YamlReader& reader, const YamlValue
   }
   if (force) c.force = read_components(reader, *force, dim, {"t"}, "N", false);
   if (initial) c.initial_velocity = read_components(reader, *initial, dim, {"x", "y", "z"}, "m/s", false);
+  if (stress) c.initial_stress = read_initial_stress(reader, *stress, scene, c.set);
   if (velocity && force)
     for (int d = 0; d < dim; ++d)
       if (c.velocity[static_cast<std::size_t>(d)] && c.force[static_cast<std::size_t>(d)])

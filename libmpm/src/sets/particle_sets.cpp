@@ -46,6 +46,23 @@ void set_initial_velocity(const SetConditionDescription& c, std::uint32_t mask, 
   }
 }
 
+/// The particles of the set get the condition's initial stress (expressions of x, y, z; the stress field's order).
+template <int Dim>
+void set_initial_stress(const SetConditionDescription& c, std::uint32_t mask, ParticleSet<Dim>& p) {
+  constexpr auto components = static_cast<std::size_t>(SymTensor<Dim>::size);
+  std::array<std::optional<Expression>, components> s;
+  for (std::size_t k = 0; k < components; ++k)
+    if (const auto& text = c.initial_stress[k]) s[k].emplace(*text, std::vector<std::string>{"x", "y", "z"});
+  const auto& bits = p.field(keys::particle_sets);
+  for (Index i = 0; i < p.size(); ++i) {
+    if ((bits[static_cast<std::size_t>(i)] & mask) == 0) continue;
+    Vec3 x = Vec3::Zero();
+    x.template head<Dim>() = p.x[i];
+    for (std::size_t k = 0; k < components; ++k)
+      if (const auto& e = s[k]) p.stress[i].c[k] = (*e)(x[0], x[1], x[2], 0);
+  }
+}
+
 }  // namespace
 
 template <int Dim>
@@ -66,6 +83,9 @@ void mark_particle_sets(const SceneDescription& scene, Body<Dim>& body) {
   for (const auto& c : scene.conditions)
     if (std::any_of(c.initial_velocity.begin(), c.initial_velocity.end(), [](const auto& v) { return v.has_value(); }))
       set_initial_velocity(c, set_bit(c.set), p);
+  for (const auto& c : scene.conditions)
+    if (std::any_of(c.initial_stress.begin(), c.initial_stress.end(), [](const auto& s) { return s.has_value(); }))
+      set_initial_stress(c, set_bit(c.set), p);
 }
 
 namespace {

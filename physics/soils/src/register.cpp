@@ -121,7 +121,8 @@ MaterialModel drucker_prager_model() {
           .make_1d = &make_soil<1, DruckerPrager>,
           .make_2d = &make_soil<2, DruckerPrager>,
           .make_3d = &make_soil<3, DruckerPrager>,
-          .tracks_plastic_strain = true};
+          .tracks_plastic_strain = true,
+          .takes_initial_stress = true};
 }
 
 MaterialModel mohr_coulomb_model() {
@@ -135,7 +136,8 @@ MaterialModel mohr_coulomb_model() {
           .make_1d = &make_soil<1, MohrCoulomb>,
           .make_2d = &make_soil<2, MohrCoulomb>,
           .make_3d = &make_soil<3, MohrCoulomb>,
-          .tracks_plastic_strain = true};
+          .tracks_plastic_strain = true,
+          .takes_initial_stress = true};
 }
 
 /// plastic_strain (shared with the plasticity module: the same unit and meaning) and plastic_volumetric_strain.

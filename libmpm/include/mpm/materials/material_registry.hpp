@@ -113,6 +113,10 @@ struct MaterialModel {
   /// The parameter whose presence gives the model Johnson-Cook damage (output field `damage`, e.g. "damage_d1");
   /// empty: no damage. The failure criterion `damage` is refused for a material without it.
   std::string damage_enabled_by{};
+  /// Its stress is its state, updated incrementally (a hypoelastic law): an initial stress (a set's
+  /// `initial_stress`) is where it starts. A model whose stress follows from F or J (hyperelastic, fluids, an
+  /// equation of state for the pressure) has no place for one and refuses it.
+  bool takes_initial_stress = false;
   /// The kind of matter it describes (for the plausibility of its density).
   MaterialPhase phase = MaterialPhase::solid;
 };

@@ -122,6 +122,9 @@ struct SetConditionDescription {
   std::array<std::optional<std::string>, 3> force;
   /// The initial velocity of the set's particles, m/s, expressions of x, y, z (replaces the body's).
   std::array<std::optional<std::string>, 3> initial_velocity;
+  /// The initial Cauchy stress of the set's particles, Pa, expressions of x, y, z, in the stress field's component
+  /// order (xx, yy, zz, xy, yz, xz; the first 3, 4 or 6 in 1D, 2D, 3D): the state a hypoelastic model starts from.
+  std::array<std::optional<std::string>, 6> initial_stress;
   SourceLocation where;
   std::string path;  ///< its key path for messages, e.g. "conditions[1]"
 };
