@@ -38,11 +38,12 @@ std::vector<ParameterSpec> newtonian_parameters() {
                                   "alone); 0: the full F (the cpGIMP domains follow its stretch), reset to its volume "
                                   "only for a particle so distorted that det F would be round-off (eps |F|^dim > "
                                   "1e-8 J: in a splash F's entries grow without bound)"),
-      ParameterSpec::with_default(smoothing_key, "-", 0, Range::closed(0, 1),
-                                  "1: the pressure reads the node-averaged volume ratio, J mapped to the nodes by mass "
-                                  "and interpolated back with hats before every stress update (docs/theory.md eq. "
-                                  "PS.1; the stored energy it removes is booked as `smoothed_energy`); 0: each "
-                                  "particle's own J. Explicit musl, usl and usf only"),
+      ParameterSpec::with_default(
+          smoothing_key, "-", 0, Range::closed(0, 1),
+          "1: the pressure reads the node-averaged volume ratio, J mapped to the nodes by mass "
+          "and interpolated back with hats before every stress update (docs/theory.md eq. "
+          "PS.1; the stored energy it removes is summed in energy.csv's `smoothed_energy`); 0: each "
+          "particle's own J. Explicit musl, usl and usf only"),
   };
 }
 
