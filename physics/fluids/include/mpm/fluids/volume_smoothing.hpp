@@ -62,19 +62,17 @@ class VolumeSmoothing final : public Module<Dim> {
       mass_.assign(static_cast<std::size_t>(nodes), 0);
       volume_.assign(static_cast<std::size_t>(nodes), 0);
     }
-    ExactSum removed;
+    // the strain energy of the smoothed bodies before and after, each summed exactly over particles and ranks, so
+    // that their difference has the same bits on any rank count
+    ExactSum energy[2];
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
-      Body<Dim>& b = body(ctx, k);
-      if (b.particles.size() == 0) continue;
-      ExactSum before, after;
-      b.material->add_strain_energy(b.particles, before);
+      Body<Dim>& b = body(ctx, k);  // a rank without particles of the body joins the scatter's exchange too
+      b.material->add_strain_energy(b.particles, energy[0]);
       smooth(ctx, b, start_[k]);
-      b.material->add_strain_energy(b.particles, after);
-      removed += before.value();
-      removed += -after.value();
+      b.material->add_strain_energy(b.particles, energy[1]);
     }
-    if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(&removed, 1));
-    removed_ += removed.value();
+    if (ctx.comm) ctx.comm->sum(std::span<ExactSum>(energy, 2));
+    removed_ += energy[0].value() - energy[1].value();
   }
 
   /// J: the stored energy the averaging has removed since t = 0 (eq. PS.3), the same on every rank: energy.csv's
