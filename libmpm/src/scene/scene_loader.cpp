@@ -88,6 +88,7 @@ std::vector<io::KeySpec> scene_keys() {
     if (key.name == "solver") key.keys = solver_keys();
   for (const auto& name : scene_extension_keys()) {
     const SceneExtension& extension = *find_scene_extension(name);
+    if (!extension.parse) continue;  // a module without a section (prepared from the materials' keys)
     keys.push_back({.name = name,
                     .type = io::KeyType::map,
                     .description = extension.description,
@@ -130,7 +131,7 @@ SceneDescription parse_scene(const std::string& yaml_text, const std::string& fi
   scene.solver = sections::read_solver(reader, top.required("solver"), scene);
   if (const auto output = top.find("output")) scene.output = sections::read_output(reader, *output, scene);
   for (const auto& key : scene_extension_keys())  // module sections last: they may refer to bodies
-    if (const auto section = top.find(key))
+    if (const auto section = find_scene_extension(key)->parse ? top.find(key) : std::nullopt)
       scene.extensions[key] = find_scene_extension(key)->parse(reader, *section, scene);
   for (const auto& key : scene_extension_keys())  // then the defaults a present section implies for the others
     if (const auto complete = find_scene_extension(key)->complete; complete && scene.extensions.count(key))

@@ -8,6 +8,7 @@
 #include "mpm/fluids/tait_fluid.hpp"
 #include "mpm/materials/material_batch.hpp"
 #include "mpm/materials/material_registry.hpp"
+#include "volume_smoothing_module.hpp"
 
 namespace mpm::fluids {
 namespace {
@@ -37,6 +38,12 @@ std::vector<ParameterSpec> newtonian_parameters() {
                                   "alone); 0: the full F (the cpGIMP domains follow its stretch), reset to its volume "
                                   "only for a particle so distorted that det F would be round-off (eps |F|^dim > "
                                   "1e-8 J: in a splash F's entries grow without bound)"),
+      ParameterSpec::with_default(
+          smoothing_key, "-", 0, Range::closed(0, 1),
+          "1: the pressure reads the node-averaged volume ratio, J mapped to the nodes by mass "
+          "and interpolated back with hats before every stress update (docs/theory.md eq. "
+          "PS.1; the stored energy it removes is summed in energy.csv's `smoothed_energy`); 0: each "
+          "particle's own J. Explicit musl, usl and usf only"),
   };
 }
 
@@ -62,6 +69,8 @@ MaterialModel newtonian_model() {
           .check = [](const std::map<std::string, double>& p) -> std::optional<ParameterError> {
             if (const double v = p.at("volumetric_deformation"); v != 0 && v != 1)
               return ParameterError{"volumetric_deformation", "must be 0 (the full F) or 1 (its volume only)"};
+            if (const double v = p.at(smoothing_key); v != 0 && v != 1)
+              return ParameterError{smoothing_key, "must be 0 (each particle's J) or 1 (the node-averaged J)"};
             return std::nullopt;
           },
           .make_1d = &make_newtonian_fluid<1>,
@@ -112,6 +121,7 @@ void register_module() {
     register_material_model(newtonian_model());
     register_material_model(ideal_gas_model());
     register_output_fields();
+    register_volume_smoothing();
   });
 }
 

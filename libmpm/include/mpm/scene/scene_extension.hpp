@@ -49,6 +49,8 @@ using SectionPreparer = std::shared_ptr<Module<Dim>> (*)(const SceneDescription&
 
 struct SceneExtension {
   std::string key;  ///< top-level YAML key
+  /// Null: the module has no section (no top-level key; its preparer reads the materials' keys, e.g. the fluids'
+  /// pressure_smoothing); only prepare_* are then called.
   SectionParser parse = nullptr;
   SectionCompleter complete = nullptr;
   SectionPreparer<1> prepare_1d = nullptr;
