@@ -13,9 +13,9 @@ TEST(UnitSystem, TaylorAnvilInMmMsGWritesTheSameBitsAsInSi) {
   const auto dir = cli::scratch("unit_system");
   const path examples = path(MPM_SOURCE_DIR) / "examples" / "05_taylor_anvil";
   for (const char* scene : {"musl", "musl_mm_ms_g"}) {
-    const auto r = cli::mpm("run " + (examples / (std::string(scene) + ".yaml")).string() + " --steps 20 -o " +
-                                (dir / scene).string(),
-                            dir);
+    const auto r = cli::mpm(
+        "run " + (examples / (std::string(scene) + ".yaml")).string() + " --steps 20 -o " + (dir / scene).string(),
+        dir);
     ASSERT_EQ(r.status, 0) << scene << ": " << r.err;
   }
   const auto diff = cli::mpm("diff " + (dir / "musl").string() + " " + (dir / "musl_mm_ms_g").string(), dir);

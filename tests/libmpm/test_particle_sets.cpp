@@ -190,7 +190,7 @@ solver: {scheme: musl, cfl: 0.5, gravity: [0, -10], end_time: 0.1}
 )yaml";
 
 struct ColumnState {
-  double largest_displacement = 0;  ///< m, over the particles and the steps
+  double largest_displacement = 0;   ///< m, over the particles and the steps
   double largest_stress_change = 0;  ///< Pa, |sigma - sigma(0)| over the particles and components, at the end
   double energy_change = 0;          ///< of E(t) - E(0), J/m, largest
 };
@@ -221,10 +221,11 @@ TEST(ParticleSets, InitialStressKeepsAGeostaticColumnAtRest) {
   const ColumnState settling = run_column(unstressed);
   const double rho_g_H = 2000 * 10 * 2.0, M = 1e7 * 0.7 / (1.3 * 0.4);
   const double settlement = 2000 * 10 * 2.0 * 2.0 / (2 * M);
-  std::printf("[ measured ] from the geostatic stress: displacement %.3g m, stress change %.3g Pa, energy %.3g J/m; "
-              "from zero stress: displacement %.3g m (static settlement %.3g m)\n",
-              started.largest_displacement, started.largest_stress_change, started.energy_change,
-              settling.largest_displacement, settlement);
+  std::printf(
+      "[ measured ] from the geostatic stress: displacement %.3g m, stress change %.3g Pa, energy %.3g J/m; "
+      "from zero stress: displacement %.3g m (static settlement %.3g m)\n",
+      started.largest_displacement, started.largest_stress_change, started.energy_change, settling.largest_displacement,
+      settlement);
   EXPECT_GT(settling.largest_displacement, 0.5 * settlement);
   EXPECT_LT(started.largest_displacement, 1e-3 * settlement);
   EXPECT_LT(started.largest_stress_change, 1e-3 * rho_g_H);

@@ -1,7 +1,7 @@
 // `sets:` and `conditions:` (docs/scene-reference.md#sets): named particle sets, chosen by body, by a region of
 // their initial positions and by id, and what is prescribed on them (held velocity components, a total force, an
-// initial velocity, an initial stress). Membership is decided once at t = 0 (sets/particle_sets.hpp); the conditions are applied by
-// the set conditions module (sets/set_conditions.hpp).
+// initial velocity, an initial stress). Membership is decided once at t = 0 (sets/particle_sets.hpp); the conditions
+// are applied by the set conditions module (sets/set_conditions.hpp).
 #include <fmt/format.h>
 
 #include <limits>
@@ -179,13 +179,13 @@ std::array<std::optional<std::string>, 6> read_initial_stress(const YamlReader& 
     const BodyDescription& body = scene.bodies[static_cast<std::size_t>(b)];
     const MaterialDescription& material = scene.materials.at(body.material);
     if (const MaterialModel* model = find_material_model(material.model); !model || !model->takes_initial_stress)
-      reader.fail(value, fmt::format("body '{}' of the set has material '{}' of model {}, whose stress follows from "
-                                     "its deformation (it has no state to start from); an initial stress is for "
-                                     "the models whose stress is their state: {}",
-                                     body.name, material.name, material.model,
-                                     material_model_names_where([](const MaterialModel& m) {
-                                       return m.takes_initial_stress;
-                                     })));
+      reader.fail(
+          value,
+          fmt::format("body '{}' of the set has material '{}' of model {}, whose stress follows from "
+                      "its deformation (it has no state to start from); an initial stress is for "
+                      "the models whose stress is their state: {}",
+                      body.name, material.name, material.model,
+                      material_model_names_where([](const MaterialModel& m) { return m.takes_initial_stress; })));
   }
   return out;
 }
