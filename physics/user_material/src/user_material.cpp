@@ -14,6 +14,7 @@
 #include "mpm/user_material/abaqus_abi.hpp"
 #include "mpm/user_material/corotational.hpp"
 #include "mpm_user_material.h"
+#include "umat_call.hpp"
 
 namespace mpm::user_material {
 
@@ -78,10 +79,6 @@ void store_row_major(const Mat3& m, Real* a) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) a[3 * r + c] = m(r, c);
 }
-void store_column_major(const Mat3& m, Real* a) {
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) a[r + 3 * c] = m(r, c);
-}
 
 bool all_finite(const double* a, std::size_t n) {
   double sum = 0;
@@ -94,15 +91,9 @@ bool all_finite(const double* a, std::size_t n) {
 /// The arrays of one call, kept per thread (a block of at most max_block points).
 template <int Dim>
 struct UserMaterial<Dim>::Scratch {
-  struct Point {
-    Mat3 F_old, F_new, R_old, R_new, D, W, stress_old;  ///< stress_old: global frame
-    Real J = 1, q[4] = {1, 0, 0, 0}, temperature = 0, density = 0, length = 0;
-    Real x[3] = {0, 0, 0};
-  };
-  std::vector<Point> points;
+  std::vector<PointKinematics> points;
   std::vector<double> coord, length, density, strain_inc, spin_inc, temp, stretch_old, stretch_new, defgrad_old,
       defgrad_new, rotation_new, stress_old, stress_new, state_old, state_new, energy_old[2], energy_new[2], field;
-  std::vector<double> ddsdde;
   std::vector<Real*> sdv;
 };
 
@@ -193,6 +184,35 @@ void UserMaterial<Dim>::fail(const ParticleSet<Dim>& p, Index i, const std::stri
 }
 
 template <int Dim>
+PointKinematics UserMaterial<Dim>::kinematics_of(const ParticleSet<Dim>& p, Index i, const MatU<Dim>& L,
+                                                 Real hoop_stretch, Real hoop_rate, Real temperature) const {
+  PointKinematics pt;
+  const UserPointState& st = p.field(keys::user_point)[static_cast<std::size_t>(i)];
+  pt.F_old = row_major(st.F_old);
+  pt.F_new = embed<Dim>(Mat<Dim>(p.F[i]), hoop_stretch);
+  const Mat3 Lf = embed<Dim>(Mat<Dim>(L), hoop_rate);
+  pt.D = symmetric_part(Lf);
+  pt.W = 0.5 * (Lf - Lf.transpose());
+  pt.J = p.F[i].determinant() * hoop_stretch;
+  std::copy(st.q, st.q + 4, pt.q);
+  if constexpr (Dim == 3) {
+    pt.R_old = rotation_of(st.q);
+    pt.R_new = polar_rotation_3d(pt.F_new, pt.q);
+  } else if constexpr (Dim == 2) {
+    pt.R_old = polar_rotation_2d(pt.F_old);
+    pt.R_new = polar_rotation_2d(pt.F_new);
+  } else {
+    pt.R_old = pt.R_new = Mat3::Identity();
+  }
+  pt.stress_old = p.stress[i].full();
+  pt.temperature = temperature;
+  pt.density = params_.density / pt.J;
+  pt.length = std::pow(std::abs(p.volume0[i] * pt.J), Real(1) / Dim);
+  for (int d = 0; d < Dim; ++d) pt.x[d] = p.x[i][d];
+  return pt;
+}
+
+template <int Dim>
 WaveSpeedBound<Dim> UserMaterial<Dim>::update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L,
                                                      Real dt) {
   thread_local Scratch scratch;  // a block's arrays, reused by the thread's next blocks
@@ -225,88 +245,37 @@ void UserMaterial<Dim>::update_chunk(ParticleSet<Dim>& p, Index begin, Index end
   s.points.resize(static_cast<std::size_t>(n));
   for (int b = 0; b < n; ++b) {
     const Index i = begin + b;
-    auto& pt = s.points[static_cast<std::size_t>(b)];
-    const UserPointState& st = state[i];
     Real hoop_stretch = 1, hoop_rate = 0;
     if constexpr (Dim == 2)
       if (hoop) {
         hoop_stretch = hoop.stretch[i];
         hoop_rate = hoop.rate[i];
       }
-    pt.F_old = row_major(st.F_old);
-    pt.F_new = embed<Dim>(Mat<Dim>(p.F[i]), hoop_stretch);
-    const Mat3 Lf = embed<Dim>(Mat<Dim>(L[b]), hoop_rate);
-    pt.D = symmetric_part(Lf);
-    pt.W = 0.5 * (Lf - Lf.transpose());
-    pt.J = p.F[i].determinant() * hoop_stretch;
-    std::copy(st.q, st.q + 4, pt.q);
-    if constexpr (Dim == 3) {
-      pt.R_old = rotation_of(st.q);
-      pt.R_new = polar_rotation_3d(pt.F_new, pt.q);
-    } else if constexpr (Dim == 2) {
-      pt.R_old = polar_rotation_2d(pt.F_old);
-      pt.R_new = polar_rotation_2d(pt.F_new);
-    } else {
-      pt.R_old = pt.R_new = Mat3::Identity();
-    }
-    pt.stress_old = p.stress[i].full();
-    pt.temperature = temperature ? temperature[i] : 0;
-    pt.density = params_.density / pt.J;
-    pt.length = std::pow(std::abs(p.volume0[i] * pt.J), Real(1) / Dim);
-    for (int d = 0; d < Dim; ++d) pt.x[d] = p.x[i][d];
+    s.points[static_cast<std::size_t>(b)] =
+        kinematics_of(p, i, L[b], hoop_stretch, hoop_rate, temperature ? temperature[i] : 0);
   }
 
   // 2. The call, through the interface's arrays; 3. the results checked and stored.
   if (spec.interface == Interface::umat) {
-    const int ndi = 3, nshr = Dim == 3 ? 3 : 1, ntens = ndi + nshr;
-    const auto umat = reinterpret_cast<UmatFunction>(plugin_->entry);
-    s.ddsdde.assign(static_cast<std::size_t>(ntens * ntens), 0.0);
-    s.state_new.resize(static_cast<std::size_t>(std::max(nstatev, 1)));
-    const double* props = nprops ? spec.properties.data() : s.ddsdde.data();
     for (int b = 0; b < n; ++b) {
       const Index i = begin + b;
-      const auto& pt = s.points[static_cast<std::size_t>(b)];
       UserPointState& st = state[i];
-      const Mat3 dR = pt.R_new * pt.R_old.transpose();
-      const Mat3 sigma = dR * pt.stress_old * dR.transpose();
-      const Mat3 eps = dR * symmetric_from(umat_pairs, 6, [&](int k) { return st.strain[k]; }, 2) * dR.transpose();
-      const Mat3 d_eps = pt.D * dt;
-      double stress[6], stran[6], dstran[6];
-      for (int k = 0; k < ntens; ++k) {
-        const Real shear = k < 3 ? 1 : 2;
-        stress[k] = sigma(umat_pairs[k][0], umat_pairs[k][1]);
-        stran[k] = shear * eps(umat_pairs[k][0], umat_pairs[k][1]);
-        dstran[k] = shear * d_eps(umat_pairs[k][0], umat_pairs[k][1]);
-      }
-      double drot[9], dfgrd0[9], dfgrd1[9];
-      store_column_major(dR, drot);
-      store_column_major(pt.F_old, dfgrd0);
-      store_column_major(pt.F_new, dfgrd1);
-      for (int k = 0; k < nstatev; ++k) s.state_new[static_cast<std::size_t>(k)] = s.sdv[k][i];
-      double sse = st.energy[0], spd = st.energy[1], scd = st.energy[2], rpl = 0, drpldt = 0, pnewdt = 1;
-      double ddsddt[6] = {}, drplde[6] = {};
-      std::fill(s.ddsdde.begin(), s.ddsdde.end(), 0.0);
-      const double time[2] = {st.time, st.time};
-      const double temp = pt.temperature, dtemp = 0, predef = 0, dpred = 0;
-      const int noel = static_cast<int>(p.id[i]) + 1, npt = 1, layer = 1, kspt = 1, kstep = 1;
-      const int kinc = static_cast<int>(st.increments) + 1;
-      umat(stress, s.state_new.data(), s.ddsdde.data(), &sse, &spd, &scd, &rpl, ddsddt, drplde, &drpldt, stran, dstran,
-           time, &dt, &temp, &dtemp, &predef, &dpred, plugin_->cmname.data(), &ndi, &nshr, &ntens, &nstatev, props,
-           &nprops, pt.x, drot, &pnewdt, &pt.length, dfgrd0, dfgrd1, &noel, &npt, &layer, &kspt, &kstep, &kinc,
-           cmname_length);
-      if (!all_finite(stress, static_cast<std::size_t>(ntens)))
+      UmatCall u(Dim, s.points[static_cast<std::size_t>(b)], st, p.id[i], dt);
+      u.statev.resize(static_cast<std::size_t>(nstatev));
+      for (int k = 0; k < nstatev; ++k) u.statev[static_cast<std::size_t>(k)] = s.sdv[k][i];
+      u.call(*plugin_);
+      if (!all_finite(u.stress, static_cast<std::size_t>(u.ntens)))
         fail(p, i, fmt::format("the subroutine returned a stress that is not finite, STRESS = ({})",
-                               fmt::join(stress, stress + ntens, ", ")));
-      if (!all_finite(s.state_new.data(), static_cast<std::size_t>(nstatev)))
+                               fmt::join(u.stress, u.stress + u.ntens, ", ")));
+      if (!all_finite(u.statev.data(), u.statev.size()))
         fail(p, i, "the subroutine returned state variables (STATEV) that are not finite");
-      const Mat3 sigma_new = symmetric_from(umat_pairs, ntens, [&](int k) { return stress[k]; });
-      p.stress[i] = SymTensor<Dim>::from(sigma_new);
-      for (int k = 0; k < nstatev; ++k) s.sdv[k][i] = s.state_new[static_cast<std::size_t>(k)];
-      const Mat3 eps_new = eps + d_eps;
+      p.stress[i] = SymTensor<Dim>::from(symmetric_from(umat_pairs, u.ntens, [&](int k) { return u.stress[k]; }));
+      for (int k = 0; k < nstatev; ++k) s.sdv[k][i] = u.statev[static_cast<std::size_t>(k)];
+      const Mat3 eps_new = u.strain_rotated + u.strain_increment;
       for (int k = 0; k < 6; ++k) st.strain[k] = (k < 3 ? 1 : 2) * eps_new(umat_pairs[k][0], umat_pairs[k][1]);
-      st.energy[0] = sse;
-      st.energy[1] = spd;
-      st.energy[2] = scd;
+      st.energy[0] = u.sse;
+      st.energy[1] = u.spd;
+      st.energy[2] = u.scd;
     }
   } else {
     // VUMAT (column-major, nblock x ncomp) and C (point-major) share the arrays; `at(b, c, m)` is the place of

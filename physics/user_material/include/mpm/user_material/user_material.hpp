@@ -55,6 +55,13 @@ struct Plugin {
   static std::shared_ptr<const Plugin> load(const UserMaterialSpec& spec);
 };
 
+/// The kinematics of one point over one step (what every interface's arguments are made of).
+struct PointKinematics {
+  Mat3 F_old, F_new, R_old, R_new, D, W, stress_old;  ///< stress_old: the Cauchy stress at t_n, global frame
+  Real J = 1, q[4] = {1, 0, 0, 0}, temperature = 0, density = 0, length = 0;
+  Real x[3] = {0, 0, 0};
+};
+
 /// The constants besides the library's: density and what the time step needs.
 struct UserMaterialParams {
   Real density = 0;     ///< rho0, kg/m^3
@@ -84,6 +91,10 @@ class UserMaterial final : public Material<Dim> {
   /// sqrt((K max(J, 1) + 4G/3) J / rho0) (K raised to the tangent K J in expansion, as the linear EOS of the
   /// plasticity module).
   Real wave_speed(Real J) const;
+  /// F old and new, R of F = R U old and new, D and W of the step (L its velocity gradient) and the stress of its start
+  /// (global frame) of particle i: what the interfaces' arguments are made of.
+  PointKinematics kinematics_of(const ParticleSet<Dim>& p, Index i, const MatU<Dim>& L, Real hoop_stretch,
+                                Real hoop_rate, Real temperature) const;
 
  private:
   struct Scratch;
