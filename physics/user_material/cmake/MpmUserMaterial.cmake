@@ -5,7 +5,12 @@
 # on the stack: the program calls a VUMAT from several threads at once) and the include folder that holds
 # mpm_user_material.h, vaba_param.inc and aba_param.inc is on the include path of every language.
 # The Fortran language must be enabled (enable_language(Fortran)) when a source is Fortran.
-set(MPM_USER_MATERIAL_INCLUDE_DIR ${CMAKE_CURRENT_LIST_DIR}/../include CACHE INTERNAL "")
+# the module's include/ in the source tree, or PREFIX/include once installed (this file in PREFIX/lib/cmake/mpm)
+if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/../include/mpm_user_material.h)
+  set(MPM_USER_MATERIAL_INCLUDE_DIR ${CMAKE_CURRENT_LIST_DIR}/../include CACHE INTERNAL "")
+else()
+  get_filename_component(MPM_USER_MATERIAL_INCLUDE_DIR ${CMAKE_CURRENT_LIST_DIR}/../../../include ABSOLUTE CACHE)
+endif()
 function(mpm_add_user_material name)
   cmake_parse_arguments(ARG "" "OUTPUT_DIRECTORY" "SOURCES" ${ARGN})
   if(NOT ARG_SOURCES)
