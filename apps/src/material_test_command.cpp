@@ -119,9 +119,10 @@ bool checks_pass(Material<3>& material, const MaterialTestResult& path, std::ost
   const ObjectivityCheck objectivity = check_objectivity(material, path);
   const bool objective = objectivity.difference <= objectivity_tolerance;
   pass = pass && objective;
-  err << fmt::format("check: objectivity (the path with a rigid rotation superposed, principal stresses): largest "
-                     "difference {:.3g} of the largest stress at t = {:.6g} s (tolerance {:.0e}): {}\n",
-                     objectivity.difference, objectivity.time, objectivity_tolerance, objective ? "passed" : "FAILED");
+  err << fmt::format(
+      "check: objectivity (the path with a rigid rotation superposed, principal stresses): largest "
+      "difference {:.3g} of the largest stress at t = {:.6g} s (tolerance {:.0e}): {}\n",
+      objectivity.difference, objectivity.time, objectivity_tolerance, objective ? "passed" : "FAILED");
 #ifdef MPM_WITH_USER_MATERIAL
   if (auto* user = dynamic_cast<user_material::UserMaterial<3>*>(&material);
       user && user->plugin().spec.interface == user_material::Interface::umat) {
@@ -130,9 +131,10 @@ bool checks_pass(Material<3>& material, const MaterialTestResult& path, std::ost
     const user_material::TangentCheck t = user_material::check_umat_tangent(*user, F);
     const bool good = t.difference <= tangent_tolerance;
     pass = pass && good;
-    err << fmt::format("check: tangent (DDSDDE against finite differences of STRESS, {} steps): largest difference "
-                       "{:.3g} of the largest entry, DDSDDE({}, {}) at t = {:.6g} s (tolerance {:.0e}): {}\n",
-                       t.steps, t.difference, t.row, t.column, t.time, tangent_tolerance, good ? "passed" : "FAILED");
+    err << fmt::format(
+        "check: tangent (DDSDDE against finite differences of STRESS, {} steps): largest difference "
+        "{:.3g} of the largest entry, DDSDDE({}, {}) at t = {:.6g} s (tolerance {:.0e}): {}\n",
+        t.steps, t.difference, t.row, t.column, t.time, tangent_tolerance, good ? "passed" : "FAILED");
     return pass;
   }
 #endif

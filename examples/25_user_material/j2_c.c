@@ -57,8 +57,8 @@ int mpm_user_material_update(mpm_user_material_block* b) {
       const double scale = sf / eq;
       for (int c = 0; c < 6; ++c) s[c] *= scale;
     }
-    const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
-                     F[2] * (F[3] * F[7] - F[4] * F[6]);
+    const double J =
+        F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
     const double p = K * (1 - J);
     for (int c = 0; c < 6; ++c) sn[c] = c < 3 ? s[c] - p : s[c];
     state_new[0] = state_old[0] + dep;

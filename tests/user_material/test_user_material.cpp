@@ -158,7 +158,8 @@ std::vector<SceneCase> taylor_cases() {
            solver,
        1e-11},
       {"plane_strain",
-       "dimension: 2\ngrid: {origin: [-0.008, 0], extent: [0.016, 0.026], cell_size: 0.001, boundary: {y_min: slip}}\n" +
+       "dimension: 2\ngrid: {origin: [-0.008, 0], extent: [0.016, 0.026], cell_size: 0.001, boundary: {y_min: "
+       "slip}}\n" +
            j2_materials() +
            "bodies: [{name: rod, material: @MATERIAL@, shape: {type: box, min: [-3.8e-3, 0], max: [3.8e-3, 25.4e-3]}, "
            "particles_per_cell: 2, velocity: [0, -190]}]\n" +
@@ -186,7 +187,8 @@ std::vector<SceneCase> taylor_cases() {
 template <int Dim>
 void compare_scene(const SceneCase& c) {
   auto run = [&](const std::string& material) {
-    auto sim = mpm::test::simulation_from_yaml<Dim>(mpm::test::fill(c.text, {{"MATERIAL", material}}), c.name + ".yaml");
+    auto sim =
+        mpm::test::simulation_from_yaml<Dim>(mpm::test::fill(c.text, {{"MATERIAL", material}}), c.name + ".yaml");
     sim->run();
     return sim;
   };
@@ -197,7 +199,8 @@ void compare_scene(const SceneCase& c) {
   const double eps_max = *std::max_element(eps_b.begin(), eps_b.end());
   ASSERT_GT(eps_max, 0.05) << c.name;
   double stress_max = 0;
-  for (mpm::Index k = 0; k < pb.size(); ++k) stress_max = std::max(stress_max, pb.stress[k].full().cwiseAbs().maxCoeff());
+  for (mpm::Index k = 0; k < pb.size(); ++k)
+    stress_max = std::max(stress_max, pb.stress[k].full().cwiseAbs().maxCoeff());
   for (const auto& i : interfaces()) {
     const auto user = run("user_" + i);
     const auto& pu = user->bodies().at(0).particles;
@@ -212,12 +215,13 @@ void compare_scene(const SceneCase& c) {
       const mpm::Index u = at.at(pb.id[k]);
       position = std::max(position, (pu.x[u] - pb.x[k]).cwiseAbs().maxCoeff() / 25.4e-3);
       stress = std::max(stress, (pu.stress[u].full() - pb.stress[k].full()).cwiseAbs().maxCoeff() / stress_max);
-      plastic = std::max(plastic, std::abs(eps_u[static_cast<std::size_t>(u)] - eps_b[static_cast<std::size_t>(k)]) /
-                                      eps_max);
+      plastic = std::max(plastic,
+                         std::abs(eps_u[static_cast<std::size_t>(u)] - eps_b[static_cast<std::size_t>(k)]) / eps_max);
     }
-    std::cout << fmt::format("{:>12} {:>6}: {} steps, position {:.2e}, stress {:.2e}, plastic strain {:.2e} "
-                             "(max eps_p {:.3f})\n",
-                             c.name, i, user->step(), position, stress, plastic, eps_max);
+    std::cout << fmt::format(
+        "{:>12} {:>6}: {} steps, position {:.2e}, stress {:.2e}, plastic strain {:.2e} "
+        "(max eps_p {:.3f})\n",
+        c.name, i, user->step(), position, stress, plastic, eps_max);
     EXPECT_LT(position, c.tolerance) << c.name << " " << i;
     EXPECT_LT(stress, c.tolerance) << c.name << " " << i;
     EXPECT_LT(plastic, c.tolerance) << c.name << " " << i;
@@ -280,13 +284,15 @@ TEST(UserMaterialRun, InterruptedRunReachesTheSameBits) {
 // ---- mpm material-test --check: objectivity and the UMAT's tangent, each catching a broken plugin ----
 
 /// `mpm material-test --check` on material `name` (keys after `model: user`, or a whole entry) along simple shear.
-cli::Result material_check(const std::string& test, const std::string& material, const std::string& path = "simple_shear") {
+cli::Result material_check(const std::string& test, const std::string& material,
+                           const std::string& path = "simple_shear") {
   const fs::path dir = cli::scratch("user_material_check_" + test);
-  std::ofstream(dir / "scene.yaml") << "dimension: 3\ngrid: {extent: [1, 1, 1], cell_size: 0.5}\n"
-                                       "materials:\n  m: " +
-                                           material +
-                                           "\nbodies: [{name: b, material: m, shape: {type: box, min: [0, 0, 0], "
-                                           "max: [0.5, 0.5, 0.5]}}]\nsolver: {scheme: musl, cfl: 0.5, end_time: 1.0e-3}\n";
+  std::ofstream(dir / "scene.yaml")
+      << "dimension: 3\ngrid: {extent: [1, 1, 1], cell_size: 0.5}\n"
+         "materials:\n  m: " +
+             material +
+             "\nbodies: [{name: b, material: m, shape: {type: box, min: [0, 0, 0], "
+             "max: [0.5, 0.5, 0.5]}}]\nsolver: {scheme: musl, cfl: 0.5, end_time: 1.0e-3}\n";
   cli::Result r = cli::mpm("material-test --scene " + (dir / "scene.yaml").string() + " --material m --path " + path +
                                " --strain 0.3 --steps 200 --duration 1e-3 --check -o " + (dir / "path.csv").string(),
                            dir);
@@ -294,13 +300,14 @@ cli::Result material_check(const std::string& test, const std::string& material,
   return r;
 }
 
-const std::string j2_properties = "density: 8940, youngs_modulus: 115.0e9, poisson_ratio: 0.31, "
-                                  "properties: [115.0e9, 0.31, 200.0e6, 1.0e9], state_variables: 2";
+const std::string j2_properties =
+    "density: 8940, youngs_modulus: 115.0e9, poisson_ratio: 0.31, "
+    "properties: [115.0e9, 0.31, 200.0e6, 1.0e9], state_variables: 2";
 
 TEST(UserMaterialCheck, TheJ2PluginsPass) {
   for (const auto& i : interfaces()) {
-    const cli::Result r =
-        material_check("j2_" + i, "{model: user, interface: " + i + ", library: '" + j2_plugin(i) + "', " + j2_properties + "}");
+    const cli::Result r = material_check(
+        "j2_" + i, "{model: user, interface: " + i + ", library: '" + j2_plugin(i) + "', " + j2_properties + "}");
     std::cout << i << ":\n" << r.err;
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("check: objectivity"), std::string::npos) << r.err;
@@ -313,18 +320,19 @@ TEST(UserMaterialCheck, TheJ2PluginsPass) {
 }
 
 TEST(UserMaterialCheck, TheBuiltInJ2IsObjective) {
-  const cli::Result r = material_check("builtin", "{model: j2_plasticity, density: 8940, youngs_modulus: 115.0e9, "
-                                                  "poisson_ratio: 0.31, yield_stress: 200.0e6, hardening_modulus: 1.0e9}");
+  const cli::Result r = material_check("builtin",
+                                       "{model: j2_plasticity, density: 8940, youngs_modulus: 115.0e9, "
+                                       "poisson_ratio: 0.31, yield_stress: 200.0e6, hardening_modulus: 1.0e9}");
   std::cout << r.err;
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("): passed"), std::string::npos) << r.err;
 }
 
 TEST(UserMaterialCheck, CatchesALawThatIsNotObjective) {
-  const cli::Result r = material_check("non_objective", "{model: user, interface: c, library: '" +
-                                                            plugin("non_objective_c") +
-                                                            "', density: 8940, youngs_modulus: 115.0e9, poisson_ratio: "
-                                                            "0.31, properties: [115.0e9, 0.31]}");
+  const cli::Result r =
+      material_check("non_objective", "{model: user, interface: c, library: '" + plugin("non_objective_c") +
+                                          "', density: 8940, youngs_modulus: 115.0e9, poisson_ratio: "
+                                          "0.31, properties: [115.0e9, 0.31]}");
   std::cout << r.err;
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_NE(r.err.find("check: objectivity (the path with a rigid rotation superposed, principal stresses): largest "
@@ -335,10 +343,10 @@ TEST(UserMaterialCheck, CatchesALawThatIsNotObjective) {
 }
 
 TEST(UserMaterialCheck, CatchesAWrongUmatTangent) {
-  const cli::Result r = material_check("bad_tangent", "{model: user, interface: umat, library: '" +
-                                                          plugin("bad_tangent_umat") +
-                                                          "', density: 8940, youngs_modulus: 115.0e9, poisson_ratio: "
-                                                          "0.31, properties: [115.0e9, 0.31]}");
+  const cli::Result r =
+      material_check("bad_tangent", "{model: user, interface: umat, library: '" + plugin("bad_tangent_umat") +
+                                        "', density: 8940, youngs_modulus: 115.0e9, poisson_ratio: "
+                                        "0.31, properties: [115.0e9, 0.31]}");
   std::cout << r.err;
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_NE(r.err.find("check: objectivity"), std::string::npos) << r.err;
@@ -362,44 +370,74 @@ TEST_P(UserMaterialBad, IsRefusedWithItsMessage) {
   const BadCase& c = GetParam();
   const fs::path dir = cli::scratch("user_material_" + c.name);
   std::ofstream(dir / "scene.yaml") << block_scene(c.keys);
-  const cli::Result r = cli::mpm(c.command + " " + (dir / "scene.yaml").string() +
-                                     (c.command == "run" ? " -o " + (dir / "out").string() : ""),
-                                 dir);
+  const cli::Result r = cli::mpm(
+      c.command + " " + (dir / "scene.yaml").string() + (c.command == "run" ? " -o " + (dir / "out").string() : ""),
+      dir);
   EXPECT_EQ(r.status, c.status) << r.err;
-  for (const auto& m : c.messages) EXPECT_NE(r.err.find(m), std::string::npos) << "expected '" << m << "' in\n" << r.err;
+  for (const auto& m : c.messages)
+    EXPECT_NE(r.err.find(m), std::string::npos) << "expected '" << m << "' in\n" << r.err;
   fs::remove_all(dir);
 }
 
 std::vector<BadCase> bad_cases() {
   const std::string props = ", properties: [115.0e9, 0.31, 200.0e6, 1.0e9], state_variables: 2";
   std::vector<BadCase> cases{
-      {"missing_library", "library: no_such_plugin.so, interface: c" + props, "check", 2,
+      {"missing_library",
+       "library: no_such_plugin.so, interface: c" + props,
+       "check",
+       2,
        {"scene.yaml:", "materials.steel.library", "library file '", "no_such_plugin.so' not found",
         "(relative to the scene file)"}},
-      {"not_a_library", "library: scene.yaml, interface: c" + props, "check", 2,
+      {"not_a_library",
+       "library: scene.yaml, interface: c" + props,
+       "check",
+       2,
        {"materials.steel.library", "material 'steel' (interface c): cannot load the library", "scene.yaml"}},
-      {"missing_symbol", "library: '" + plugin("j2_c") + "', interface: c, symbol: j2_update" + props, "check", 2,
+      {"missing_symbol",
+       "library: '" + plugin("j2_c") + "', interface: c, symbol: j2_update" + props,
+       "check",
+       2,
        {"materials.steel.symbol", "has no symbol 'j2_update'", "libj2_c.so"}},
-      {"old_abi", "library: '" + plugin("old_abi_c") + "', interface: c" + props, "check", 2,
+      {"old_abi",
+       "library: '" + plugin("old_abi_c") + "', interface: c" + props,
+       "check",
+       2,
        {"materials.steel.library", "was built for version 2 of the C interface; this program has version 1"}},
-      {"wave_speed_and_elastic_constants", "library: '" + plugin("j2_c") + "', interface: c, wave_speed: 4000" + props,
-       "check", 2,
+      {"wave_speed_and_elastic_constants",
+       "library: '" + plugin("j2_c") + "', interface: c, wave_speed: 4000" + props,
+       "check",
+       2,
        {"materials.steel.wave_speed",
         "give either youngs_modulus and poisson_ratio or wave_speed for the time step, not both"}},
-      {"bad_state_name", "library: '" + plugin("j2_c") + "', interface: c, state_variables: [velocity]", "check", 2,
+      {"bad_state_name",
+       "library: '" + plugin("j2_c") + "', interface: c, state_variables: [velocity]",
+       "check",
+       2,
        {"materials.steel.state_variables", "state variable name 'velocity' is already an output field"}},
-      {"nan", "library: '" + plugin("nan_c") + "', interface: c, properties: [1.0e-6]", "run", 1,
+      {"nan",
+       "library: '" + plugin("nan_c") + "', interface: c, properties: [1.0e-6]",
+       "run",
+       1,
        {"error: material 'steel' (model user, interface c, symbol 'mpm_user_material_update' of library '",
         "libnan_c.so'): the subroutine returned a stress that is not finite", "at particle "}},
-      {"error_code", "library: '" + plugin("error_c") + "', interface: c", "run", 1,
+      {"error_code",
+       "library: '" + plugin("error_c") + "', interface: c",
+       "run",
+       1,
        {"error: material 'steel' (model user, interface c", "liberror_c.so'",
         "the update returned error code 2: expected 3 properties, got 0", "at particle "}},
   };
 #ifdef MPM_HAVE_FORTRAN
-  cases.push_back({"wrong_interface", "library: '" + plugin("j2_vumat") + "', interface: c" + props, "check", 2,
+  cases.push_back({"wrong_interface",
+                   "library: '" + plugin("j2_vumat") + "', interface: c" + props,
+                   "check",
+                   2,
                    {"materials.steel.library", "has no symbol 'mpm_user_material_update'", "libj2_vumat.so"}});
-  cases.push_back({"vumat_library_as_umat", "library: '" + plugin("j2_vumat") + "', interface: umat" + props, "check",
-                   2, {"materials.steel.library", "has no symbol 'umat_'"}});
+  cases.push_back({"vumat_library_as_umat",
+                   "library: '" + plugin("j2_vumat") + "', interface: umat" + props,
+                   "check",
+                   2,
+                   {"materials.steel.library", "has no symbol 'umat_'"}});
 #endif
   return cases;
 }

@@ -57,32 +57,32 @@ enum {
 
 /** One block of material points. Arrays marked "n x k" hold k values per point, point after point. */
 typedef struct mpm_user_material_block {
-  int abi_version; /**< MPM_USER_MATERIAL_ABI_VERSION */
-  int n;           /**< points in this block, 1 .. MPM_USER_MATERIAL_MAX_BLOCK */
-  int dimension;   /**< 1, 2 or 3: the run's dimension (tensors are 3x3 all the same) */
-  int axisymmetric;/**< 1 for an axisymmetric body (component 3 is the hoop direction), else 0 */
-  int nprops;      /**< number of props */
-  int nstatev;     /**< state variables per point */
-  const char* name;/**< the material's name in the scene (or its `name:` key), 0-terminated */
-  double dt;       /**< time increment, s */
-  double time;     /**< time at the end of the increment, s (> 0) */
-  const double* props;          /**< nprops: the scene's `properties` */
-  const double* density;        /**< n: current density rho0 / det F, kg/m^3 */
-  const double* coordinates;    /**< n x 3: the points' positions (padded with 0), m */
-  const double* char_length;    /**< n: the points' size (current volume^(1/dimension)), m */
-  const double* temperature;    /**< n: temperature, K (the thermal field; 0 when no module tracks it) */
-  const double* F_old;          /**< n x 9: deformation gradient at the start of the increment */
-  const double* F_new;          /**< n x 9: deformation gradient at the end of the increment */
-  const double* stretch_old;    /**< n x 6: U of F_old = R_old U_old */
-  const double* stretch_new;    /**< n x 6: U of F_new = R_new U_new */
-  const double* rotation_new;   /**< n x 9: R_new (row-major): what turns the corotational frame into the global */
-  const double* strain_increment; /**< n x 6: R_new^T sym(L) R_new dt, tensor shear components */
-  const double* stress_old;     /**< n x 6: corotational Cauchy stress at the start, Pa */
-  double* stress_new;           /**< n x 6: out: corotational Cauchy stress at the end, Pa (given: stress_old) */
-  const double* state_old;      /**< n x nstatev: state variables at the start */
-  double* state_new;            /**< n x nstatev: out: at the end (given: state_old) */
-  const double* energy_internal_old;  /**< n: internal energy per unit mass at the start, J/kg */
-  double* energy_internal_new;        /**< n: out: at the end (given: the old value) */
+  int abi_version;                   /**< MPM_USER_MATERIAL_ABI_VERSION */
+  int n;                             /**< points in this block, 1 .. MPM_USER_MATERIAL_MAX_BLOCK */
+  int dimension;                     /**< 1, 2 or 3: the run's dimension (tensors are 3x3 all the same) */
+  int axisymmetric;                  /**< 1 for an axisymmetric body (component 3 is the hoop direction), else 0 */
+  int nprops;                        /**< number of props */
+  int nstatev;                       /**< state variables per point */
+  const char* name;                  /**< the material's name in the scene (or its `name:` key), 0-terminated */
+  double dt;                         /**< time increment, s */
+  double time;                       /**< time at the end of the increment, s (> 0) */
+  const double* props;               /**< nprops: the scene's `properties` */
+  const double* density;             /**< n: current density rho0 / det F, kg/m^3 */
+  const double* coordinates;         /**< n x 3: the points' positions (padded with 0), m */
+  const double* char_length;         /**< n: the points' size (current volume^(1/dimension)), m */
+  const double* temperature;         /**< n: temperature, K (the thermal field; 0 when no module tracks it) */
+  const double* F_old;               /**< n x 9: deformation gradient at the start of the increment */
+  const double* F_new;               /**< n x 9: deformation gradient at the end of the increment */
+  const double* stretch_old;         /**< n x 6: U of F_old = R_old U_old */
+  const double* stretch_new;         /**< n x 6: U of F_new = R_new U_new */
+  const double* rotation_new;        /**< n x 9: R_new (row-major): what turns the corotational frame into the global */
+  const double* strain_increment;    /**< n x 6: R_new^T sym(L) R_new dt, tensor shear components */
+  const double* stress_old;          /**< n x 6: corotational Cauchy stress at the start, Pa */
+  double* stress_new;                /**< n x 6: out: corotational Cauchy stress at the end, Pa (given: stress_old) */
+  const double* state_old;           /**< n x nstatev: state variables at the start */
+  double* state_new;                 /**< n x nstatev: out: at the end (given: state_old) */
+  const double* energy_internal_old; /**< n: internal energy per unit mass at the start, J/kg */
+  double* energy_internal_new;       /**< n: out: at the end (given: the old value) */
   const double* energy_inelastic_old; /**< n: dissipated (inelastic) energy per unit mass at the start, J/kg */
   double* energy_inelastic_new;       /**< n: out: at the end (given: the old value) */
   int failed_point; /**< out: the point an error is about (index in the block), -1 when none (given: -1) */

@@ -108,7 +108,8 @@ std::mutex& names_mutex() {
 
 bool is_identifier(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  return std::all_of(s.begin(), s.end(), [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; });
+  return std::all_of(s.begin(), s.end(),
+                     [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; });
 }
 
 /// Makes `name` an output field that the body's material writes: a field the module registered before, or one that
@@ -123,8 +124,7 @@ void register_state_output(const io::YamlReader& reader, const io::YamlValue& va
                                    "material does not write; choose another name",
                                    name));
   }
-  OutputField field = output_field(name, 1, "-",
-                                   "a state variable of a `model: user` material (0 in the other bodies)",
+  OutputField field = output_field(name, 1, "-", "a state variable of a `model: user` material (0 in the other bodies)",
                                    [name](const auto& body, std::vector<double>& out) {
                                      if (!body.material->append_output(name, body.particles, out))
                                        out.insert(out.end(), static_cast<std::size_t>(body.particles.size()), 0.0);
@@ -147,8 +147,7 @@ void read_state_variables(const io::YamlReader& reader, const io::YamlValue& val
       double initial = 0;
       if (e.node.IsMap()) {
         const io::YamlMap map = reader.map(e);
-        if (map.entries().size() != 1)
-          reader.fail(e, "a named state variable is one `NAME: INITIAL_VALUE` pair");
+        if (map.entries().size() != 1) reader.fail(e, "a named state variable is one `NAME: INITIAL_VALUE` pair");
         name = map.entries()[0].key;
         initial = reader.number(map.entries()[0].value);
       } else if (io::parse_number(reader.string(e))) {
@@ -157,8 +156,8 @@ void read_state_variables(const io::YamlReader& reader, const io::YamlValue& val
         name = reader.name(e);
       }
       if (!is_identifier(name))
-        reader.fail(e, fmt::format("state variable name '{}' must be letters, digits and '_' (an output field name)",
-                                   name));
+        reader.fail(
+            e, fmt::format("state variable name '{}' must be letters, digits and '_' (an output field name)", name));
       if (std::find(spec.state_names.begin(), spec.state_names.end(), name) != spec.state_names.end())
         reader.fail(e, fmt::format("state variable name '{}' is given twice", name));
       spec.state_names.push_back(name);
@@ -196,10 +195,10 @@ std::any read_keys(const io::YamlReader& reader, const io::YamlMap& map, const M
   try {
     return Plugin::load(spec);
   } catch (const LibraryError& e) {
-    const bool symbol = map.find("symbol").has_value() && std::string(e.what()).find("has no symbol") != std::string::npos;
-    reader.fail(symbol ? *map.find("symbol") : library,
-                fmt::format("material '{}' (interface {}): {}", material.name, interface_name(spec.interface),
-                            e.what()));
+    const bool symbol =
+        map.find("symbol").has_value() && std::string(e.what()).find("has no symbol") != std::string::npos;
+    reader.fail(symbol ? *map.find("symbol") : library, fmt::format("material '{}' (interface {}): {}", material.name,
+                                                                    interface_name(spec.interface), e.what()));
   }
 }
 

@@ -30,7 +30,10 @@ struct UmatCall {
     ntens = ndi + nshr;
     const Mat3 dR = pt.R_new * pt.R_old.transpose();
     const Mat3 sigma = dR * pt.stress_old * dR.transpose();
-    strain_rotated = dR * symmetric_from(umat_pairs, 6, [&](int k) { return st.strain[k]; }, 2) * dR.transpose();
+    strain_rotated = dR *
+                     symmetric_from(
+                         umat_pairs, 6, [&](int k) { return st.strain[k]; }, 2) *
+                     dR.transpose();
     strain_increment = pt.D * dt;
     for (int k = 0; k < ntens; ++k) {
       const Real shear = k < 3 ? 1 : 2;

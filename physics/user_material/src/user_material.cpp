@@ -23,18 +23,24 @@ using CVersionFunction = int (*)();
 
 const char* interface_name(Interface interface) {
   switch (interface) {
-    case Interface::vumat: return "vumat";
-    case Interface::umat: return "umat";
-    case Interface::c: return "c";
+    case Interface::vumat:
+      return "vumat";
+    case Interface::umat:
+      return "umat";
+    case Interface::c:
+      return "c";
   }
   return "?";
 }
 
 const char* default_symbol(Interface interface) {
   switch (interface) {
-    case Interface::vumat: return "vumat_";
-    case Interface::umat: return "umat_";
-    case Interface::c: return "mpm_user_material_update";
+    case Interface::vumat:
+      return "vumat_";
+    case Interface::umat:
+      return "umat_";
+    case Interface::c:
+      return "mpm_user_material_update";
   }
   return "?";
 }
@@ -49,15 +55,17 @@ std::shared_ptr<const Plugin> Plugin::load(const UserMaterialSpec& spec) {
   if (spec.interface == Interface::c) {
     void* version = plugin->library->find("mpm_user_material_abi_version");
     if (!version)
-      throw LibraryError(fmt::format("the library '{}' has no symbol 'mpm_user_material_abi_version': it is not a "
-                                     "plugin of the C interface (mpm_user_material.h); with interface: c it must "
-                                     "define int mpm_user_material_abi_version(void)",
-                                     spec.library));
+      throw LibraryError(
+          fmt::format("the library '{}' has no symbol 'mpm_user_material_abi_version': it is not a "
+                      "plugin of the C interface (mpm_user_material.h); with interface: c it must "
+                      "define int mpm_user_material_abi_version(void)",
+                      spec.library));
     const int v = reinterpret_cast<CVersionFunction>(version)();
     if (v != MPM_USER_MATERIAL_ABI_VERSION)
-      throw LibraryError(fmt::format("the library '{}' was built for version {} of the C interface; this program "
-                                     "has version {} (rebuild it against mpm_user_material.h)",
-                                     spec.library, v, MPM_USER_MATERIAL_ABI_VERSION));
+      throw LibraryError(
+          fmt::format("the library '{}' was built for version {} of the C interface; this program "
+                      "has version {} (rebuild it against mpm_user_material.h)",
+                      spec.library, v, MPM_USER_MATERIAL_ABI_VERSION));
   }
   plugin->cmname.replace(0, std::min(spec.name.size(), cmname_length), spec.name, 0, cmname_length);
   plugin->c_name = spec.name;
@@ -236,7 +244,8 @@ void UserMaterial<Dim>::update_chunk(ParticleSet<Dim>& p, Index begin, Index end
   const int nprops = static_cast<int>(spec.properties.size());
   UserPointState* state = p.field(keys::user_point).data();
   s.sdv.resize(static_cast<std::size_t>(nstatev));
-  for (int k = 0; k < nstatev; ++k) s.sdv[k] = p.template field<Real>(state_fields_[static_cast<std::size_t>(k)]).data();
+  for (int k = 0; k < nstatev; ++k)
+    s.sdv[k] = p.template field<Real>(state_fields_[static_cast<std::size_t>(k)]).data();
   const Real* temperature = p.has_field(mpm::keys::temperature) ? p.field(mpm::keys::temperature).data() : nullptr;
   [[maybe_unused]] axisym::HoopFields hoop;
   if constexpr (Dim == 2) hoop = axisym::hoop_fields(p);
@@ -265,8 +274,9 @@ void UserMaterial<Dim>::update_chunk(ParticleSet<Dim>& p, Index begin, Index end
       for (int k = 0; k < nstatev; ++k) u.statev[static_cast<std::size_t>(k)] = s.sdv[k][i];
       u.call(*plugin_);
       if (!all_finite(u.stress, static_cast<std::size_t>(u.ntens)))
-        fail(p, i, fmt::format("the subroutine returned a stress that is not finite, STRESS = ({})",
-                               fmt::join(u.stress, u.stress + u.ntens, ", ")));
+        fail(p, i,
+             fmt::format("the subroutine returned a stress that is not finite, STRESS = ({})",
+                         fmt::join(u.stress, u.stress + u.ntens, ", ")));
       if (!all_finite(u.statev.data(), u.statev.size()))
         fail(p, i, "the subroutine returned state variables (STATEV) that are not finite");
       p.stress[i] = SymTensor<Dim>::from(symmetric_from(umat_pairs, u.ntens, [&](int k) { return u.stress[k]; }));
@@ -407,12 +417,14 @@ void UserMaterial<Dim>::update_chunk(ParticleSet<Dim>& p, Index begin, Index end
       for (int c = 0; c < csym; ++c) out[c] = s.stress_new[at(b, c, csym)];
       const int ngiven = fortran ? ncomp : 6;
       if (!all_finite(out, static_cast<std::size_t>(ngiven)))
-        fail(p, i, fmt::format("the subroutine returned a stress that is not finite, stressNew = ({})",
-                               fmt::join(out, out + ngiven, ", ")));
+        fail(p, i,
+             fmt::format("the subroutine returned a stress that is not finite, stressNew = ({})",
+                         fmt::join(out, out + ngiven, ", ")));
       for (int k = 0; k < nstatev; ++k)
         if (!std::isfinite(s.state_new[at(b, k, nstatev)]))
-          fail(p, i, fmt::format("the subroutine returned state variable {} ({}) = {}", k + 1, spec.state_names[k],
-                                 s.state_new[at(b, k, nstatev)]));
+          fail(p, i,
+               fmt::format("the subroutine returned state variable {} ({}) = {}", k + 1, spec.state_names[k],
+                           s.state_new[at(b, k, nstatev)]));
       const Mat3 S_new = symmetric_from(vumat_pairs, Dim == 3 || !fortran ? 6 : 4, [&](int c) { return out[c]; });
       p.stress[i] = SymTensor<Dim>::from(pt.R_new * S_new * pt.R_new.transpose());
       for (int k = 0; k < nstatev; ++k) s.sdv[k][i] = s.state_new[at(b, k, nstatev)];

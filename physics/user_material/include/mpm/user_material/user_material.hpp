@@ -27,7 +27,7 @@ class UserMaterialError : public std::runtime_error {
 
 /// What the program keeps per point for the interfaces (one field, read and written together; 29 doubles).
 struct UserPointState {
-  using scalar_type = Real;  ///< a struct of Reals: checkpointed as an array of doubles
+  using scalar_type = Real;                     ///< a struct of Reals: checkpointed as an array of doubles
   Real F_old[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  ///< F of the last step, 3x3 row-major
   Real q[4] = {1, 0, 0, 0};  ///< 3D: R of F_old as a unit quaternion (the start of the next polar iteration)
   Real strain[6] = {};       ///< UMAT: STRAN at the end of the last step (11, 22, 33, 12, 13, 23, engineering shear)
@@ -46,9 +46,9 @@ inline constexpr FieldKey<UserPointState> user_point{"user_material"};
 struct Plugin {
   UserMaterialSpec spec;
   std::shared_ptr<SharedLibrary> library;
-  void* entry = nullptr;                   ///< VumatFunction, UmatFunction or the C update
+  void* entry = nullptr;                      ///< VumatFunction, UmatFunction or the C update
   std::string cmname = std::string(80, ' ');  ///< CMNAME blank-padded to 80 characters (Fortran) ...
-  std::string c_name;                      ///< ... and 0-terminated (C)
+  std::string c_name;                         ///< ... and 0-terminated (C)
 
   /// Loads spec.library and looks up its entry point (the C interface: checks the version too). Throws
   /// LibraryError saying what is wrong.
@@ -79,8 +79,7 @@ class UserMaterial final : public Material<Dim> {
   const Plugin& plugin() const { return *plugin_; }
 
   void prepare_particles(ParticleSet<Dim>& p) const override;
-  WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L,
-                                    Real dt) override;
+  WaveSpeedBound<Dim> update_stress(ParticleSet<Dim>& p, Index begin, Index end, const MatU<Dim>* L, Real dt) override;
   WaveSpeedBound<Dim> wave_speed_bound(const ParticleSet<Dim>& p) const override;
   bool particle_wave_speeds(const ParticleSet<Dim>& p, std::vector<Real>& c) const override;
   void add_strain_energy(const ParticleSet<Dim>& p, ExactSum& sum) const override;
