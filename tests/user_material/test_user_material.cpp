@@ -272,6 +272,27 @@ TEST(UserMaterialRun, StateVariablesAreOutputFields) {
   fs::remove_all(dir);
 }
 
+// The example (examples/25_user_material/scene.yaml) with each plugin the tests built in place of the library its
+// README builds beside it: three steps, a clean exit.
+TEST(UserMaterialRun, TheExampleRunsWithEachPlugin) {
+  const std::string example = cli::slurp(fs::path(MPM_SOURCE_DIR) / "examples" / "25_user_material" / "scene.yaml");
+  const std::string given = "library: libj2_vumat.so", interface = "interface: vumat";
+  ASSERT_NE(example.find(given), std::string::npos);
+  ASSERT_NE(example.find(interface), std::string::npos);
+  for (const auto& i : interfaces()) {
+    std::string scene = example;
+    scene.replace(scene.find(given), given.size(), "library: '" + j2_plugin(i) + "'");
+    scene.replace(scene.find(interface), interface.size(), "interface: " + i);
+    const fs::path dir = cli::scratch("user_material_example_" + i);
+    std::ofstream(dir / "scene.yaml") << scene;
+    const cli::Result r =
+        cli::mpm("run " + (dir / "scene.yaml").string() + " --steps 3 -o " + (dir / "out").string(), dir);
+    EXPECT_EQ(r.status, 0) << i << "\n" << r.err;
+    EXPECT_NE(r.out.find("done: 3 steps"), std::string::npos) << i << "\n" << r.out;
+    if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+  }
+}
+
 // A checkpoint holds the state variables (fields sdv1, sdv2) and the interface's per-point record bit for bit: the
 // interrupted run reaches the bits of the uninterrupted one (tests/apps/test_restart.cpp).
 TEST(UserMaterialRun, InterruptedRunReachesTheSameBits) {

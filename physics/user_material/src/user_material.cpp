@@ -173,6 +173,17 @@ bool UserMaterial<Dim>::append_output(std::string_view field, const ParticleSet<
                                       std::vector<double>& out) const {
   const auto& names = plugin_->spec.state_names;
   const auto it = std::find(names.begin(), names.end(), field);
+  if (it == names.end() && field == "plastic_work") {
+    // the energy the law dissipated, per reference volume (what the failure wrapper subtracts from the stress work,
+    // eq. 16.4), unless a state variable has the name
+    const auto& state = p.field(keys::user_point);
+    for (Index i = 0; i < p.size(); ++i) {
+      const UserPointState& s = state[static_cast<std::size_t>(i)];
+      out.push_back(plugin_->spec.interface == Interface::umat ? s.energy[1] + s.energy[2]
+                                                               : p.mass[i] / p.volume0[i] * s.energy[1]);
+    }
+    return true;
+  }
   if (it == names.end()) return false;
   const auto& values = p.template field<Real>(state_fields_[static_cast<std::size_t>(it - names.begin())]);
   out.insert(out.end(), values.begin(), values.end());
