@@ -219,6 +219,9 @@ int main(int argc, char** argv) {
   material_test_cmd->add_option("-o,--output", material_test.output, "CSV file (default: stdout)");
   material_test_cmd->add_option("--plot", material_test.plot,
                                 "also draw the path into this PNG (q, shear, volume, stress path; needs matplotlib)");
+  material_test_cmd->add_flag("--check", material_test.check,
+                              "after the path: objectivity (the path again with a rigid rotation superposed) and, for "
+                              "a UMAT, its tangent against finite differences; exit status 3 when one fails");
   DiffOptions diff;  // `mpm diff`: two output directories compared for regression checks
   std::string diff_a, diff_b;
   auto* diff_cmd = cli.add_subcommand("diff", "compare two output directories frame by frame and field by field");

@@ -20,13 +20,14 @@ cd "$(dirname "$0")/.."
 # package's bindings (pybind11, Python's headers), tests (pytest) and notebook execution (nbconvert, a kernel),
 # MPI (OpenMPI's headers and mpirun: distributed runs; libvtk9-dev already pulls in the library), and
 # valgrind (bench/count_instructions.sh: instruction counts where the wall time is too noisy), OpenCASCADE
-# (geometry/: STEP, IGES and BREP bodies, MPM_WITH_OCCT; 37 MB, about 10 s to install).
+# (geometry/: STEP, IGES and BREP bodies, MPM_WITH_OCCT; 37 MB, about 10 s to install), gfortran (the user
+# materials' Fortran VUMAT and UMAT examples and their tests, physics/user_material).
 packages=(cmake g++ make pkg-config git clang-format clang-tidy
           libeigen3-dev libtbb-dev libyaml-cpp-dev libvtk9-dev libcgal-dev libgtest-dev libgmock-dev
           libmuparser-dev libcli11-dev libfmt-dev libbenchmark-dev libhdf5-dev
           python3 python3-numpy python3-matplotlib python3-vtk9
           pybind11-dev python3-dev python3-pytest jupyter-nbconvert python3-ipykernel
-          libopenmpi-dev openmpi-bin valgrind
+          libopenmpi-dev openmpi-bin valgrind gfortran
           libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-ocaf-dev)
 missing=()
 for p in "${packages[@]}"; do

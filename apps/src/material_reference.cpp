@@ -38,8 +38,16 @@ std::string row(const ParameterSpec& p) {
                      cell(p.description));
 }
 
-std::string table(const std::vector<ParameterSpec>& parameters) {
+/// A model's key that is not a number (MaterialModel::keys), as a row of the same table.
+std::string row(const io::KeySpec& k) {
+  return fmt::format("`{}` | {} | {} | {} | {} |\n", k.name, cell(k.unit.empty() ? "-" : k.unit),
+                     cell(io::key_default_text(k)), cell(io::key_allowed_text(k)), cell(k.description));
+}
+
+/// The parameters, then the keys that are not numbers of a model that has them.
+std::string table(const std::vector<ParameterSpec>& parameters, const std::vector<io::KeySpec>& keys = {}) {
   std::string text = "| Parameter | Unit | Default | Allowed values | Description |\n|---|---|---|---|---|\n";
+  for (const auto& k : keys) text += "| " + row(k);
   for (const auto& p : parameters) text += "| " + row(p);
   return text;
 }
@@ -101,6 +109,7 @@ std::string material_reference_block(const std::string& content, bool* all_model
     }
     models.push_back(model);
   }
+  if (is_of && models.size() == 1) return table(models[0]->parameters, models[0]->keys);
   return is_of ? table(shared(models)) : specific_table(models);
 }
 
@@ -108,7 +117,7 @@ std::string material_reference() {
   std::string text;
   for (const auto& name : material_model_names()) {
     const MaterialModel& model = *find_material_model(name);
-    text += fmt::format("### {}\n\n{}\n\n{}\n", model.key, model.description, table(model.parameters));
+    text += fmt::format("### {}\n\n{}\n\n{}\n", model.key, model.description, table(model.parameters, model.keys));
   }
   if (!common_material_parameters().empty())
     text += "### parameters added to every model\n\n" + table(common_material_parameters());

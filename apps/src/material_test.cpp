@@ -69,6 +69,7 @@ class Point {
     MaterialTestRow r;
     r.time = time;
     const Mat3 F = particles_.F[0];
+    r.F = F;
     const Eigen::SelfAdjointEigenSolver<Mat3> b(F * F.transpose());
     r.strain =
         b.eigenvectors() * (0.5 * b.eigenvalues().array().log()).matrix().asDiagonal() * b.eigenvectors().transpose();
@@ -301,6 +302,30 @@ MaterialTestResult run_material_test(Material<3>& material, const MaterialTestOp
     result.rows.push_back(point.row(time));
   }
   return result;
+}
+
+ObjectivityCheck check_objectivity(Material<3>& material, const MaterialTestResult& path) {
+  MaterialTestOptions plain, rotated;
+  plain.path = rotated.path = LoadPath::deformation_csv;
+  const double end = path.rows.back().time;
+  const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 3).normalized();
+  double scale = 0;
+  for (std::size_t k = 1; k < path.rows.size(); ++k) {
+    const MaterialTestRow& row = path.rows[k];
+    const Mat3 Q = Eigen::AngleAxisd(0.5 * std::numbers::pi * row.time / end, axis).toRotationMatrix();
+    plain.samples.push_back({row.time, row.F});
+    rotated.samples.push_back({row.time, Q * row.F});
+    scale = std::max(scale, row.stress.cwiseAbs().maxCoeff());
+  }
+  const MaterialTestResult a = run_material_test(material, plain), b = run_material_test(material, rotated);
+  ObjectivityCheck check;
+  for (std::size_t k = 1; k < a.rows.size() && k < b.rows.size(); ++k) {
+    const Eigen::Vector3d sa = Eigen::SelfAdjointEigenSolver<Mat3>(a.rows[k].stress).eigenvalues();
+    const Eigen::Vector3d sb = Eigen::SelfAdjointEigenSolver<Mat3>(b.rows[k].stress).eigenvalues();
+    const double d = (sa - sb).cwiseAbs().maxCoeff() / std::max(scale, 1e-300);
+    if (d > check.difference) check = {d, a.rows[k].time};
+  }
+  return check;
 }
 
 }  // namespace mpm::app

@@ -12,6 +12,9 @@
 #include <ostream>
 
 #include "mpm/app/material_test.hpp"
+#ifdef MPM_WITH_USER_MATERIAL
+#include "mpm/user_material/umat_tangent_check.hpp"
+#endif
 #include "mpm/app/modules.hpp"
 #include "mpm/app/run_scene.hpp"
 #include "mpm/core/closest_name.hpp"
@@ -107,6 +110,38 @@ MaterialTestOptions driver_options(const MaterialTestCommandOptions& c) {
   return o;
 }
 
+/// The status of a failed `--check`.
+constexpr int exit_check_failed = 3;
+
+/// `--check` (material_test_command.hpp): each check's line on `err`; false when one fails.
+bool checks_pass(Material<3>& material, const MaterialTestResult& path, std::ostream& err) {
+  bool pass = true;
+  const ObjectivityCheck objectivity = check_objectivity(material, path);
+  const bool objective = objectivity.difference <= objectivity_tolerance;
+  pass = pass && objective;
+  err << fmt::format(
+      "check: objectivity (the path with a rigid rotation superposed, principal stresses): largest "
+      "difference {:.3g} of the largest stress at t = {:.6g} s (tolerance {:.0e}): {}\n",
+      objectivity.difference, objectivity.time, objectivity_tolerance, objective ? "passed" : "FAILED");
+#ifdef MPM_WITH_USER_MATERIAL
+  if (auto* user = dynamic_cast<user_material::UserMaterial<3>*>(&material);
+      user && user->plugin().spec.interface == user_material::Interface::umat) {
+    std::vector<std::pair<double, Mat3>> F;
+    for (std::size_t k = 1; k < path.rows.size(); ++k) F.emplace_back(path.rows[k].time, path.rows[k].F);
+    const user_material::TangentCheck t = user_material::check_umat_tangent(*user, F);
+    const bool good = t.difference <= tangent_tolerance;
+    pass = pass && good;
+    err << fmt::format(
+        "check: tangent (DDSDDE against finite differences of STRESS, {} steps): largest difference "
+        "{:.3g} of the largest entry, DDSDDE({}, {}) at t = {:.6g} s (tolerance {:.0e}): {}\n",
+        t.steps, t.difference, t.row, t.column, t.time, tangent_tolerance, good ? "passed" : "FAILED");
+    return pass;
+  }
+#endif
+  err << "check: tangent: not applicable (only a UMAT gives one)\n";
+  return pass;
+}
+
 }  // namespace
 
 int material_test_command(const MaterialTestCommandOptions& options, std::ostream& out, std::ostream& err) {
@@ -128,7 +163,8 @@ int material_test_command(const MaterialTestCommandOptions& options, std::ostrea
       throw MaterialTestError(fmt::format("material '{}' is rigid (model {}): it has no stress to drive along a path",
                                           options.material, it->second.model));
     const std::unique_ptr<Material<3>> material = make_material<3>(it->second);
-    const std::string csv = material_test_csv(run_material_test(*material, driver));
+    const MaterialTestResult result = run_material_test(*material, driver);
+    const std::string csv = material_test_csv(result);
     if (options.output.empty()) {
       out << csv;
     } else {
@@ -143,6 +179,7 @@ int material_test_command(const MaterialTestCommandOptions& options, std::ostrea
               csv, options.plot, fmt::format("{} ({}), {}", options.material, it->second.model, options.path));
           !problem.empty())
         err << "warning: " << problem << '\n';
+    if (options.check && !checks_pass(*material, result, err)) return exit_check_failed;
     return exit_ok;
   } catch (const SceneError& e) {
     err << "error: " << e.what() << '\n';

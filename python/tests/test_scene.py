@@ -91,6 +91,7 @@ def test_yaml_and_dict_scenes_give_byte_equal_runs(tmp_path):
 def test_version_and_modules_are_the_programs():
     status, out, _ = run_mpm("--version")
     assert status == 0 and out.strip() == "mpm " + mpm.__version__
-    assert set(mpm.modules) <= {"geometry", "plasticity", "fluids", "thermal", "contact", "implicit", "soils"}
+    assert set(mpm.modules) <= {"geometry", "plasticity", "fluids", "thermal", "contact", "implicit", "soils",
+                                "user_material"}
     fields = mpm.output_fields()
     assert fields["velocity"][0] == 3 and fields["stress"][0] == 6 and fields["von_mises_stress"][1] == "Pa"

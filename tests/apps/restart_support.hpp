@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <regex>
 #include <set>
@@ -133,6 +134,47 @@ inline std::string with_checkpoint(std::string scene, const std::string& checkpo
 inline std::string with_bodies(std::string scene, const std::string& bodies) {
   const auto first = scene.find("  - {name: lower_left");
   return scene.replace(first, scene.find("solver:") - first, bodies);
+}
+
+/// The check of test_restart.cpp (its file comment): the reference run, then SIGTERM, restart, SIGKILL after the
+/// checkpoint at T/2, restart at one thread; the output must be the reference's, byte for byte.
+inline void check_interrupted_run_reaches_the_same_bits(const Case& c) {
+  const fs::path dir = scratch("restart_" + c.name);
+  std::ofstream(dir / "scene.yaml") << c.scene;
+  const std::string scene = (dir / "scene.yaml").string();
+  const fs::path reference = dir / "reference", run = dir / "run";
+
+  const Result ref = cli::mpm("run " + scene + " --threads 2 -o " + reference.string(), dir);
+  ASSERT_EQ(ref.status, 0) << ref.err;
+  const long long total = steps_done(ref);
+  const auto steps = checkpoint_steps(reference / "checkpoints");
+  ASSERT_EQ(steps.size(), 2u) << ref.err;  // at T/2 and at the end (keep: 2)
+  ASSERT_EQ(steps[1], total);
+  const long long half = steps[0], term_at = std::max(1LL, half / 2), kill_at = (half + total + 1) / 2;
+  ASSERT_LT(term_at, half);
+  ASSERT_LT(half, kill_at);
+  ASSERT_LT(kill_at, total);
+
+  const std::string args = "run " + scene + " --threads 2 -o " + run.string();
+  const Result term = cli::mpm(args + " --test-signal-at " + std::to_string(term_at) + ":TERM", dir);
+  EXPECT_EQ(term.status, 128 + 15) << term.err;
+  EXPECT_NE(term.err.find("stopped by SIGTERM at step " + std::to_string(term_at)), std::string::npos) << term.err;
+  EXPECT_NE(term.err.find("resume with: mpm run " + scene + " --restart"), std::string::npos) << term.err;
+
+  const Result kill = cli::mpm(
+      args + " --restart " + (run / "checkpoints").string() + " --test-signal-at " + std::to_string(kill_at) + ":KILL",
+      dir);
+  EXPECT_TRUE(killed(kill)) << kill.status << "\n" << kill.err;
+  EXPECT_NE(kill.err.find("at step " + std::to_string(term_at)), std::string::npos) << kill.err;
+
+  const Result last = cli::mpm(
+      "run " + scene + " --threads 1 -o " + run.string() + " --restart " + (run / "checkpoints").string(), dir);
+  ASSERT_EQ(last.status, 0) << last.err;
+  EXPECT_NE(last.err.find(mpm::checkpoint::checkpoint_name(half) + " at step " + std::to_string(half)),
+            std::string::npos)
+      << last.err;
+  expect_same_output(reference, run, total);
+  if (!::testing::Test::HasFailure()) fs::remove_all(dir);
 }
 
 }  // namespace restart_support

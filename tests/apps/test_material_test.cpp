@@ -106,6 +106,7 @@ TEST(MaterialTest, EveryModelAlongEveryPath) {
                                "1.0,0.98,0.02,0,0,1.001,0,0,0,1\n");
   for (const std::string& model : mpm::material_model_names()) {
     if (model == "rigid") continue;
+    if (model == "user") continue;  // a law from a shared library: tests/user_material drives its plugins
     for (const std::string path :
          {"uniaxial_strain", "triaxial_compression", "triaxial_extension", "simple_shear", "cyclic_shear"}) {
       const auto r = s.run("--material " + model + " --path " + path +

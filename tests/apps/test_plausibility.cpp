@@ -210,7 +210,9 @@ TEST(Plausibility, NoExampleSceneWarns) {
   for (const auto& dir : fs::directory_iterator(fs::path(MPM_SOURCE_DIR) / "examples"))
     if (dir.is_directory())
       for (const auto& file : fs::directory_iterator(dir.path()))
-        if (file.path().extension() == ".yaml") files.push_back(file.path());
+        // a user material needs the library its README builds (tests/user_material runs it with the test-built ones)
+        if (file.path().extension() == ".yaml" && cli::slurp(file.path()).find("model: user") == std::string::npos)
+          files.push_back(file.path());
   for (const auto& file : files) {
     const auto scene = mpm::load_scene(file);
     std::vector<std::string> warnings;

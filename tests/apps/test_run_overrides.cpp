@@ -99,6 +99,8 @@ TEST(RunOverrides, EveryExampleRunsThreeSteps) {
     if (!folder.is_directory()) continue;
     for (const auto& entry : fs::directory_iterator(folder.path())) {
       if (entry.path().extension() != ".yaml") continue;
+      // a user material needs the library its README builds: tests/user_material runs it with the test-built ones
+      if (cli::slurp(entry.path()).find("model: user") != std::string::npos) continue;
       const fs::path out = dir / (folder.path().filename().string() + "_" + entry.path().stem().string());
       const auto r = cli::mpm("run " + entry.path().string() + " --steps 3 --threads 2 -o " + out.string(), dir);
       EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.err;

@@ -59,6 +59,7 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
   std::vector<std::string> keys;
   keys.reserve(parameters.size());
   for (const auto& p : parameters) keys.push_back(p.name);
+  for (const auto& k : model->keys) keys.push_back(k.name);
   map.allow(keys, "parameter", " for model " + material.model);
   for (const auto& p : parameters) {
     if (const auto value = map.map().find(p.name)) {
@@ -77,6 +78,7 @@ MaterialDescription read_material(const YamlReader& reader, const YamlMap::Entry
       if (const auto value = map.map().find(error->key)) reader.fail(*value, error->message);
       reader.fail(entry.key_mark, map.map().path_of(error->key), error->message);
     }
+  if (model->read_keys) material.model_keys = model->read_keys(reader, map.map(), material);
   if (const auto failure = map.find("failure")) {
     material.failure_where = reader.location(failure->mark);
     material.failure = read_failure(reader, *failure, material, *model);

@@ -73,6 +73,7 @@ struct MaterialTestOptions {
 /// One row of the result (after each step; the first row is the initial state).
 struct MaterialTestRow {
   double time = 0;                   ///< s
+  Mat3 F = Mat3::Identity();         ///< deformation gradient
   Mat3 strain;                       ///< Hencky strain ln V
   Mat3 stress;                       ///< Cauchy stress, Pa
   double mean_pressure = 0;          ///< p = -tr(sigma)/3, Pa (positive in compression)
@@ -91,6 +92,16 @@ struct MaterialTestResult {
 /// Drives one point of `material` along `options.path`. Throws MaterialTestError when a stress-controlled step does
 /// not converge (the material cannot carry the stress asked, e.g. tension in a cohesionless soil).
 MaterialTestResult run_material_test(Material<3>& material, const MaterialTestOptions& options);
+
+/// `--check`, objectivity: the deformation gradients of `path` (its rows) driven twice as a deformation_csv path, as
+/// they are and with a rigid rotation superposed, F' = Q(t) F with Q about the axis (1, 2, 3)/sqrt(14) by the angle
+/// (pi/2) t / t_end. An objective law gives the same principal stresses. The largest difference over the rows,
+/// relative to the largest stress component of the path, and the time of the row.
+struct ObjectivityCheck {
+  double difference = 0;
+  double time = 0;
+};
+ObjectivityCheck check_objectivity(Material<3>& material, const MaterialTestResult& path);
 
 /// The result as CSV: time, strain_xx ... strain_xz, stress_xx ... stress_xz, p, q, volumetric_strain, then the
 /// model's fields.

@@ -23,10 +23,18 @@ struct MaterialTestCommandOptions {
   int consolidation_steps = 10;
   double amplitude = 0.01;
   int cycles = 1;
+  /// `--check`: after the path, the objectivity check (check_objectivity) and, for a UMAT (model user), its tangent
+  /// against finite differences (user_material/umat_tangent_check.hpp); a check that fails gives exit status 3.
+  bool check = false;
 };
 
-/// Runs the command; the CSV goes to `out` (or the file), messages to `err`. Returns 0, or 2 for bad input (scene,
-/// material, path, CSV, options), 1 for an I/O failure.
+/// The tolerances of `--check`, relative to the largest stress component (objectivity) and to the largest DDSDDE entry
+/// (tangent).
+inline constexpr double objectivity_tolerance = 1e-4;
+inline constexpr double tangent_tolerance = 1e-5;
+
+/// Runs the command; the CSV goes to `out` (or the file), messages and the checks' report to `err`. Returns 0, or 2
+/// for bad input (scene, material, path, CSV, options), 1 for an I/O failure, 3 when a check of `--check` fails.
 int material_test_command(const MaterialTestCommandOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace mpm::app

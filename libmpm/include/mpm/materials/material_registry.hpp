@@ -18,9 +18,15 @@
 
 #include "mpm/core/range.hpp"
 #include "mpm/materials/material.hpp"
+#include "mpm/scene/key_spec.hpp"
 #include "mpm/scene/scene.hpp"
 
 namespace mpm {
+
+namespace io {
+class YamlReader;
+class YamlMap;
+}  // namespace io
 
 /// One named parameter of a material model: required, with a default, or optional (omitting it switches a
 /// feature off; it is then absent from MaterialDescription::parameters).
@@ -78,6 +84,12 @@ using ParameterCheck = std::function<std::optional<ParameterError>(const std::ma
 template <int Dim>
 using MaterialMaker = std::unique_ptr<Material<Dim>> (*)(const MaterialDescription&);
 
+/// Reads a model's keys that are not numbers (MaterialModel::keys) from the material's map, after its numbers
+/// (`material.parameters`, checked and completed); the result is stored in MaterialDescription::model_keys. Throws
+/// SceneError naming file, line and key (through `reader`).
+using MaterialKeysReader = std::any (*)(const io::YamlReader& reader, const io::YamlMap& map,
+                                        const MaterialDescription& material);
+
 /// How thermal expansion (the common parameter `thermal_expansion`, eq. 5.26) enters a model's stress.
 enum class ThermalExpansion {
   unsupported,         ///< not at all: a scene that gives thermal_expansion is refused
@@ -119,6 +131,10 @@ struct MaterialModel {
   bool takes_initial_stress = false;
   /// The kind of matter it describes (for the plausibility of its density).
   MaterialPhase phase = MaterialPhase::solid;
+  /// Keys of the model whose values are not numbers (a file name, a list, a word), for the loader (allowed keys) and
+  /// the reference; read by `read_keys`. Empty for nearly every model (user_material has `library`, `properties`, ...).
+  std::vector<io::KeySpec> keys{};
+  MaterialKeysReader read_keys = nullptr;  ///< reads `keys`; required when `keys` is not empty
 };
 
 /// Adds a model (or replaces the one with the same key). Call before loading scenes; the optional modules'

@@ -60,6 +60,9 @@ struct MaterialDescription {
   /// `failure:` (failure/failure_criteria.hpp): when its particles fail and what they become; absent: never.
   std::optional<FailureCriteria> failure;
   SourceLocation failure_where;  ///< the `failure:` key
+  /// What the model's keys that are not numbers read (MaterialModel::keys and read_keys: a file, a list, a word;
+  /// the user_material module's `library`, `properties`, ...), in the model's own plain type; empty for the others.
+  std::any model_keys{};
 };
 
 /// The shape a body is filled from (docs/scene-reference.md, bodies[].shape): the name of its kind (the registry
