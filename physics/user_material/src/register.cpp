@@ -179,8 +179,16 @@ std::any read_keys(const io::YamlReader& reader, const io::YamlMap& map, const M
   }
   spec.symbol = default_symbol(spec.interface);
   if (const auto v = map.find("symbol")) spec.symbol = reader.name(*v);
-  if (const auto v = map.find("properties"))
+  if (const auto v = map.find("properties")) {
+    // The subroutine receives SI stresses, strains, times and densities; its PROPS are passed as written, so a unit
+    // system would hand it numbers in other units than the state it updates.
+    if (!reader.unit_system().si())
+      reader.fail(*v, fmt::format("a user material computes in SI (its stress, strain increments, times and "
+                                  "density are SI), and its properties are passed as written: give them in SI "
+                                  "and leave `units: {}` out of this scene",
+                                  reader.unit_system().name));
     for (const auto& e : reader.list(*v, std::nullopt, "properties", "")) spec.properties.push_back(reader.number(e));
+  }
   if (const auto v = map.find("state_variables")) read_state_variables(reader, *v, spec);
   const io::YamlValue library = map.required("library", "key", " of model user (the shared library, .so)");
   const std::string given = reader.name(library);
