@@ -106,6 +106,8 @@ TEST(Cli, EveryExampleSceneIsValid) {
     if (!folder.is_directory()) continue;
     for (const auto& entry : fs::directory_iterator(folder.path())) {
       if (entry.path().extension() != ".yaml") continue;
+      // a user material needs the library its README builds: tests/user_material checks it with the test-built ones
+      if (slurp(entry.path()).find("model: user") != std::string::npos) continue;
       const auto r = mpm("check " + entry.path().string(), dir);
       EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.err;
       ++checked;

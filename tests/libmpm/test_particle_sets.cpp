@@ -187,6 +187,7 @@ conditions:
   - {set: all, initial_stress: ["-0.3 / 0.7 * 2000 * 10 * (2 - y)", "-2000 * 10 * (2 - y)",
                                 "-0.3 / 0.7 * 2000 * 10 * (2 - y)", 0]}
 solver: {scheme: musl, cfl: 0.5, gravity: [0, -10], end_time: 0.1}
+output: {fields: [displacement]}
 )yaml";
 
 struct ColumnState {

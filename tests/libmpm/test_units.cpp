@@ -273,26 +273,26 @@ solver: {cfl: 0.5, end_time: 25e-6, gravity: [0, -9.81]}
 output: {interval: 5e-6}
 )yaml";
   const auto a = load(system_scene("mm-ms-g", mm));
-const auto b = load(system_scene("m-s-kg", si));
-EXPECT_EQ(a.units, "mm-ms-g");
-EXPECT_EQ(a.grid.extent, b.grid.extent);
-EXPECT_EQ(a.grid.cell_size, b.grid.cell_size);
-EXPECT_EQ(a.materials.at("steel").parameters, b.materials.at("steel").parameters);
-EXPECT_EQ(a.solver.end_time, b.solver.end_time);
-EXPECT_EQ(a.solver.gravity, b.solver.gravity);
-EXPECT_EQ(a.output.interval, b.output.interval);
-auto sim_a = mpm::test::simulation_from_yaml<2>(system_scene("mm-ms-g", mm));
-auto sim_b = mpm::test::simulation_from_yaml<2>(system_scene("m-s-kg", si));
-const auto& pa = sim_a->bodies()[0].particles;
-const auto& pb = sim_b->bodies()[0].particles;
-ASSERT_EQ(pa.size(), pb.size());
-ASSERT_GT(pa.size(), 100);
-double largest = 0;
-for (mpm::Index i = 0; i < pa.size(); ++i) {
-  EXPECT_EQ(mpm::Vec<2>(pa.x[i]), mpm::Vec<2>(pb.x[i]));
-  largest = std::max(largest, (mpm::Vec<2>(pa.v[i]) - mpm::Vec<2>(pb.v[i])).norm());
-}
-EXPECT_LT(largest, 1e-12 * 160);  // the spin's rim speed is 160 m/s
+  const auto b = load(system_scene("m-s-kg", si));
+  EXPECT_EQ(a.units, "mm-ms-g");
+  EXPECT_EQ(a.grid.extent, b.grid.extent);
+  EXPECT_EQ(a.grid.cell_size, b.grid.cell_size);
+  EXPECT_EQ(a.materials.at("steel").parameters, b.materials.at("steel").parameters);
+  EXPECT_EQ(a.solver.end_time, b.solver.end_time);
+  EXPECT_EQ(a.solver.gravity, b.solver.gravity);
+  EXPECT_EQ(a.output.interval, b.output.interval);
+  auto sim_a = mpm::test::simulation_from_yaml<2>(system_scene("mm-ms-g", mm));
+  auto sim_b = mpm::test::simulation_from_yaml<2>(system_scene("m-s-kg", si));
+  const auto& pa = sim_a->bodies()[0].particles;
+  const auto& pb = sim_b->bodies()[0].particles;
+  ASSERT_EQ(pa.size(), pb.size());
+  ASSERT_GT(pa.size(), 100);
+  double largest = 0;
+  for (mpm::Index i = 0; i < pa.size(); ++i) {
+    EXPECT_EQ(mpm::Vec<2>(pa.x[i]), mpm::Vec<2>(pb.x[i]));
+    largest = std::max(largest, (mpm::Vec<2>(pa.v[i]) - mpm::Vec<2>(pb.v[i])).norm());
+  }
+  EXPECT_LT(largest, 1e-12 * 160);  // the spin's rim speed is 160 m/s
 }
 
 // The unit system is a choice of the named ones; a slip gets "did you mean".

@@ -25,9 +25,9 @@ std::unique_ptr<Material<Dim>> make_elastic(const MaterialDescription& d) {
 }
 
 template <class Law>
-MaterialModel elastic_model(std::string description, ThermalExpansion expansion, bool takes_initial_stress) {
+MaterialModel elastic_model(const char* description, ThermalExpansion expansion, bool takes_initial_stress) {
   return {.key = Law::key,
-          .description = std::move(description),
+          .description = description,
           .parameters = elastic_parameters(),
           .make_1d = &make_elastic<1, Law>,
           .make_2d = &make_elastic<2, Law>,
