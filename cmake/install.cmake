@@ -37,6 +37,10 @@ install(TARGETS mpm ${mpm_libraries} EXPORT mpmTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The CAD reader plugin (geometry/CMakeLists.txt): where the program looks for it, <prefix>/lib/mpm.
+if(TARGET mpm_cad_occt)
+  install(TARGETS mpm_cad_occt LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/mpm)
+endif()
 set(mpm_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/mpm)
 install(EXPORT mpmTargets NAMESPACE mpm:: DESTINATION ${mpm_cmake_dir})
 set(MPM_INSTALLED_MODULES "${mpm_modules}")

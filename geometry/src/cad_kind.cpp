@@ -101,10 +101,7 @@ std::any parse(const io::YamlReader& reader, const io::YamlMap& map, const Shape
   map.allow({"cad", "part", "solid", "parts", "tolerance", "angular_tolerance", "scale", "rotation", "translation"});
   CadShape cad;
   cad.file = read_shape_file(reader, file, context.scene_file, {".step", ".stp", ".iges", ".igs", ".brep"}, "CAD");
-  if (!detail::cad_available())
-    reader.fail(file,
-                "STEP, IGES and BREP bodies need a build with OpenCASCADE: configure with -DMPM_WITH_OCCT=ON "
-                "(Debian: libocct-data-exchange-dev, libocct-modeling-algorithms-dev, libocct-ocaf-dev)");
+  if (const std::string& why = detail::cad_unavailable(); !why.empty()) reader.fail(file, why);
   try {
     detail::cad_solids(cad.file);  // read now: an unreadable file is reported at the key
   } catch (const GeometryError& e) {

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to geometry/src: what the OpenCASCADE sources (occt/*.cpp, MPM_WITH_OCCT) give the rest of geometry, in
-// plain types (no OpenCASCADE header here). Without MPM_WITH_OCCT these throw GeometryError naming the option
-// (no_occt/cad_unavailable.cpp).
+// plain types (no OpenCASCADE header here). They are a plugin loaded on first use (cad_backend.hpp, cad_plugin.cpp);
+// without MPM_WITH_OCCT, or when the plugin cannot be loaded, these throw GeometryError saying why.
 #include <array>
 #include <string>
 #include <vector>
@@ -11,8 +11,9 @@
 
 namespace mpm::geometry::detail {
 
-/// True in a build with OpenCASCADE.
-bool cad_available();
+/// Why CAD files cannot be read ("" when they can): a build without OpenCASCADE, or a plugin that cannot be loaded
+/// (the places looked at and the loader's message). Loads the plugin on first call.
+const std::string& cad_unavailable();
 
 /// A solid of a CAD file: the name of the part (product or label) it belongs to, "" when the file names none.
 struct CadSolidInfo {

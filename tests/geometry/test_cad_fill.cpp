@@ -303,6 +303,24 @@ TEST(CadFill, ScenesThroughTheProgram) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("truncated.step: "), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "t.vtu"));
+
+  // The reader is a plugin loaded by the first `cad:` body (geometry/src/cad_plugin.cpp): one that is missing or is
+  // not the CAD reader is refused at the key, naming the file looked at. MPM_CAD_PLUGIN is then the only place.
+  const std::string parts = scene("parts.yaml", "{cad: assembly.step, parts: [plate, projectile]}");
+  r = cli::mpm("check " + parts, dir, "MPM_CAD_PLUGIN=" + (dir / "missing.so").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("parts.yaml:7:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the CAD reader plugin (libmpm_cad_occt.so, OpenCASCADE) could not be loaded:\n  " +
+                       (dir / "missing.so").string() + ": not there"),
+            std::string::npos)
+      << r.err;
+  std::ofstream(dir / "junk.so") << "not a library\n";
+  r = cli::mpm("check " + parts, dir, "MPM_CAD_PLUGIN=" + (dir / "junk.so").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find((dir / "junk.so").string() + ": " + (dir / "junk.so").string()), std::string::npos)
+      << r.err;  // dlopen's own message names the file
+  r = cli::mpm("check " + parts, dir, std::string("MPM_CAD_PLUGIN=") + MPM_CAD_PLUGIN_FOR_TESTS);
+  EXPECT_EQ(r.status, 0) << r.err;
   fs::remove_all(dir);
 }
 

@@ -33,10 +33,9 @@
 #include <memory>
 #include <mutex>
 
-#include "../cad_model.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 
-namespace mpm::geometry::detail {
+namespace mpm::geometry::occt {
 
 namespace {
 
@@ -174,14 +173,12 @@ const CadModel& cad_model(const std::string& file) {
   return *model;
 }
 
-bool cad_available() { return true; }
-
-std::vector<CadSolidInfo> cad_solids(const std::string& file) {
+std::vector<detail::CadSolidInfo> cad_solids(const std::string& file) {
   const CadModel& model = cad_model(file);
-  std::vector<CadSolidInfo> solids;
+  std::vector<detail::CadSolidInfo> solids;
   solids.reserve(model.solids.size());
   for (std::size_t k = 0; k < model.solids.size(); ++k) solids.push_back({model.solids[k].part, k});
   return solids;
 }
 
-}  // namespace mpm::geometry::detail
+}  // namespace mpm::geometry::occt

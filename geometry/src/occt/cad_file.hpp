@@ -1,11 +1,15 @@
 #pragma once
-// Internal to geometry/src/occt (OpenCASCADE): a CAD file's solids with the names of their parts, read once.
+// Internal to geometry/src/occt, the CAD reader plugin (libmpm_cad_occt.so, cad_plugin_entry.cpp): a CAD file's
+// solids with the names of their parts, read once, and one solid tessellated. They throw GeometryError; the plugin's
+// entry turns it into a CadFailure for the program (cad_backend.hpp).
 #include <TopoDS_Solid.hxx>
 
 #include <string>
 #include <vector>
 
-namespace mpm::geometry::detail {
+#include "../cad_model.hpp"
+
+namespace mpm::geometry::occt {
 
 struct CadModel {
   struct Solid {
@@ -20,4 +24,8 @@ struct CadModel {
 /// and is taken as metres). Read on first use and kept for the process. Throws GeometryError.
 const CadModel& cad_model(const std::string& file);
 
-}  // namespace mpm::geometry::detail
+/// detail::cad_solids and detail::tessellate_cad_solid (cad_model.hpp) with OpenCASCADE.
+std::vector<detail::CadSolidInfo> cad_solids(const std::string& file);
+detail::CadTessellation tessellate_cad_solid(const CadShape& shape, std::size_t index);
+
+}  // namespace mpm::geometry::occt

@@ -22,11 +22,12 @@
 #include <mutex>
 #include <numbers>
 
-#include "../cad_model.hpp"
 #include "cad_file.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 
-namespace mpm::geometry::detail {
+namespace mpm::geometry::occt {
+
+using detail::CadTessellation;
 
 namespace {
 
@@ -160,4 +161,4 @@ CadTessellation tessellate_cad_solid(const CadShape& shape, std::size_t index) {
   return out;
 }
 
-}  // namespace mpm::geometry::detail
+}  // namespace mpm::geometry::occt
