@@ -48,6 +48,22 @@ fi
 commands=$(mktemp -d)
 trap 'rm -rf "$commands"' EXIT
 sed -E 's# -Winvalid-pch -include [^ ]*cmake_pch\.hxx##g' "$build/compile_commands.json" >"$commands/compile_commands.json"
+# A library compiled in unity batches (MPM_UNITY_BUILD, cmake/unity_libraries.cmake) lists its batches, not its
+# sources: each source a batch includes gets the batch's command, so that clang-tidy checks it as written.
+/usr/bin/env python3 - "$commands/compile_commands.json" <<'PY'
+import json, os, re, sys
+db = json.load(open(sys.argv[1]))
+known = {os.path.realpath(e["file"]) for e in db}
+for e in list(db):
+    if "/Unity/unity_" not in e["file"]: continue
+    for source in re.findall(r'^#include "([^"]+)"', open(e["file"]).read(), re.M):
+        if os.path.realpath(source) in known: continue
+        entry = dict(e, file=source)
+        if "arguments" in e: entry["arguments"] = [source if a == e["file"] else a for a in e["arguments"]]
+        else: entry["command"] = e["command"].replace(e["file"], source)
+        db.append(entry)
+json.dump(db, open(sys.argv[1], "w"))
+PY
 if [ "${unity:-0}" = 1 ]; then
   # One unit per folder of libmpm/src: BUILD/tidy_units/<folder>.cpp includes the folder's sources and compiles
   # with the command of the first of them (the sources of a folder share their target).

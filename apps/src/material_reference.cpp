@@ -1,4 +1,5 @@
 #include "mpm/app/material_reference.hpp"
+#include "markdown_cell.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -12,16 +13,6 @@
 namespace mpm {
 namespace {
 
-/// A table cell: '|' would end the cell.
-std::string cell(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    if (c == '|') escaped += '\\';
-    escaped += c;
-  }
-  return escaped;
-}
-
 std::string default_cell(const ParameterSpec& p) {
   if (!p.choices.empty() && p.default_value) return p.choices.at(static_cast<std::size_t>(*p.default_value));
   if (p.default_value && !p.applies_with.empty())
@@ -34,14 +25,15 @@ std::string default_cell(const ParameterSpec& p) {
 std::string row(const ParameterSpec& p) {
   // a choice parameter: its words, not their indices
   const std::string allowed = p.choices.empty() ? p.range.describe() : fmt::format("{}", fmt::join(p.choices, ", "));
-  return fmt::format("`{}` | {} | {} | {} | {} |\n", p.name, cell(p.unit), cell(default_cell(p)), cell(allowed),
-                     cell(p.description));
+  return fmt::format("`{}` | {} | {} | {} | {} |\n", p.name, markdown_cell(p.unit), markdown_cell(default_cell(p)),
+                     markdown_cell(allowed), markdown_cell(p.description));
 }
 
 /// A model's key that is not a number (MaterialModel::keys), as a row of the same table.
 std::string row(const io::KeySpec& k) {
-  return fmt::format("`{}` | {} | {} | {} | {} |\n", k.name, cell(k.unit.empty() ? "-" : k.unit),
-                     cell(io::key_default_text(k)), cell(io::key_allowed_text(k)), cell(k.description));
+  return fmt::format("`{}` | {} | {} | {} | {} |\n", k.name, markdown_cell(k.unit.empty() ? "-" : k.unit),
+                     markdown_cell(io::key_default_text(k)), markdown_cell(io::key_allowed_text(k)),
+                     markdown_cell(k.description));
 }
 
 /// The parameters, then the keys that are not numbers of a model that has them.

@@ -57,7 +57,7 @@ std::string text_of(const YAML::Node& node) {
 }
 
 /// The value of a number as SI (`25 us` is 2.5e-5: a bare number is in its key's SI unit), or nothing.
-std::optional<double> si_value(const std::string& text) {
+std::optional<double> value_in_si(const std::string& text) {
   const auto x = units::split_number(text);
   if (!x) return std::nullopt;
   try {
@@ -69,7 +69,7 @@ std::optional<double> si_value(const std::string& text) {
 
 bool same_scalar(const YAML::Node& a, const YAML::Node& b) {
   if (a.Scalar() == b.Scalar()) return true;
-  const auto x = si_value(a.Scalar()), y = si_value(b.Scalar());
+  const auto x = value_in_si(a.Scalar()), y = value_in_si(b.Scalar());
   return x && y && (*x == *y || std::abs(*x - *y) <= 1e-15 * std::abs(*x));  // 7.85 g/cm^3 and 7850 alike
 }
 

@@ -1,4 +1,5 @@
 #include "mpm/app/scene_reference.hpp"
+#include "markdown_cell.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -21,16 +22,6 @@ constexpr std::string_view marker_close = " -->";
 constexpr std::string_view keys_of = "keys of ";
 constexpr std::string_view top_level = "top-level keys";
 constexpr std::string_view keys_of_shape = "keys of shape ";
-
-/// A table cell: '|' would end the cell.
-std::string cell(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    if (c == '|') escaped += '\\';
-    escaped += c;
-  }
-  return escaped;
-}
 
 std::string description_cell(const io::KeySpec& key) {
   if (!key.run_control) return key.description;
@@ -60,8 +51,9 @@ void collect_sections(const std::vector<io::KeySpec>& keys, const std::string& p
 std::string key_table(const std::vector<io::KeySpec>& keys) {
   std::string text = "| Key | Type | Unit | Default | Allowed values | Description |\n|---|---|---|---|---|---|\n";
   for (const auto& key : keys)
-    text += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", key.name, cell(io::key_type_text(key)), cell(key.unit),
-                        cell(io::key_default_text(key)), cell(io::key_allowed_text(key)), cell(description_cell(key)));
+    text += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", key.name, markdown_cell(io::key_type_text(key)),
+                        markdown_cell(key.unit), markdown_cell(io::key_default_text(key)),
+                        markdown_cell(io::key_allowed_text(key)), markdown_cell(description_cell(key)));
   return text;
 }
 
@@ -91,8 +83,8 @@ std::string output_field_table() {
   for (const auto& name : output_field_names()) {
     const OutputField& field = *find_output_field(name);
     text += fmt::format("| `{}` | {} | {} | {} |\n", field.name,
-                        field.components > 0 ? std::to_string(field.components) : "cells", cell(field.unit),
-                        cell(field.description));
+                        field.components > 0 ? std::to_string(field.components) : "cells", markdown_cell(field.unit),
+                        markdown_cell(field.description));
   }
   return text;
 }
@@ -103,7 +95,7 @@ std::string history_kind_table() {
     const HistoryKind& kind = *find_history_kind(type);
     std::vector<std::string> keys;
     for (const auto& key : kind.keys) keys.push_back("`" + key + "`");
-    text += fmt::format("| `{}` | {} | {} |\n", kind.type, fmt::join(keys, ", "), cell(kind.description));
+    text += fmt::format("| `{}` | {} | {} |\n", kind.type, fmt::join(keys, ", "), markdown_cell(kind.description));
   }
   return text;
 }

@@ -14,6 +14,7 @@
 
 namespace mpm::geometry {
 namespace {
+namespace cad {  // named: the library compiles in unity batches (cmake/unity_libraries.cmake)
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -158,9 +159,11 @@ std::unique_ptr<Region<3>> solid(const std::any& spec, std::vector<std::string>*
   return make_cad_region(std::any_cast<const CadShape&>(spec), warnings);
 }
 
+}  // namespace cad
 }  // namespace
 
 ShapeKind cad_kind() {
+  using namespace cad;
   ShapeKind k;
   k.name = "cad";
   k.noun = "a CAD file";

@@ -15,6 +15,7 @@
 
 namespace mpm::geometry {
 namespace {
+namespace gmsh {  // named: the library compiles in unity batches (cmake/unity_libraries.cmake)
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -150,9 +151,11 @@ std::optional<OwnParticleCount> own_count(const std::any& spec, int dimension) {
       static_cast<double>(gmsh_particles(std::any_cast<const GmshShape&>(spec), dimension).positions.size()), true};
 }
 
+}  // namespace gmsh
 }  // namespace
 
 ShapeKind gmsh_kind() {
+  using namespace gmsh;
   ShapeKind k;
   k.name = "gmsh";
   k.noun = "a Gmsh mesh";

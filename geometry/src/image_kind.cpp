@@ -12,6 +12,7 @@
 
 namespace mpm::geometry {
 namespace {
+namespace image {  // named: the library compiles in unity batches (cmake/unity_libraries.cmake)
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -147,9 +148,11 @@ std::optional<OwnParticleCount> own_count(const std::any& spec, int dimension) {
   return OwnParticleCount{pixel > 0 ? area.value_or(0) / pixel : 0, true};
 }
 
+}  // namespace image
 }  // namespace
 
 ShapeKind image_kind() {
+  using namespace image;
   ShapeKind k;
   k.name = "image";
   k.noun = "an image";

@@ -10,6 +10,7 @@
 
 namespace mpm::geometry {
 namespace {
+namespace mesh {  // named: the library compiles in unity batches (cmake/unity_libraries.cmake)
 
 const std::vector<io::KeySpec>& keys() {
   using io::KeyType;
@@ -77,9 +78,11 @@ std::unique_ptr<Region<3>> solid(const std::any& spec, std::vector<std::string>*
   return make_mesh_region(std::any_cast<const MeshShape&>(spec), warnings);
 }
 
+}  // namespace mesh
 }  // namespace
 
 ShapeKind mesh_kind() {
+  using namespace mesh;
   ShapeKind k;
   k.name = "mesh";
   k.noun = "a mesh";

@@ -19,7 +19,7 @@ namespace mpm {
 namespace {
 
 /// The core's kinds, then the modules' (core/kind_table.hpp).
-KindTable<ShapeKind>& table() {
+KindTable<ShapeKind>& shape_table() {
   static KindTable<ShapeKind> t{shapes::core_shape_kinds()};
   return t;
 }
@@ -76,11 +76,11 @@ std::string lower_case(std::string text) {
 
 }  // namespace
 
-void register_shape_kind(ShapeKind kind) { table().add(std::move(kind)); }
+void register_shape_kind(ShapeKind kind) { shape_table().add(std::move(kind)); }
 
-const ShapeKind* find_shape_kind(std::string_view name) { return table().find(name); }
+const ShapeKind* find_shape_kind(std::string_view name) { return shape_table().find(name); }
 
-std::vector<std::string> shape_kind_names() { return table().names(); }
+std::vector<std::string> shape_kind_names() { return shape_table().names(); }
 
 const ShapeKind& shape_kind(const ShapeDescription& shape) {
   const ShapeKind* kind = find_shape_kind(shape.kind);

@@ -12,7 +12,7 @@ namespace mpm {
 namespace {
 
 /// The core's kinds, then the modules' (core/kind_table.hpp), found by their `type`.
-KindTable<HistoryKind, &HistoryKind::type>& table() {
+KindTable<HistoryKind, &HistoryKind::type>& history_table() {
   static KindTable<HistoryKind, &HistoryKind::type> t{
       std::deque<HistoryKind>{history::probe_kind(), history::reaction_kind(), history::energy_kind(),
                               history::extent_kind(), history::particle_kind(), history::force_kind()}};
@@ -21,11 +21,11 @@ KindTable<HistoryKind, &HistoryKind::type>& table() {
 
 }  // namespace
 
-void register_history_kind(HistoryKind kind) { table().add(std::move(kind)); }
+void register_history_kind(HistoryKind kind) { history_table().add(std::move(kind)); }
 
-const HistoryKind* find_history_kind(std::string_view type) { return table().find(type); }
+const HistoryKind* find_history_kind(std::string_view type) { return history_table().find(type); }
 
-std::vector<std::string> history_kind_names() { return table().names(); }
+std::vector<std::string> history_kind_names() { return history_table().names(); }
 
 std::vector<std::string> history_output_fields(const OutputDescription& output) {
   std::vector<std::string> fields;

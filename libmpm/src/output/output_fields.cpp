@@ -152,12 +152,12 @@ std::mutex& table_mutex() {
   return m;
 }
 /// A deque: entries never move, so find_output_field's pointers stay valid as modules register.
-std::deque<OutputField>& table() {
+std::deque<OutputField>& field_table() {
   static std::deque<OutputField> t = core_fields();
   return t;
 }
 OutputField* find_locked(std::string_view name) {
-  for (auto& f : table())
+  for (auto& f : field_table())
     if (f.name == name) return &f;
   return nullptr;
 }
@@ -168,7 +168,7 @@ void register_output_field(OutputField field) {
   std::lock_guard lock(table_mutex());
   OutputField* existing = find_locked(field.name);
   if (!existing) {
-    table().push_back(std::move(field));
+    field_table().push_back(std::move(field));
     return;
   }
   if (existing->components != field.components || existing->unit != field.unit)
@@ -192,7 +192,7 @@ const OutputField* find_output_field(std::string_view name) {
 std::vector<std::string> output_field_names() {
   std::lock_guard lock(table_mutex());
   std::vector<std::string> names;
-  for (const auto& f : table())
+  for (const auto& f : field_table())
     if (f.selectable) names.push_back(f.name);
   return names;
 }
@@ -231,7 +231,7 @@ std::optional<std::string> unavailable_output_field(const std::vector<std::strin
   std::vector<OutputField> fields;  // copied: the message is built without the lock
   {
     std::lock_guard lock(table_mutex());
-    for (const auto& f : table())
+    for (const auto& f : field_table())
       if (!f.carrier.empty() && std::find(requested.begin(), requested.end(), f.name) != requested.end())
         fields.push_back(f);
   }
