@@ -1,7 +1,8 @@
 #pragma once
 /// \file boundary/face_condition_kind.hpp
 /// The one registry of face-condition kinds (`grid.boundary.FACE`): free, stop, fixed, slip, prescribed
-/// (`{velocity: [...], traction: [...]}`), outflow, and any a module registers. A kind is a scene name, the keys it
+/// (`{velocity: [...], traction: [...]}`), outflow, absorbing (dashpots, with a ground motion), and any a module
+/// registers. A kind is a scene name, the keys it
 /// reads (for the scene reference), a parser through the one YAML reader (io/yaml_reader.hpp, so its errors read
 /// like every other section's), its traits (what it combines with), and a maker per dimension of its
 /// FaceCondition (face_condition.hpp), which does the work at the stages of the step. The core's kinds live one
