@@ -55,6 +55,7 @@ std::function<std::array<Real, 3>(Real)> read_input(const io::YamlReader& reader
   }
   const auto components = reader.list(value, static_cast<std::size_t>(dimension), "components");
   std::vector<std::shared_ptr<const Expression>> e;
+  e.reserve(components.size());
   for (int d = 0; d < dimension; ++d)
     e.push_back(std::make_shared<const Expression>(
         reader.expression(components[static_cast<std::size_t>(d)], {"t"}, "m/s"), std::vector<std::string>{"t"}));
