@@ -267,6 +267,29 @@ Case outflow() {
           checkpoint_at(0.06)};
 }
 
+// Absorbing faces (docs/theory.md §19): a column on a compliant base driven by an input pulse, with absorbing sides.
+// The faces keep no state, and the energy sentinel's W (the work the dashpots did) continues from the checkpoint.
+Case absorbing() {
+  return {"absorbing",
+          "dimension: 2\n"
+          "grid:\n"
+          "  extent: [0.4, 1]\n"
+          "  cell_size: 0.05\n"
+          "  boundary:\n"
+          "    x_min: {type: absorbing, density: 1000, p_wave_speed: 109.5445, s_wave_speed: 63.2456}\n"
+          "    x_max: {type: absorbing, density: 1000, p_wave_speed: 109.5445, s_wave_speed: 63.2456}\n"
+          "    y_min: {type: absorbing, density: 1000, p_wave_speed: 109.5445, s_wave_speed: 63.2456, input_velocity: "
+          "[\"t < 0.004 ? 0.05 * sin(_pi * t / 0.004)^2 : 0\", 0.01]}\n"
+          "materials: {soil: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e7, poisson_ratio: 0.25}}\n"
+          "bodies:\n"
+          "  - {name: soil, material: soil, shape: {type: box, min: [0, 0], max: [0.4, 1]}}\n"
+          "solver: {scheme: musl, shape_function: linear, cfl: 0.5, end_time: 0.03}\n"
+          "output:\n"
+          "  interval: 0.005\n"
+          "  fields: [velocity, stress]\n" +
+              checkpoint_at(0.015)};
+}
+
 // Erosion (materials.NAME.failure): block a erodes whole at step 51 (t = 0.051 s: its particles' own time step
 // falls to the floor as it falls, tests/libmpm/test_failure.cpp), after the checkpoint at 0.03 s, and block b of
 // the pulled-apart cut erodes at its first steps, before it; the eroded books and energy.csv's eroded_* columns
@@ -334,7 +357,8 @@ TEST_P(InterruptedRun, ReachesTheSameBitsAsTheUninterruptedOne) {
 }
 
 std::vector<Case> cases() {
-  std::vector<Case> all{two_disks(), cpdi_q4(), tlmpm(), apic(), histories(), outflow(), erosion(), particle_sets()};
+  std::vector<Case> all{two_disks(), cpdi_q4(),   tlmpm(),   apic(),         histories(),
+                        outflow(),   absorbing(), erosion(), particle_sets()};
 #ifdef MPM_WITH_FLUIDS
   all.push_back(dam_break());
   all.push_back(sod());

@@ -18,9 +18,9 @@ namespace {
 
 /// The core's kinds, then the modules' (core/kind_table.hpp).
 KindTable<FaceConditionKind>& table() {
-  static KindTable<FaceConditionKind> t{
-      std::deque<FaceConditionKind>{boundary::fixed_kind(), boundary::slip_kind(), boundary::free_kind(),
-                                    boundary::stop_kind(), boundary::prescribed_kind(), boundary::outflow_kind()}};
+  static KindTable<FaceConditionKind> t{std::deque<FaceConditionKind>{
+      boundary::fixed_kind(), boundary::slip_kind(), boundary::free_kind(), boundary::stop_kind(),
+      boundary::prescribed_kind(), boundary::outflow_kind(), boundary::absorbing_kind()}};
   return t;
 }
 

@@ -12,6 +12,7 @@ FaceConditionKind free_kind();        // velocity_kinds.cpp
 FaceConditionKind stop_kind();        // velocity_kinds.cpp
 FaceConditionKind prescribed_kind();  // velocity_kinds.cpp
 FaceConditionKind outflow_kind();     // outflow_kind.cpp
+FaceConditionKind absorbing_kind();   // absorbing_kind.cpp
 
 /// Fails unless `value` is the bare name or a map with `type` and the keys of `keys` only.
 void allow_keys(const io::YamlReader& reader, const io::YamlValue& value, std::vector<std::string> keys);

@@ -1,12 +1,12 @@
 #pragma once
 /// \file boundary/face_condition_kind.hpp
 /// The one registry of face-condition kinds (`grid.boundary.FACE`): free, stop, fixed, slip, prescribed
-/// (`{velocity: [...], traction: [...]}`), outflow, and any a module registers. A kind is a scene name, the keys it
-/// reads (for the scene reference), a parser through the one YAML reader (io/yaml_reader.hpp, so its errors read
-/// like every other section's), its traits (what it combines with), and a maker per dimension of its
-/// FaceCondition (face_condition.hpp), which does the work at the stages of the step. The core's kinds live one
-/// file each in src/boundary/; the grid section's reader, the builder, the scheme and module checks (implicit,
-/// contact, TLMPM) and the reaction history read this table, never a kind's name.
+/// (`{velocity: [...], traction: [...]}`), outflow, absorbing (dashpots, with a ground motion), and any a module
+/// registers. A kind is a scene name, the keys it reads (for the scene reference), a parser through the one YAML
+/// reader (io/yaml_reader.hpp, so its errors read like every other section's), its traits (what it combines with),
+/// and a maker per dimension of its FaceCondition (face_condition.hpp), which does the work at the stages of the
+/// step. The core's kinds live one file each in src/boundary/; the grid section's reader, the builder, the scheme
+/// and module checks (implicit, contact, TLMPM) and the reaction history read this table, never a kind's name.
 ///
 /// Scene syntax: a face is either a kind's bare name (`y_max: outflow`, for kinds that take no required key) or a
 /// map whose `type` names the kind (`y_max: {type: outflow, margin: 0.01}`); a map without `type` is `prescribed`,
