@@ -7,7 +7,8 @@
 //    the steady state has D_p = D exactly); the driver's own simple_shear path (with the spin) within the
 //    corotational term's (mu P / G)^2;
 //  - the rate-independent limit I -> 0: mu_s;
-//  - no tension: a point pulled apart (from rest or from flow) has zero stress exactly, and no plastic work;
+//  - no tension: a point pulled apart (from rest or from flow) has zero stress exactly, and no plastic work; open
+//    grains carry nothing until compressed back to the density at which they opened;
 //  - objectivity: a point at rest spun rigidly keeps its principal stresses and does not flow; the driver's check
 //    (the path with a rigid rotation superposed);
 //  - in a run: a column of glass beads collapsing under gravity stays admissible (P >= 0, sqrt(J2) <= mu_2 P), its
@@ -193,6 +194,38 @@ TEST(MuI, TensionGivesZeroStress) {
   // P = 1e4 Pa needs a volume strain P / K = 1.2e-4 to relax: the first step (3e-3) opens it
   EXPECT_EQ(first_open, start);
   std::printf("[ measured ] tension: zero stress at every step of the pull from rest and from flow at 10 kPa\n");
+}
+
+// The open state remembers how far the grains are apart (Dunatunga & Kamrin's rho < rho_c, eq. 18.23): a point
+// stretched isotropically by a volume strain of 3e-3 from zero stress stays stress-free while it is compressed back by
+// 2e-3, and carries P = K (ln J) only once it is denser than where it opened; the plastic volume strain is the
+// opening itself.
+TEST(MuI, OpenGrainsCarryNothingUntilTheyCloseAgain) {
+  SoilBatch<3, MuI> material(glass_beads());
+  const Real K = material.params().bulk_modulus;
+  MaterialTestOptions o;
+  o.path = LoadPath::deformation_csv;
+  const std::vector<Real> volume_strains = {1e-3, 2e-3, 3e-3, 2e-3, 1e-3, 0.5e-3, -0.5e-3, -1e-3};
+  for (std::size_t k = 0; k < volume_strains.size(); ++k)
+    o.samples.push_back({0.01 * Real(k + 1), Mat3::Identity() * std::exp(volume_strains[k] / 3)});
+  const MaterialTestResult r = app::run_material_test(material, o);
+  Real worst = 0;
+  for (std::size_t k = 0; k < volume_strains.size(); ++k) {
+    const auto& row = r.rows[k + 1];
+    const Real opening = row.model_fields.at(1);  // plastic_volumetric_strain
+    const Real expected_opening = std::max(volume_strains[k], 0.0);
+    const Real expected_pressure = K * std::max(-volume_strains[k], 0.0);
+    EXPECT_NEAR(opening, expected_opening, 1e-15) << k;
+    EXPECT_NEAR(row.mean_pressure, expected_pressure, 1e-9 * K * 1e-3) << k;
+    if (volume_strains[k] >= 0) {
+      EXPECT_EQ(row.stress, Mat3::Zero()) << k;
+    }
+    worst = std::max(worst, std::abs(row.mean_pressure - expected_pressure) / (K * 1e-3));
+  }
+  std::printf(
+      "[ measured ] open grains: pressure K max(-ln J, 0) to %.2e of K 1e-3, the opening as plastic volume "
+      "strain\n",
+      worst);
 }
 
 // A point at rest (p = 10 kPa, sqrt(J2) at 90% of mu_s P) spun rigidly by 4 turns in 400 steps about an oblique

@@ -3,7 +3,8 @@
 /// The mu(I) rheology of dense granular flow (Jop, Forterre & Pouliquen 2006, Nature 441, 727-730) as an
 /// elastic-viscoplastic material point law in the form of Dunatunga & Kamrin (2015, J. Fluid Mech. 779, 483-513):
 /// an elastic predictor (the hypoelastic trial stress of soil_batch.hpp, eq. 18.12), no tension (the open,
-/// disconnected state: zero stress when the trial pressure is not compressive, eq. 18.23), rest while
+/// disconnected state: zero stress from the step whose trial pressure is not compressive until the grains have been
+/// compressed back by the volume strain they opened by, Dunatunga & Kamrin's rho < rho_c, eq. 18.23), rest while
 /// sqrt(J2) <= mu_s P, and otherwise an isochoric plastic flow along the deviator whose equivalent shear rate
 /// gamma_dot_p makes the relaxed stress sit on mu(I) P with I taken from gamma_dot_p itself (eqs. 18.21-18.22): one
 /// quadratic equation, solved in closed form (docs/theory.md §18, eqs. 18.20-18.24).
@@ -20,7 +21,7 @@ class MuI {
  public:
   static constexpr const char* key = "mu_i";
 
-  explicit MuI(const SoilParams& p) : G_(p.shear_modulus), rheology_(p.granular) {}
+  explicit MuI(const SoilParams& p) : G_(p.shear_modulus), K_(p.bulk_modulus), rheology_(p.granular) {}
 
   const GranularRheology& rheology() const { return rheology_; }
 
@@ -49,14 +50,25 @@ class MuI {
     return (root - b) / (2 * a);  // b < 0 needs a > 0: with dt = 0 (a = 0) b = B (mu_2 P - tau*) < 0 has no root
   }
 
-  /// The stress returned from the elastic trial stress (tension positive) over the step `dt`, Pa.
-  Mat3 return_map(const Mat3& trial, Real dt) const {
-    const Real P = -trial.trace() / 3;
-    if (!(P > 0)) return Mat3::Zero();  // open: the grains have lost contact (eq. 18.23)
-    const Mat3 s = trial + P * Mat3::Identity();
+  /// The stress returned from the elastic trial stress (tension positive) over the step `dt`, Pa. `opening` is the
+  /// volume strain by which the grains are apart at the start of the step (> 0: open, the stress was zero, so the
+  /// trial is C : d eps of the step); the caller books the plastic volume strain C^-1 : (trial - sigma) into it
+  /// (soil_batch.hpp, eq. 18.13), which makes it the opening at the end of the step.
+  Mat3 return_map(const Mat3& trial, Real dt, Real opening = 0) const {
+    Mat3 connected = trial;
+    if (opening > 0) {
+      // Open (eq. 18.23): the step's volume strain first closes the gap; what is left of the step after it has
+      // closed loads the grains from zero stress.
+      const Real dv = trial.trace() / (3 * K_);
+      if (!(opening + dv < 0)) return Mat3::Zero();
+      connected *= (opening + dv) / dv;
+    }
+    const Real P = -connected.trace() / 3;
+    if (!(P > 0)) return Mat3::Zero();  // the grains lose contact (eq. 18.23)
+    const Mat3 s = connected + P * Mat3::Identity();
     const Real tau = std::sqrt(0.5 * s.squaredNorm());
-    if (tau <= rheology_.mu_s * P) return trial;  // at rest (eq. 18.21)
-    Real relaxed = rheology_.mu_2 * P;            // the limit of an infinite rate (a step of zero length)
+    if (tau <= rheology_.mu_s * P) return connected;  // at rest (eq. 18.21)
+    Real relaxed = rheology_.mu_2 * P;                // the limit of an infinite rate (a step of zero length)
     if (dt > 0) {
       const Real rate = plastic_shear_rate(tau, P, dt);
       // On the root tau* - G dt rate = mu(I(rate)) P; the right-hand side has no cancellation (eq. 18.22).
@@ -66,7 +78,7 @@ class MuI {
   }
 
  private:
-  Real G_;
+  Real G_, K_;
   GranularRheology rheology_;
 };
 

@@ -63,8 +63,9 @@ class SoilBatch final : public Material<Dim> {
     // With softening the strength is that of the plastic strain at the start of the step (explicit, as the
     // plasticity module's hardening): the return is built for it.
     Mat3 sigma;
-    if constexpr (requires(const Return& r) { r.return_map(trial, dt); })
-      sigma = return_.return_map(trial, dt);  // a rate law (mu_i): the return needs the step
+    if constexpr (requires(const Return& r) { r.return_map(trial, dt, state.plastic_volumetric_strain); })
+      // a rate law (mu_i): the return needs the step, and the opening of the grains (the plastic volume strain)
+      sigma = return_.return_map(trial, dt, state.plastic_volumetric_strain);
     else
       sigma = params_.softening.enabled ? Return(params_.softened(state.plastic_strain)).return_map(trial)
                                         : return_.return_map(trial);
