@@ -138,6 +138,9 @@ TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
 #ifndef MPM_WITH_FLUIDS  // fixtures of the fluids module's models
       if (entry.path().filename().string().rfind("fluids_", 0) == 0) continue;
 #endif
+#ifndef MPM_WITH_SOILS  // fixtures of the soils module's models
+      if (entry.path().filename().string().rfind("soils_", 0) == 0) continue;
+#endif
 #ifndef MPM_WITH_IMPLICIT  // fixtures of the implicit module's scheme, unknown without it
       if (entry.path().filename().string().rfind("implicit_", 0) == 0) continue;
 #endif

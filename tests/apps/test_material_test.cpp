@@ -46,7 +46,9 @@ std::string scene_with_every_model() {
       "  drucker_prager: {model: drucker_prager, density: 1800, youngs_modulus: 50.0e6, poisson_ratio: 0.3, "
       "friction_angle: 30 deg, dilation_angle: 10 deg, cohesion: 5.0e3}\n"
       "  mohr_coulomb: {model: mohr_coulomb, density: 1800, youngs_modulus: 50.0e6, poisson_ratio: 0.3, "
-      "friction_angle: 30 deg, dilation_angle: 10 deg, cohesion: 5.0e3}\n";
+      "friction_angle: 30 deg, dilation_angle: 10 deg, cohesion: 5.0e3}\n"
+      "  mu_i: {model: mu_i, density: 1470, youngs_modulus: 50.0e6, poisson_ratio: 0.3, mu_s: 0.38, mu_2: 0.64, "
+      "I_0: 0.279, grain_diameter: 0.5e-3, grain_density: 2450}\n";
 #endif
   return "dimension: 2\n"
          "grid: {extent: [1, 1], cell_size: 0.1}\n"
@@ -115,7 +117,7 @@ TEST(MaterialTest, EveryModelAlongEveryPath) {
       expect_finite_table(r.out, model + " " + path);
       EXPECT_EQ(lines(r.out).size(), 1u + 1 + 10 + 20) << model << " " << path;
       EXPECT_EQ(lines(r.out)[0].rfind("time,strain_xx,", 0), 0u) << r.out.substr(0, 200);
-      if (model == "drucker_prager" || model == "mohr_coulomb" || model == "j2_plasticity") {
+      if (model == "drucker_prager" || model == "mohr_coulomb" || model == "mu_i" || model == "j2_plasticity") {
         EXPECT_NE(lines(r.out)[0].find(",plastic_strain"), std::string::npos) << model;
       }
     }

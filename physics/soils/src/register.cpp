@@ -1,9 +1,10 @@
-// The soils module's material models (drucker_prager, mohr_coulomb): their parameter specs, from which the scene
-// loader checks a scene and docs/scene-reference.md is generated, their checks and their builders.
+// The soils module's material models (drucker_prager, mohr_coulomb, mu_i): their parameter specs, from which the
+// scene loader checks a scene and docs/scene-reference.md is generated, their checks and their builders.
 #include "mpm/soils/register.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <mutex>
 #include <numbers>
 
@@ -11,6 +12,7 @@
 #include "mpm/output/output_fields.hpp"
 #include "mpm/soils/drucker_prager.hpp"
 #include "mpm/soils/mohr_coulomb.hpp"
+#include "mpm/soils/mu_i.hpp"
 #include "mpm/soils/soil_batch.hpp"
 
 namespace mpm::soils {
@@ -140,6 +142,72 @@ MaterialModel mohr_coulomb_model() {
           .takes_initial_stress = true};
 }
 
+/// The mu(I) rheology: the elastic constants of the other soils, then Jop, Forterre & Pouliquen's (2006) names.
+std::vector<ParameterSpec> mu_i_parameters() {
+  std::vector<ParameterSpec> parameters = soil_parameters();
+  parameters.resize(3);  // density, youngs_modulus, poisson_ratio
+  parameters.push_back(ParameterSpec::required("mu_s", "-", Range::above(0),
+                                               "static friction coefficient mu_s = tan(theta_1): below mu_s P the "
+                                               "grains rest (theory eq. 18.20)"));
+  parameters.push_back(ParameterSpec::required("mu_2", "-", Range::above(0),
+                                               "limiting friction coefficient mu_2 = tan(theta_2) >= mu_s at large I"));
+  parameters.push_back(ParameterSpec::required("I_0", "-", Range::above(0),
+                                               "inertial number I_0 at which mu(I) is halfway between mu_s and mu_2"));
+  parameters.push_back(ParameterSpec::required("grain_diameter", "m", Range::above(0),
+                                               "grain diameter d of the inertial number I = gamma_dot d / "
+                                               "sqrt(P / rho_s)"));
+  parameters.push_back(ParameterSpec::required("grain_density", "kg/m^3", Range::above(0),
+                                               "density rho_s of the grains' material (>= density, the bulk "
+                                               "density of the packing)"));
+  return parameters;
+}
+
+std::optional<ParameterError> check_mu_i(const std::map<std::string, double>& p) {
+  if (p.at("mu_2") < p.at("mu_s"))
+    return ParameterError{"mu_2", fmt::format("mu_2 ({}) must not be below mu_s ({}): the friction coefficient "
+                                              "rises with the inertial number from mu_s to mu_2",
+                                              p.at("mu_2"), p.at("mu_s"))};
+  if (p.at("density") > p.at("grain_density"))
+    return ParameterError{"grain_density",
+                          fmt::format("grain_density ({} kg/m^3) is below the bulk density ({} kg/m^3): the "
+                                      "packing's solid fraction density / grain_density would exceed 1",
+                                      p.at("grain_density"), p.at("density"))};
+  return std::nullopt;
+}
+
+template <int Dim>
+std::unique_ptr<Material<Dim>> make_mu_i(const MaterialDescription& d) {
+  const auto& p = d.parameters;
+  SoilParams s;
+  s.density = p.at("density");
+  const Real E = p.at("youngs_modulus"), nu = p.at("poisson_ratio");
+  s.shear_modulus = E / (2 * (1 + nu));
+  s.bulk_modulus = E / (3 * (1 - 2 * nu));
+  s.granular = {.mu_s = p.at("mu_s"),
+                .mu_2 = p.at("mu_2"),
+                .I_0 = p.at("I_0"),
+                .grain_diameter = p.at("grain_diameter"),
+                .grain_density = p.at("grain_density")};
+  s.friction = std::atan(s.granular.mu_s);
+  return std::make_unique<SoilBatch<Dim, MuI>>(s);
+}
+
+MaterialModel mu_i_model() {
+  return {.key = "mu_i",
+          .description =
+              "mu(I) rheology of dense granular flow (Jop, Forterre & Pouliquen 2006) in the elastic-viscoplastic "
+              "form of Dunatunga & Kamrin 2015 (theory §18): hypoelastic trial stress, rest below mu_s P, flow at "
+              "sqrt(J2) = mu(I) P with I = gamma_dot_p d / sqrt(P / rho_s), no tension (zero stress when the grains "
+              "open)",
+          .parameters = mu_i_parameters(),
+          .check = check_mu_i,
+          .make_1d = &make_mu_i<1>,
+          .make_2d = &make_mu_i<2>,
+          .make_3d = &make_mu_i<3>,
+          .tracks_plastic_strain = true,
+          .takes_initial_stress = true};
+}
+
 /// plastic_strain (shared with the plasticity module: the same unit and meaning) and plastic_volumetric_strain.
 void register_output_fields() {
   const std::pair<const char*, const char*> fields[] = {
@@ -164,6 +232,7 @@ void register_module() {
   std::call_once(once, [] {
     register_material_model(drucker_prager_model());
     register_material_model(mohr_coulomb_model());
+    register_material_model(mu_i_model());
     register_output_fields();
   });
 }

@@ -2,7 +2,8 @@
 /// \file soil_batch.hpp
 /// A frictional soil as a material of the explicit schemes: a hypoelastic trial stress with the Hughes-Winget
 /// rotation of the previous stress (objective for large rotations, theory eq. 18.12), then the model's return
-/// mapping (`Return`: DruckerPrager or MohrCoulomb), one virtual call per block and the point law inlined. The
+/// mapping (`Return`: DruckerPrager, MohrCoulomb, or the rate law MuI, whose return takes the time step), one virtual
+/// call per block and the point law inlined. The
 /// plastic strain increment is recovered from the return, d eps_p = C^-1 : (sigma_trial - sigma) (eq. 18.13), so
 /// that one bookkeeping serves every return (cone, apex, edges, cut-off).
 
@@ -61,8 +62,13 @@ class SoilBatch final : public Material<Dim> {
         rotation * sigma_old * rotation.transpose() + 2 * G * d + (K - 2 * G / 3) * tr * Mat3::Identity();
     // With softening the strength is that of the plastic strain at the start of the step (explicit, as the
     // plasticity module's hardening): the return is built for it.
-    const Mat3 sigma = params_.softening.enabled ? Return(params_.softened(state.plastic_strain)).return_map(trial)
-                                                 : return_.return_map(trial);
+    Mat3 sigma;
+    if constexpr (requires(const Return& r) { r.return_map(trial, dt, state.plastic_volumetric_strain); })
+      // a rate law (mu_i): the return needs the step, and the opening of the grains (the plastic volume strain)
+      sigma = return_.return_map(trial, dt, state.plastic_volumetric_strain);
+    else
+      sigma = params_.softening.enabled ? Return(params_.softened(state.plastic_strain)).return_map(trial)
+                                        : return_.return_map(trial);
     // d eps_p = C^-1 : (sigma_trial - sigma) = dev / (2G) + tr / (9K) 1 (eq. 18.13)
     const Mat3 relaxed = trial - sigma;
     const Real dp = relaxed.trace() / 3;

@@ -1,7 +1,8 @@
 #pragma once
 /// \file soil_params.hpp
-/// The constants of a frictional soil (drucker_prager, mohr_coulomb), built once from the scene: isotropic
-/// elasticity, friction and dilation angles, cohesion and the tension cut-off (docs/theory.md §18).
+/// The constants of a frictional soil (drucker_prager, mohr_coulomb, mu_i), built once from the scene: isotropic
+/// elasticity, friction and dilation angles, cohesion and the tension cut-off (docs/theory.md §18); for mu_i the
+/// constants of the mu(I) rheology (eqs. 18.20-18.24).
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +51,23 @@ struct Softening {
   Real strain = 1;             ///< eps_p at which the residual values are reached, -
 };
 
+/// The mu(I) rheology of Jop, Forterre & Pouliquen (2006), with the paper's names (theory eq. 18.20):
+/// mu(I) = mu_s + (mu_2 - mu_s) / (I_0 / I + 1), I = gamma_dot d / sqrt(P / rho_s).
+struct GranularRheology {
+  Real mu_s = 0;            ///< static friction coefficient (tan of the angle at which flow starts), -
+  Real mu_2 = 0;            ///< limiting friction coefficient at large I, >= mu_s, -
+  Real I_0 = 1;             ///< the inertial number at which mu is halfway between mu_s and mu_2, -
+  Real grain_diameter = 0;  ///< d, m
+  Real grain_density = 0;   ///< rho_s, the density of the grains' material, kg/m^3
+
+  /// mu(I) (eq. 18.20), written so that I = 0 gives mu_s exactly.
+  Real friction(Real I) const { return mu_s + (mu_2 - mu_s) * I / (I_0 + I); }
+  /// The inertial number of a shear rate |gamma_dot| (1/s) at a pressure P > 0 (Pa), eq. 18.20.
+  Real inertial_number(Real shear_rate, Real pressure) const {
+    return shear_rate * grain_diameter * std::sqrt(grain_density / pressure);
+  }
+};
+
 struct SoilParams {
   Real density = 0;         ///< kg/m^3
   Real shear_modulus = 0;   ///< G, Pa
@@ -60,6 +78,7 @@ struct SoilParams {
   Real tension_cutoff = 0;  ///< T: the mean stress p = tr(sigma)/3 never exceeds min(T, apex), Pa
   ConeMatching matching = ConeMatching::plane_strain;  ///< Drucker-Prager only
   Softening softening;
+  GranularRheology granular;  ///< mu_i only
 
   /// The constants at the equivalent plastic strain eps_p: c and phi softened linearly (eq. 18.19), psi kept at or
   /// below phi.
