@@ -32,8 +32,7 @@ detail::CadTessellation tessellate(const CadShape& shape, std::size_t index, det
 }  // namespace mpm::geometry::occt
 
 extern "C" __attribute__((visibility("default"))) const mpm::geometry::detail::CadBackend* mpm_cad_backend() {
-  static const mpm::geometry::detail::CadBackend backend{mpm::geometry::detail::cad_backend_version,
-                                                         &mpm::geometry::occt::solids,
-                                                         &mpm::geometry::occt::tessellate};
+  static const mpm::geometry::detail::CadBackend backend{
+      mpm::geometry::detail::cad_backend_version, &mpm::geometry::occt::solids, &mpm::geometry::occt::tessellate};
   return &backend;
 }
