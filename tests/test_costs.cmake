@@ -7,6 +7,7 @@
 set(mpm_test_costs
   Perforation.SphereThroughPlateRunsToItsEndWithClosedBooks 30
   Perforation.FailedAndErodedParticlesLeaveTheTimeStep 8
+  ColumnCollapse.RunOutAndHeightOfAShortColumnAgainstLube2005 6
   EnergySentinelDisks.CpGimpDoesNotWarn 46
   Verify.AxisymmetricTaylorAnvilBandHoldsTheErrorAgainstTheFinestRun 38
   MmsCpdi.TwoD 35
