@@ -64,7 +64,7 @@ void restore_simulation(Simulation<Dim>& sim, const RestartPoint& point, std::os
 
 template <int Dim>
 void check(const SceneDescription& scene, std::ostream& out, std::ostream& log, int ranks) {
-  auto sim = build_simulation<Dim>(scene);
+  auto sim = build_simulation<Dim>(scene, /*gravity_stage=*/false);  // a check does not run the stage
   std::vector<std::string> warnings;
   build_histories<Dim>(scene, *sim, warnings);  // what only the built bodies can refuse
   for (const auto& w : warnings) fmt::print(log, "warning: {}\n", w);
@@ -263,8 +263,9 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   const StopSignals stop_signals;  // SIGINT, SIGTERM, SIGUSR1: stop after the current step
   Communicator* const comm =
       options.communicator && options.communicator->size() > 1 ? options.communicator.get() : nullptr;
-  RunConsole<Dim> console(log, scene, options);                         // the log, the progress line, signals, failure/
-  const std::unique_ptr<Run<Dim>> job = make_run<Dim>(scene, console);  // the simulation and its histories
+  RunConsole<Dim> console(log, scene, options);  // the log, the progress line, signals, failure/
+  const std::unique_ptr<Run<Dim>> job =
+      make_run<Dim>(scene, console, options.restart.has_value());  // the simulation and its histories
   Simulation<Dim>& sim = job->simulation();
   if (comm) prepare_ranks(scene, options, sim);
   job->log_warnings();
@@ -290,17 +291,21 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
 }  // namespace
 
 template <int Dim>
-std::unique_ptr<Run<Dim>> make_run(const SceneDescription& scene, RunLog& log) {
-  auto sim = build_simulation<Dim>(scene);
+std::unique_ptr<Run<Dim>> make_run(const SceneDescription& scene, RunLog& log, bool restarting) {
+  std::optional<GravityStageReport> stage;
+  if (scene.solver.gravity_stage && !restarting) stage.emplace();
+  auto sim = build_simulation<Dim>(scene, !restarting, stage ? &*stage : nullptr);
   std::vector<std::string> warnings;  // a time step collapsed by a typo, implausible numbers
   if (std::string w = step_warning(estimate_steps<Dim>(scene, *sim)); !w.empty()) warnings.push_back(std::move(w));
   for (auto& w : plausibility_warnings<Dim>(scene, *sim)) warnings.push_back(std::move(w));
-  return std::make_unique<Run<Dim>>(scene, std::move(sim), log, std::move(warnings));
+  if (stage && !stage->converged)  // on_no_equilibrium: warn (stop threw)
+    warnings.push_back(stage->summary() + ": the run starts from the state reached, which is not at rest");
+  return std::make_unique<Run<Dim>>(scene, std::move(sim), log, std::move(warnings), std::move(stage));
 }
 
-template std::unique_ptr<Run<1>> make_run<1>(const SceneDescription&, RunLog&);
-template std::unique_ptr<Run<2>> make_run<2>(const SceneDescription&, RunLog&);
-template std::unique_ptr<Run<3>> make_run<3>(const SceneDescription&, RunLog&);
+template std::unique_ptr<Run<1>> make_run<1>(const SceneDescription&, RunLog&, bool);
+template std::unique_ptr<Run<2>> make_run<2>(const SceneDescription&, RunLog&, bool);
+template std::unique_ptr<Run<3>> make_run<3>(const SceneDescription&, RunLog&, bool);
 
 void check_scene(const SceneDescription& scene, std::ostream& out, std::ostream& log, int ranks) {
   switch (scene.dimension) {

@@ -12,6 +12,7 @@
 #include "mpm/app/step_estimate.hpp"
 #include "mpm/body_shape/shape_kind.hpp"
 #include "mpm/boundary/face_condition_kind.hpp"
+#include "mpm/boundary/face_names.hpp"
 #include "mpm/core/expression.hpp"
 #include "mpm/diagnostics/energy_sentinel.hpp"
 #include "mpm/failure/failing_material.hpp"
@@ -27,6 +28,7 @@
 #include "mpm/schemes/axisymmetric.hpp"
 #include "mpm/schemes/cpdi_corner_tracking.hpp"
 #include "mpm/schemes/scheme_registry.hpp"
+#include "mpm/sets/geostatic_stress.hpp"
 #include "mpm/sets/particle_sets.hpp"
 #include "mpm/simulation/local_damping_book.hpp"
 #include "mpm/simulation/reaction_provider.hpp"
@@ -401,8 +403,33 @@ void add_energy_sentinel(const SceneDescription& scene, Simulation<Dim>& sim) {
 
 }  // namespace
 
+/// The gravity stage of the scene (gravity_stage.hpp), with its refusals: particles that leave through an outflow
+/// face while settling (the books of the run start after the stage), a stage that does not settle and should stop.
 template <int Dim>
-std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene) {
+GravityStageReport settle_under_gravity(const SceneDescription& scene, Simulation<Dim>& sim) {
+  const GravityStageDescription& stage = *scene.solver.gravity_stage;
+  const GravityStageReport report = run_gravity_stage<Dim>(
+      sim, {.damping = stage.damping, .tolerance = stage.tolerance, .max_steps = stage.max_steps});
+  const auto fail = [&](const std::string& message) { throw SceneError(stage.where, "solver.gravity_stage", message); };
+  for (const auto& book : sim.boundary().outflow())
+    if (book.particle_count() > 0)
+      fail(
+          fmt::format("{} particles left through the outflow face {} while the bodies settled under gravity: the "
+                      "stage is for bodies that come to rest in the grid",
+                      book.particle_count(), face_names[static_cast<std::size_t>(book.face)]));
+  if (!report.converged && stage.on_no_equilibrium == NoEquilibriumAction::stop)
+    fail(
+        fmt::format("the bodies did not come to rest under gravity: the unbalanced force ratio is {:.3g} after {} "
+                    "steps (tolerance {:.3g}); a body that fails under its own weight (a slope steeper than it "
+                    "stands) never settles. Raise max_steps, or give on_no_equilibrium: warn to run from the state "
+                    "reached",
+                    report.ratio, report.steps, report.tolerance));
+  return report;
+}
+
+template <int Dim>
+std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene, bool gravity_stage,
+                                                  GravityStageReport* stage_report) {
   const GridGeometry<Dim> geometry = grid_geometry<Dim>(scene.grid);
   check_memory<Dim>(scene, geometry, available_memory());  // before anything the size of the scene is allocated
   auto scheme = make_scene_scheme<Dim>(scene);
@@ -415,6 +442,7 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   bool track_corners = false;
   for (int k = 0; k < static_cast<int>(scene.bodies.size()); ++k)
     bodies.push_back(build_body<Dim>(scene, k, geometry, shape, track_corners));
+  apply_geostatic_stress<Dim>(scene, bodies, geometry);  // a set's stress at rest under gravity (over all bodies)
   // Optional modules the scene asks for (thermal: heat conduction), built before the first snapshot so that
   // their particle fields are part of it.
   std::vector<std::shared_ptr<Module<Dim>>> modules = prepare_scene_extensions<Dim>(scene, bodies, geometry);
@@ -429,6 +457,10 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
   build_scene_extensions<Dim>(scene, *sim);  // modules with their own scene section (contact)
   if (auto sets = scene_set_conditions<Dim>(scene)) sim->add_module(std::move(sets));  // after contact: it holds last
   if (track_corners) sim->add_module(std::make_shared<CpdiCornerTracking<Dim>>(shape.domain_corners));
+  if (scene.solver.gravity_stage && gravity_stage) {  // before the books: the run's E(0) is the settled state
+    GravityStageReport report = settle_under_gravity<Dim>(scene, *sim);
+    if (stage_report) *stage_report = std::move(report);
+  }
   add_failure_module<Dim>(scene, *sim, reorders_particles);
   add_damping_book<Dim>(scene, *sim);     // after contact: it books the velocities contact corrected
   add_energy_sentinel<Dim>(scene, *sim);  // last: its E(0) is the audit of the complete initial state
@@ -441,8 +473,8 @@ std::unique_ptr<Simulation<Dim>> build_simulation(const SceneDescription& scene)
 template std::vector<Body<1>> prototype_bodies<1>(const SceneDescription&, const GridGeometry<1>&);
 template std::vector<Body<2>> prototype_bodies<2>(const SceneDescription&, const GridGeometry<2>&);
 template std::vector<Body<3>> prototype_bodies<3>(const SceneDescription&, const GridGeometry<3>&);
-template std::unique_ptr<Simulation<1>> build_simulation<1>(const SceneDescription&);
-template std::unique_ptr<Simulation<2>> build_simulation<2>(const SceneDescription&);
-template std::unique_ptr<Simulation<3>> build_simulation<3>(const SceneDescription&);
+template std::unique_ptr<Simulation<1>> build_simulation<1>(const SceneDescription&, bool, GravityStageReport*);
+template std::unique_ptr<Simulation<2>> build_simulation<2>(const SceneDescription&, bool, GravityStageReport*);
+template std::unique_ptr<Simulation<3>> build_simulation<3>(const SceneDescription&, bool, GravityStageReport*);
 
 }  // namespace mpm::app

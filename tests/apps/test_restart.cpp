@@ -350,6 +350,25 @@ Case particle_sets() {
           checkpoint_at(0.1)};
 }
 
+// The gravity stage (docs/theory.md §20): the run starts from the settled column; a footing set is then pushed in.
+// The restart does not run the stage again (the checkpoint holds the settled state) and reaches the same bits.
+Case gravity_stage() {
+  return {"gravity_stage",
+          "dimension: 2\n"
+          "grid: {extent: [1, 1.2], cell_size: 0.1, boundary: {x_min: slip, x_max: slip, y_min: fixed}}\n"
+          "materials: {soil: {model: linear_elastic, density: 2000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}\n"
+          "bodies: [{name: soil, material: soil, shape: {type: box, min: [0, 0], max: [1, 1]}}]\n"
+          "sets: {footing: {region: {type: box, min: [0, 0.9], max: [0.3, 1]}}}\n"
+          "conditions: [{set: footing, velocity: [free, \"-0.5 * t\"]}]\n"
+          "solver: {cfl: 0.5, end_time: 0.1, gravity: [0, -10], gravity_stage: {tolerance: 1.0e-3}}\n"
+          "output:\n"
+          "  interval: 0.02\n"
+          "  fields: [velocity, stress, displacement]\n"
+          "  histories:\n"
+          "    - {name: footing, type: reaction, set: footing, interval: 0.01}\n" +
+              checkpoint_at(0.05)};
+}
+
 class InterruptedRun : public ::testing::TestWithParam<Case> {};
 
 TEST_P(InterruptedRun, ReachesTheSameBitsAsTheUninterruptedOne) {
@@ -357,8 +376,8 @@ TEST_P(InterruptedRun, ReachesTheSameBitsAsTheUninterruptedOne) {
 }
 
 std::vector<Case> cases() {
-  std::vector<Case> all{two_disks(), cpdi_q4(),   tlmpm(),   apic(),         histories(),
-                        outflow(),   absorbing(), erosion(), particle_sets()};
+  std::vector<Case> all{two_disks(), cpdi_q4(),   tlmpm(),   apic(),          histories(),
+                        outflow(),   absorbing(), erosion(), particle_sets(), gravity_stage()};
 #ifdef MPM_WITH_FLUIDS
   all.push_back(dam_break());
   all.push_back(sod());

@@ -59,7 +59,7 @@ std::vector<double> grid_density(const std::string& yaml, const std::string& nam
   return values;
 }
 
-const std::string block = R"(
+const std::string resting_block = R"(
 dimension: 2
 grid: {origin: [0, 0], extent: [1, 1], cell_size: 0.1@COORDINATES@}
 materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}
@@ -71,7 +71,7 @@ solver: {scheme: musl, dt: 1.0e-6, end_time: 1}
 // the contour ρ/2 is the body's outline.
 TEST(NodeVolume, GridDensityOfABlockAtRest) {
   std::array<int, 3> dims{};
-  const auto rho = grid_density(test::fill(block, {{"COORDINATES", ""}, {"X0", "0.2"}}), "cartesian", dims);
+  const auto rho = grid_density(test::fill(resting_block, {{"COORDINATES", ""}, {"X0", "0.2"}}), "cartesian", dims);
   ASSERT_EQ(rho.size(), 121u);
   const auto at = [&](int i, int j) { return rho[static_cast<std::size_t>(i + dims[0] * j)]; };
   EXPECT_NEAR(at(4, 3), 1000, 1e-9);  // inside
@@ -85,8 +85,8 @@ TEST(NodeVolume, GridDensityOfABlockAtRest) {
 // axis the particles' midpoint quadrature of φ r (concave there: no opposite half to cancel its error) gives 9/8 ρ.
 TEST(NodeVolume, GridDensityOfARevolvedBlockAtRest) {
   std::array<int, 3> dims{};
-  const auto rho = grid_density(test::fill(block, {{"COORDINATES", ", coordinates: axisymmetric"}, {"X0", "0"}}),
-                                "axisymmetric", dims);
+  const auto rho = grid_density(
+      test::fill(resting_block, {{"COORDINATES", ", coordinates: axisymmetric"}, {"X0", "0"}}), "axisymmetric", dims);
   ASSERT_EQ(rho.size(), 121u);
   const auto at = [&](int i, int j) { return rho[static_cast<std::size_t>(i + dims[0] * j)]; };
   EXPECT_NEAR(at(3, 3), 1000, 1e-9);  // inside

@@ -142,13 +142,25 @@ void EnergySentinel<Dim>::save_state(StateArchive& archive, const std::string& p
   archive.put_number(prefix + "largest_ratio", largest_ratio_);
   archive.put_integer(prefix + "largest_ratio_step", largest_ratio_step_);
   archive.put_integer(prefix + "drift_step", drift_ ? drift_->step : 0);
+  // E(0): the scene's initial state, or the state a gravity stage settled to, which a restart does not settle again
+  archive.put_number(prefix + "initial_kinetic", initial_.kinetic);
+  archive.put_number(prefix + "initial_strain", initial_.strain);
+  archive.put_number(prefix + "initial_gravity", initial_.gravity);
+  archive.put_number(prefix + "initial_plastic_work", initial_.plastic_work);
 }
 
 template <int Dim>
 void EnergySentinel<Dim>::restore_state(const StateArchive& archive, const std::string& prefix) {
   // A checkpoint written before the sentinel existed continues with W = 0 from the restart (E(0) is the
-  // scene's initial state either way).
+  // scene's initial state either way); one written before E(0) was kept has the scene's initial state, which a
+  // scene without a gravity stage rebuilds.
   if (!archive.contains(prefix + "work")) return;
+  if (archive.contains(prefix + "initial_kinetic")) {
+    initial_.kinetic = archive.number(prefix + "initial_kinetic");
+    initial_.strain = archive.number(prefix + "initial_strain");
+    initial_.gravity = archive.number(prefix + "initial_gravity");
+    initial_.plastic_work = archive.number(prefix + "initial_plastic_work");
+  }
   work_ = archive.number(prefix + "work");
   scale_ = archive.number(prefix + "scale");
   largest_ratio_ = archive.number(prefix + "largest_ratio");

@@ -24,6 +24,12 @@ std::unique_ptr<Material<Dim>> make_elastic(const MaterialDescription& d) {
   return std::make_unique<MaterialBatch<Dim, Law>>(ElasticConstants::from_parameters(d.parameters));
 }
 
+/// K0 of a laterally confined elastic column under its weight: no lateral strain, sigma_h = nu / (1 - nu) sigma_v
+/// (docs/theory.md eq. 20.2).
+double confined_k0(const std::map<std::string, double>& p) {
+  return p.at("poisson_ratio") / (1 - p.at("poisson_ratio"));
+}
+
 template <class Law>
 MaterialModel elastic_model(const char* description, ThermalExpansion expansion, bool takes_initial_stress) {
   return {.key = Law::key,
@@ -33,7 +39,8 @@ MaterialModel elastic_model(const char* description, ThermalExpansion expansion,
           .make_2d = &make_elastic<2, Law>,
           .make_3d = &make_elastic<3, Law>,
           .thermal_expansion = expansion,
-          .takes_initial_stress = takes_initial_stress};
+          .takes_initial_stress = takes_initial_stress,
+          .at_rest_coefficient = takes_initial_stress ? &confined_k0 : nullptr};
 }
 
 }  // namespace

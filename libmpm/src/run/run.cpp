@@ -18,12 +18,22 @@ constexpr unsigned checkpoint_due = 1, interrupt = 2;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+/// gravity_stage.csv: `step, dt, unbalanced_force_ratio, kinetic_energy`, one row per step of the stage.
+void write_gravity_stage(const std::filesystem::path& directory, const GravityStageReport& report) {
+  io::CsvLog table(directory / "gravity_stage.csv", {"step", "dt", "unbalanced_force_ratio", "kinetic_energy"});
+  for (const auto& r : report.rows) table.append({static_cast<double>(r.step), r.dt, r.ratio, r.kinetic_energy});
+}
+
 }  // namespace
 
 template <int Dim>
 Run<Dim>::Run(const SceneDescription& scene, std::unique_ptr<Simulation<Dim>> sim, RunLog& log,
-              std::vector<std::string> warnings)
-    : scene_(scene), sim_(std::move(sim)), log_(log), scene_warnings_(std::move(warnings)) {
+              std::vector<std::string> warnings, std::optional<GravityStageReport> gravity_stage)
+    : scene_(scene),
+      sim_(std::move(sim)),
+      log_(log),
+      scene_warnings_(std::move(warnings)),
+      gravity_stage_(std::move(gravity_stage)) {
   // The histories' checks at t = 0 see every particle (before a distributed run shares them out).
   built_histories_ = build_histories<Dim>(scene_, *sim_, scene_warnings_);
 }
@@ -53,6 +63,7 @@ void Run<Dim>::start(RunOutput output) {
       step_log_ =
           std::make_unique<io::CsvLog>(writer_->directory() / std::string(file), sim_->scheme().step_log_columns());
     if (rank_zero) io::write_view_script(writer_->directory() / "view.py", output_.view_script);
+    if (rank_zero && gravity_stage_ && !output_.restart) write_gravity_stage(writer_->directory(), *gravity_stage_);
   } else {
     output_.checkpoints = nullptr;                               // a checkpoint holds the output's state
     if (output_.keep_history_rows && !built_histories_.empty())  // sampled for the rows only, no file
@@ -61,6 +72,7 @@ void Run<Dim>::start(RunOutput output) {
   }
   if (histories_) histories_->keep_rows(output_.keep_history_rows);
   built_histories_.clear();
+  if (gravity_stage_ && !output_.restart && rank_zero) log_.line(gravity_stage_->summary());
   record_.warned.assign(sim_->bodies().size(), false);
   record_.initial_energy = sim_->energy().total();
   if (output_.restart) {

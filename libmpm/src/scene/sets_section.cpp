@@ -75,10 +75,20 @@ const std::vector<io::KeySpec>& condition_keys() {
        .absent = "zero stress",
        .description = "Cauchy stress of the set's particles at t = 0, expressions of x, y, z, in the order of the "
                       "output field `stress` (xx, yy, zz in 1D; xx, yy, zz, xy in 2D, axisymmetric rr, zz, "
-                      "thetatheta, rz; xx, yy, zz, xy, yz, xz in 3D): e.g. a geostatic state. For models whose "
-                      "stress is their state (hypoelastic: the models marked so in [materials](#materials)); the "
-                      "others refuse it",
-       .type_text = "list of 3, 4 or 6 expressions"},
+                      "thetatheta, rz; xx, yy, zz, xy, yz, xz in 3D); or `geostatic`: the state at rest under "
+                      "`solver.gravity` (along an axis) below the set's free surface, vertical stress the weight of "
+                      "the set's material above the point in its column of cells, horizontal stresses `k0` times it, "
+                      "no shear (docs/theory.md eqs 20.1-20.2). For models whose stress is their state "
+                      "(hypoelastic: the models marked so in [materials](#materials)); the others refuse it",
+       .type_text = "list of 3, 4 or 6 expressions, or `geostatic`"},
+      {.name = "k0",
+       .type = KeyType::number,
+       .unit = "-",
+       .range = io::Range::at_least(0),
+       .absent = "each body's model's: Jaky's 1 - sin(friction_angle) for `drucker_prager` and `mohr_coulomb`, 1 - "
+                 "sin(atan(mu_s)) for `mu_i`, poisson_ratio / (1 - poisson_ratio) for `linear_elastic`",
+       .description = "with `initial_stress: geostatic` only: the coefficient of earth pressure at rest, horizontal "
+                      "over vertical stress (eq. 20.2)"},
   };
   return keys;
 }
@@ -160,18 +170,9 @@ std::array<std::optional<std::string>, 3> read_components(const YamlReader& read
   return out;
 }
 
-/// `initial_stress`: the components of the stress field in this dimension, on bodies whose model takes an initial
-/// stress (MaterialModel::takes_initial_stress).
-std::array<std::optional<std::string>, 6> read_initial_stress(const YamlReader& reader, const YamlValue& value,
-                                                              const SceneDescription& scene, int set) {
-  const std::size_t count = scene.dimension == 1 ? 3 : scene.dimension == 2 ? 4 : 6;
-  const char* const order = scene.dimension == 1                                  ? "xx, yy, zz"
-                            : scene.grid.coordinates == Coordinates::axisymmetric ? "rr, zz, thetatheta, rz"
-                            : scene.dimension == 2                                ? "xx, yy, zz, xy"
-                                                                                  : "xx, yy, zz, xy, yz, xz";
-  const auto items = reader.list(value, count, "components", order);
-  std::array<std::optional<std::string>, 6> out;
-  for (std::size_t k = 0; k < count; ++k) out[k] = reader.expression(items[k], {"x", "y", "z"}, "Pa");
+/// Fails unless every body of set `set` has a model whose stress is its state (MaterialModel::takes_initial_stress).
+void check_initial_stress_models(const YamlReader& reader, const YamlValue& value, const SceneDescription& scene,
+                                 int set) {
   std::vector<int> bodies = scene.sets[static_cast<std::size_t>(set)].bodies;
   if (bodies.empty())
     for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b) bodies.push_back(b);
@@ -187,6 +188,25 @@ std::array<std::optional<std::string>, 6> read_initial_stress(const YamlReader& 
                       body.name, material.name, material.model,
                       material_model_names_where([](const MaterialModel& m) { return m.takes_initial_stress; })));
   }
+}
+
+/// `initial_stress`: the components of the stress field in this dimension, on bodies whose model takes an initial
+/// stress (MaterialModel::takes_initial_stress).
+std::array<std::optional<std::string>, 6> read_initial_stress(const YamlReader& reader, const YamlValue& value,
+                                                              const SceneDescription& scene, int set) {
+  std::array<std::optional<std::string>, 6> out;
+  check_initial_stress_models(reader, value, scene, set);
+  if (value.node.IsScalar() && value.node.Scalar() == "geostatic") return out;  // sets/geostatic_stress.hpp
+  const std::size_t count = scene.dimension == 1 ? 3 : scene.dimension == 2 ? 4 : 6;
+  const char* const order = scene.dimension == 1                                  ? "xx, yy, zz"
+                            : scene.grid.coordinates == Coordinates::axisymmetric ? "rr, zz, thetatheta, rz"
+                            : scene.dimension == 2                                ? "xx, yy, zz, xy"
+                                                                                  : "xx, yy, zz, xy, yz, xz";
+  if (value.node.IsScalar())
+    reader.fail(value, fmt::format("expected a list of {} expressions ({}) or `geostatic`, got '{}'", count, order,
+                                   value.node.Scalar()));
+  const auto items = reader.list(value, count, "components", order);
+  for (std::size_t k = 0; k < count; ++k) out[k] = reader.expression(items[k], {"x", "y", "z"}, "Pa");
   return out;
 }
 
@@ -218,7 +238,14 @@ SetConditionDescription read_condition(const YamlReader& reader, const YamlValue
   }
   if (force) c.force = read_components(reader, *force, dim, {"t"}, "N", false);
   if (initial) c.initial_velocity = read_components(reader, *initial, dim, {"x", "y", "z"}, "m/s", false);
-  if (stress) c.initial_stress = read_initial_stress(reader, *stress, scene, c.set);
+  if (stress) {
+    c.initial_stress = read_initial_stress(reader, *stress, scene, c.set);
+    c.geostatic = stress->node.IsScalar() && stress->node.Scalar() == "geostatic";
+  }
+  if (const auto k0 = map.find("k0")) {
+    if (!c.geostatic) reader.fail(*k0, "k0 is the ratio of a geostatic stress: give it with initial_stress: geostatic");
+    c.k0 = map.optional_number("k0");
+  }
   if (velocity && force)
     for (int d = 0; d < dim; ++d)
       if (c.velocity[static_cast<std::size_t>(d)] && c.force[static_cast<std::size_t>(d)])

@@ -24,6 +24,41 @@ std::string scheme_choices_text() {
   return text;
 }
 
+/// `solver.gravity_stage`'s keys (simulation/gravity_stage.hpp).
+std::vector<io::KeySpec> gravity_stage_keys() {
+  using io::KeyType;
+  return {
+      {.name = "damping",
+       .type = KeyType::number,
+       .unit = "-",
+       .range = io::Range::open(0, 1),
+       .default_value = 0.8,
+       .description = "the local damping alpha of the stage (eq. 2.74; FLAC's default 0.8); the run afterwards has "
+                      "`solver.damping`"},
+      {.name = "tolerance",
+       .type = KeyType::number,
+       .unit = "-",
+       .range = io::Range::above(0),
+       .default_value = 1e-4,
+       .description = "the stage ends once the unbalanced force ratio (docs/theory.md eq. 20.3: the norm of the "
+                      "nodal forces out of balance over that of the nodal weights) stays below this for 10 steps in "
+                      "a row"},
+      {.name = "max_steps",
+       .type = KeyType::integer,
+       .range = io::Range::at_least(1),
+       .default_value = 100000.0,
+       .description = "the stage gives up after this many steps",
+       .type_text = "integer (steps)"},
+      {.name = "on_no_equilibrium",
+       .type = KeyType::choice,
+       .choices = enum_names<NoEquilibriumAction>(),
+       .default_value = std::string("stop"),
+       .description = "when the ratio is still above the tolerance after `max_steps`: `stop` ends the program with "
+                      "the ratio reached, at this key (exit status 2; a slope that fails under its own weight never "
+                      "settles), `warn` logs it and starts the run from the state reached"},
+  };
+}
+
 /// The core's keys of `solver:`.
 std::vector<io::KeySpec> core_solver_keys() {
   using io::KeyType;
@@ -173,6 +208,12 @@ std::vector<io::KeySpec> core_solver_keys() {
                       "table for the scheme, shape function and transfer); `stop`: the run also ends there through "
                       "the stability path (exit status 3, the state of that step written as the last frame). The "
                       "largest balance / tolerance of the run is printed at the end"},
+      {.name = "gravity_stage",
+       .type = KeyType::map,
+       .absent = "none: the run starts from the scene's state",
+       .description = "bring the bodies to rest under gravity before t = 0, see "
+                      "[solver.gravity_stage](#solvergravity_stage)",
+       .keys = gravity_stage_keys()},
   };
 }
 
@@ -295,6 +336,26 @@ void read_time_step(const io::SpecMap& map, SolverDescription& solver) {
   solver.dt_where = reader.location(dt ? dt->mark : cfl->mark);
 }
 
+/// `gravity_stage`: needs gravity and a scheme with the local damping (an explicit momentum update).
+GravityStageDescription read_gravity_stage(const YamlReader& reader, const YamlValue& value,
+                                           const SolverDescription& solver) {
+  const std::vector<io::KeySpec> keys = gravity_stage_keys();  // the map refers to them
+  const io::SpecMap map(reader, value, keys);
+  if (const Support& local = scheme_of(solver).traits.local_damping; !local)
+    reader.fail(value, fmt::format("the gravity stage settles the bodies with the local damping, which is not "
+                                   "available with {} ({})",
+                                   solver.scheme_name(), local.why_not));
+  if (solver.gravity == std::array<double, 3>{0, 0, 0})
+    reader.fail(value, "the gravity stage settles the bodies under gravity, and solver.gravity is zero (or absent)");
+  GravityStageDescription stage;
+  stage.damping = map.number("damping");
+  stage.tolerance = map.number("tolerance");
+  stage.max_steps = map.integer("max_steps");
+  stage.on_no_equilibrium = *enum_from_name<NoEquilibriumAction>(map.choice("on_no_equilibrium"));
+  stage.where = reader.location(value.mark);
+  return stage;
+}
+
 /// The keys of `solver:` a registered scheme owns are refused with any other scheme.
 void check_scheme_keys(const io::SpecMap& map, const SolverDescription& solver) {
   for (const auto& [spec, owner] : scheme_solver_keys())
@@ -329,6 +390,7 @@ SolverDescription read_solver(const YamlReader& reader, const YamlValue& value, 
   // The energy sentinel (energy_sentinel.hpp): a fraction of the largest energy of the run so far.
   solver.energy_tolerance = map.number("energy_tolerance");
   solver.on_energy_drift = *enum_from_name<EnergyDriftAction>(map.choice("on_energy_drift"));
+  if (const auto stage = map.find("gravity_stage")) solver.gravity_stage = read_gravity_stage(reader, *stage, solver);
   return solver;
 }
 

@@ -235,6 +235,14 @@ void Simulation<Dim>::run(const std::function<void(const Simulation&)>& after_st
 }
 
 template <int Dim>
+void Simulation<Dim>::reset_clock() {
+  time_ = 0;
+  step_ = 0;
+  failure_.reset();
+  take_snapshot();
+}
+
+template <int Dim>
 void Simulation<Dim>::take_snapshot() {
   // Copied into the buffers of the previous snapshot: no allocation (and no page faults) after the first.
   snapshot_.particles.resize(bodies_.size());

@@ -106,6 +106,11 @@ std::unique_ptr<Material<Dim>> make_soil(const MaterialDescription& d) {
   return std::make_unique<SoilBatch<Dim, Return>>(soil_params(d));
 }
 
+/// Jaky's (1944) coefficient of earth pressure at rest, K0 = 1 - sin(phi) (docs/theory.md eq. 20.2).
+double jaky_k0(const std::map<std::string, double>& p) {
+  return 1 - std::sin(p.at("friction_angle") * std::numbers::pi / 180);
+}
+
 MaterialModel drucker_prager_model() {
   std::vector<ParameterSpec> parameters = soil_parameters();
   parameters.push_back(ParameterSpec::choice(
@@ -124,7 +129,8 @@ MaterialModel drucker_prager_model() {
           .make_2d = &make_soil<2, DruckerPrager>,
           .make_3d = &make_soil<3, DruckerPrager>,
           .tracks_plastic_strain = true,
-          .takes_initial_stress = true};
+          .takes_initial_stress = true,
+          .at_rest_coefficient = jaky_k0};
 }
 
 MaterialModel mohr_coulomb_model() {
@@ -139,7 +145,8 @@ MaterialModel mohr_coulomb_model() {
           .make_2d = &make_soil<2, MohrCoulomb>,
           .make_3d = &make_soil<3, MohrCoulomb>,
           .tracks_plastic_strain = true,
-          .takes_initial_stress = true};
+          .takes_initial_stress = true,
+          .at_rest_coefficient = jaky_k0};
 }
 
 /// The mu(I) rheology: the elastic constants of the other soils, then Jop, Forterre & Pouliquen's (2006) names.
@@ -205,7 +212,11 @@ MaterialModel mu_i_model() {
           .make_2d = &make_mu_i<2>,
           .make_3d = &make_mu_i<3>,
           .tracks_plastic_strain = true,
-          .takes_initial_stress = true};
+          .takes_initial_stress = true,
+          // Jaky's K0 with the static friction angle atan(mu_s)
+          .at_rest_coefficient = [](const std::map<std::string, double>& p) {
+            return 1 - std::sin(std::atan(p.at("mu_s")));
+          }};
 }
 
 /// plastic_strain (shared with the plasticity module: the same unit and meaning) and plastic_volumetric_strain.

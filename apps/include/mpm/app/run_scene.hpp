@@ -82,9 +82,10 @@ struct RunSummary {
 /// The run of `scene` as both front ends (`mpm run`, the Python package) begin it (mpm/run/run.hpp): the simulation
 /// built (build_simulation; throws SceneError), the warnings about it (a time step collapsed by a typo,
 /// step_estimate.hpp) and the scene's histories. Its warnings are logged by Run::log_warnings(), its output opened by
-/// Run::start().
+/// Run::start(). The scene's gravity stage runs unless `restarting` (the checkpoint holds the settled state); a stage
+/// that did not settle with `on_no_equilibrium: warn` is one of the warnings.
 template <int Dim>
-std::unique_ptr<Run<Dim>> make_run(const SceneDescription& scene, RunLog& log);
+std::unique_ptr<Run<Dim>> make_run(const SceneDescription& scene, RunLog& log, bool restarting = false);
 
 /// Builds the scene's simulation without running it (throws SceneError like load_scene). The report goes to `out`,
 /// its warnings to `log` (the program's stdout and stderr: README.md, "Output streams"). `ranks` > 0 adds

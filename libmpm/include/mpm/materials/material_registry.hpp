@@ -129,6 +129,11 @@ struct MaterialModel {
   /// `initial_stress`) is where it starts. A model whose stress follows from F or J (hyperelastic, fluids, an
   /// equation of state for the pressure) has no place for one and refuses it.
   bool takes_initial_stress = false;
+  /// The coefficient of earth pressure at rest K0 = sigma_h / sigma_v of a geostatic initial stress (a condition's
+  /// `initial_stress: geostatic` without `k0`), from the validated parameters: Jaky's 1 - sin(phi) for a frictional
+  /// model, nu / (1 - nu) (no lateral strain) for an elastic one (docs/theory.md eq. 20.2). Null: the model gives
+  /// none, and a geostatic stress on it needs `k0`. Only for models that take an initial stress.
+  std::function<double(const std::map<std::string, double>& values)> at_rest_coefficient = nullptr;
   /// The kind of matter it describes (for the plausibility of its density).
   MaterialPhase phase = MaterialPhase::solid;
   /// Keys of the model whose values are not numbers (a file name, a list, a word), for the loader (allowed keys) and

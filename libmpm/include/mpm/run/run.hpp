@@ -9,6 +9,8 @@
 ///     at the end, the first of each body logged once; the energy sentinel's drift (energy_sentinel.hpp), logged as
 ///     a warning, or with `solver.on_energy_drift: stop` thrown as a StabilityError (field "energy_balance"); the
 ///     first departure of each body through each outflow face (boundary/grid_boundary.hpp), a warning;
+///   - the gravity stage's report (gravity_stage.hpp), when the builder ran one: its summary in the log and
+///     gravity_stage.csv (one row per step of the stage);
 ///   - the checkpoints: when a sink (checkpoint_sink.hpp) is given, one after every step it says is due, one at the
 ///     end, and one when the run is interrupted; each holds the run record (run_record.hpp) too.
 /// Messages go to one RunLog (run_log.hpp); progress, stop requests and the flight recorder are the front end's,
@@ -37,6 +39,7 @@
 #include "mpm/run/run_observer.hpp"
 #include "mpm/run/run_record.hpp"
 #include "mpm/scene/scene.hpp"
+#include "mpm/simulation/gravity_stage.hpp"
 #include "mpm/simulation/simulation.hpp"
 
 namespace mpm {
@@ -77,8 +80,10 @@ class Run {
   /// Takes the built simulation of `scene` (a copy is kept: the histories point into it) and builds the scene's
   /// histories on it (throws SceneError like the builder, naming the key). `warnings`: the front end's warnings
   /// about the built scene (the step estimate), which log_warnings() logs before the histories'.
+  /// `gravity_stage`: the report of the gravity stage the builder ran on `sim` (gravity_stage.hpp), if it ran:
+  /// start() logs its summary and writes gravity_stage.csv.
   Run(const SceneDescription& scene, std::unique_ptr<Simulation<Dim>> sim, RunLog& log,
-      std::vector<std::string> warnings = {});
+      std::vector<std::string> warnings = {}, std::optional<GravityStageReport> gravity_stage = {});
   ~Run();
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
@@ -146,6 +151,7 @@ class Run {
   std::unique_ptr<Simulation<Dim>> sim_;
   RunLog& log_;
   std::vector<std::string> scene_warnings_;
+  std::optional<GravityStageReport> gravity_stage_;
   std::vector<BuiltHistory<Dim>> built_histories_;  ///< until start()
   RunOutput output_;
   std::unique_ptr<OutputWriter<Dim>> writer_;

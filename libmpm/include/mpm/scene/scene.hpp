@@ -128,8 +128,23 @@ struct SetConditionDescription {
   /// The initial Cauchy stress of the set's particles, Pa, expressions of x, y, z, in the stress field's component
   /// order (xx, yy, zz, xy, yz, xz; the first 3, 4 or 6 in 1D, 2D, 3D): the state a hypoelastic model starts from.
   std::array<std::optional<std::string>, 6> initial_stress;
+  /// `initial_stress: geostatic`: the stress of the set at rest under gravity (sets/geostatic_stress.hpp,
+  /// docs/theory.md eqs 20.1-20.2) instead of expressions.
+  bool geostatic = false;
+  /// K0 = sigma_h / sigma_v of the geostatic stress; absent: each body's model's (MaterialModel::at_rest_coefficient).
+  std::optional<double> k0;
   SourceLocation where;
   std::string path;  ///< its key path for messages, e.g. "conditions[1]"
+};
+
+/// `solver.gravity_stage` (simulation/gravity_stage.hpp, docs/theory.md §20): before t = 0 the bodies settle under
+/// gravity with local damping until the unbalanced force is small; the run then starts from that state at rest.
+struct GravityStageDescription {
+  double damping = 0.8;     ///< alpha of eq. 2.74 during the stage, in (0, 1)
+  double tolerance = 1e-4;  ///< the unbalanced force ratio (eq. 20.3) at which the bodies count as at rest
+  int max_steps = 100000;   ///< the stage gives up after this many steps
+  NoEquilibriumAction on_no_equilibrium = NoEquilibriumAction::stop;
+  SourceLocation where;
 };
 
 struct SolverDescription {
@@ -158,6 +173,7 @@ struct SolverDescription {
   /// The energy sentinel's tolerance, a fraction of the largest energy of the run so far (energy_sentinel.hpp)
   double energy_tolerance = 0.05;
   EnergyDriftAction on_energy_drift = EnergyDriftAction::warn;
+  std::optional<GravityStageDescription> gravity_stage;  ///< `gravity_stage`: settle under gravity before t = 0
   SourceLocation dt_where;
 
   /// The scheme's scene name.

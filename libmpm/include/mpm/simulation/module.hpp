@@ -118,6 +118,12 @@ class ModuleHooks {
   void end_of_step(StepContext<Dim>& c) {
     for (auto* m : end_of_step_) m->end_of_step(c);
   }
+  /// Takes `m` out of every phase and of all().
+  void remove(const Module<Dim>* m) {
+    for (auto* list : {&after_p2g_, &grid_velocity_, &after_g2p_, &after_stress_, &end_of_step_, &before_step_})
+      std::erase(*list, m);
+    std::erase_if(all_, [&](const std::shared_ptr<Module<Dim>>& k) { return k.get() == m; });
+  }
   bool has_after_g2p() const { return !after_g2p_.empty(); }
   const std::vector<std::shared_ptr<Module<Dim>>>& all() const { return all_; }
 

@@ -62,6 +62,8 @@ class Simulation {
     hooks_.add(std::move(module));
   }
   const std::vector<std::shared_ptr<Module<Dim>>>& modules() const { return hooks_.all(); }
+  /// Takes `module` out of the step (the gravity stage's meter, gravity_stage.hpp, when the stage ends).
+  void remove_module(const Module<Dim>* module) { hooks_.remove(module); }
   /// Adds the energy sentinel (energy_sentinel.hpp; the builder adds one to every scene, last) as a module and keeps
   /// it, for the run object (run/run.hpp), which logs its drift or stops on it, and the flight recorder's diagnosis.
   /// (A template only so that this header needs no definition of EnergySentinel: `Sentinel` is EnergySentinel<Dim>.)
@@ -98,6 +100,14 @@ class Simulation {
   std::size_t exchanging_bodies() const;
   /// Steps between balance checks of a distributed run (SimulationSettings::rebalance_interval; 0: never).
   void set_rebalance_interval(int steps) { settings_.rebalance_interval = steps; }
+  /// The transfers' settings from the next step on (the gravity stage's damping and PIC transfer, then the scene's).
+  void set_transfer_settings(const TransferSettings<Dim>& transfer) { settings_.transfer = transfer; }
+  /// Sets the clock to `time` without a step (the gravity stage runs each of its steps from -dt to 0, so that the
+  /// conditions end them with their values of t = 0).
+  void set_time(Real time) { time_ = time; }
+  /// Starts the clock anew: time 0, step 0, the guard's snapshot taken of the present state (the gravity stage's
+  /// end: the run starts from the state it reached).
+  void reset_clock();
   /// Distributed run: whether every scatter exchanges (SimulationSettings::exchange_every_scatter).
   void set_exchange_every_scatter(bool on) { settings_.exchange_every_scatter = on; }
   /// One process: whether the grid kernels visit only the nodes the particles reach (SimulationSettings::sparse_grid;

@@ -44,4 +44,14 @@ struct EnumNames<EnergyDriftAction> {
       {{EnergyDriftAction::warn, "warn"}, {EnergyDriftAction::stop, "stop"}}};
 };
 
+/// What a run does when its gravity stage (`solver.gravity_stage`) does not reach equilibrium within its steps:
+/// stop with a message, or warn and start the run from the state reached.
+enum class NoEquilibriumAction { stop, warn };
+
+template <>
+struct EnumNames<NoEquilibriumAction> {
+  static constexpr std::array<std::pair<NoEquilibriumAction, std::string_view>, 2> table{
+      {{NoEquilibriumAction::stop, "stop"}, {NoEquilibriumAction::warn, "warn"}}};
+};
+
 }  // namespace mpm
