@@ -3,9 +3,14 @@
 /// The sand pile of issue 52 (angle of repose; bench/sand_pile.py is the same case from the command line): half of a
 /// symmetric pile, a column of cohesionless sand L0 = 1 m wide and H0 = 1 m tall against a smooth wall (x_min: slip,
 /// the plane of symmetry) on a rough base (y_min: fixed), released from rest and zero stress under gravity with local
-/// (Cundall) damping (docs/theory.md eq. 2.74), which takes most of the inertia out of the collapse: the flank fails
-/// and creeps towards the static slope limit (docs/theory.md eqs. 18.25-18.26). Sand: rho = 1800 kg/m^3, E = 2 MPa, nu
-/// = 0.3 (rho g H0 / E = 0.9%), c = 0, psi = 0; MUSL, quadratic B-splines, APIC, 2 particles per cell per axis.
+/// (Cundall) damping (docs/theory.md eq. 2.74), which takes the inertia out of the collapse: the flank fails, flows and
+/// stops. Sand: rho = 1800 kg/m^3, E = 2 MPa, nu = 0.3 (rho g H0 / E = 0.9%), c = 0, no dilation (psi = 0); MUSL,
+/// quadratic B-splines, APIC, 2 particles per cell per axis.
+///
+/// The references (docs/theory.md eqs. 18.25-18.27): a flowing surface layer stops at tan(beta_flow) = sin(phi) for
+/// Mohr-Coulomb without dilation (22.91 and 29.84 deg at phi = 25 and 35 deg; Davis 1968) and at tan(beta_flow) = eta
+/// for the plane_strain Drucker-Prager cone (22.32 and 28.57 deg); a slope can stand up to the static limit, phi for
+/// Mohr-Coulomb and asin(eta) for the cone (24.24 and 32.99 deg). The two agree (at phi) only for associated flow.
 ///
 /// The slope is read from the final particles: the free surface is the highest particle of each column one cell wide
 /// along x (its y plus half a particle spacing); the flank is the surface points between 25% and 75% of the pile's
@@ -54,16 +59,26 @@ inline std::string pile_scene(const Pile& p) {
   return granular_column_scene(c);
 }
 
-/// The static slope limit in plane strain, deg: phi for Mohr-Coulomb (docs/theory.md eq. 18.25); for the
-/// plane_strain cone with psi = 0, asin(eta) with eta of eq. 18.3 (eq. 18.26).
-inline double slope_limit(const Pile& p) {
-  if (p.model == "mohr_coulomb") return p.phi;
-  const double t = std::tan(p.phi * degree);
-  return std::asin(3 * t / std::sqrt(9 + 12 * t * t)) / degree;
+/// The plane_strain cone's eta (docs/theory.md eq. 18.3).
+inline double plane_strain_eta(double phi_deg) {
+  const double t = std::tan(phi_deg * degree);
+  return 3 * t / std::sqrt(9 + 12 * t * t);
+}
+
+/// The static slope limit in plane strain, deg: phi for Mohr-Coulomb (docs/theory.md eq. 18.25); asin(eta) for the
+/// plane_strain cone with psi = 0 (eq. 18.26).
+inline double static_limit(const Pile& p) {
+  return p.model == "mohr_coulomb" ? p.phi : std::asin(plane_strain_eta(p.phi)) / degree;
+}
+
+/// The slope at which a layer flowing parallel to the surface stops, deg (docs/theory.md eq. 18.27 with psi = 0):
+/// atan(sin phi) for Mohr-Coulomb, atan(eta) for the plane_strain cone.
+inline double flow_limit(const Pile& p) {
+  return std::atan(p.model == "mohr_coulomb" ? std::sin(p.phi * degree) : plane_strain_eta(p.phi)) / degree;
 }
 
 /// The surface: the highest particle of each column of width h along x, (x, y + spacing/2), by x.
-inline std::vector<std::pair<double, double>> surface(const Particles<2>& p, double h, double spacing) {
+inline std::vector<std::pair<double, double>> surface(const ParticleSet<2>& p, double h, double spacing) {
   std::map<long, std::pair<double, double>> top;
   for (Index i = 0; i < p.size(); ++i) {
     const long k = static_cast<long>(std::floor(p.x[i][0] / h));
@@ -99,8 +114,8 @@ inline Flank flank(const std::vector<std::pair<double, double>>& s) {
 
 struct PileResult {
   Flank flank;
-  double limit = 0;  ///< deg, slope_limit
-  double speed = 0;  ///< m/s, the rms speed at the end
+  double beta_flow = 0, beta_static = 0;  ///< deg, flow_limit and static_limit
+  double speed = 0;                       ///< m/s, the rms speed at the end
   long long steps = 0;
 };
 
@@ -110,15 +125,17 @@ inline PileResult run_pile(const Pile& p) {
   const double h = L0 / p.cells;
   PileResult r;
   r.flank = flank(surface(sim->bodies().front().particles, h, h / 2));
-  r.limit = slope_limit(p);
+  r.beta_flow = flow_limit(p);
+  r.beta_static = static_limit(p);
   const EnergyBalance e = sim->energy();
   r.speed = std::sqrt(2 * e.kinetic / e.mass);
   r.steps = static_cast<long long>(sim->step());
   std::printf(
       "[ measured ] sand pile, %s phi = %g deg, %d cells per L0, damping %g, T = %g sqrt(H0/g): flank %.2f deg "
-      "(%d surface points), static limit %.2f deg (%+.2f), rms speed at the end %.1e m/s, %lld steps\n",
-      p.model.c_str(), p.phi, p.cells, p.damping, p.time, r.flank.angle, r.flank.points, r.limit,
-      r.flank.angle - r.limit, r.speed, r.steps);
+      "(%d surface points); flowing limit %.2f deg (%+.2f), static limit %.2f deg (%+.2f); rms speed at the end "
+      "%.1e m/s, %lld steps\n",
+      p.model.c_str(), p.phi, p.cells, p.damping, p.time, r.flank.angle, r.flank.points, r.beta_flow,
+      r.flank.angle - r.beta_flow, r.beta_static, r.flank.angle - r.beta_static, r.speed, r.steps);
   return r;
 }
 
