@@ -1,35 +1,33 @@
 #!/usr/bin/env python3
-"""Angle of repose of a cohesionless sand pile in plane strain against the friction angle (issue 52, item 4).
+"""Angle of repose of a cohesionless sand pile in plane strain (issue 52, item 4): the ladders of
+docs/verification-notes.md, "Angle of repose of a sand pile"; tests/verification/sand_pile.hpp is the same case.
 
-Half of a symmetric pile: a column of sand L0 = 1 m wide and H0 = a L0 tall against a smooth wall (x_min: slip, the
-pile's plane of symmetry) on a rough base (y_min: fixed, no slip), released from rest and zero stress under gravity
-with local (Cundall) damping (`solver.damping`, docs/theory.md eq. 2.74), run for T = `--time` sqrt(H0/g). Its flank
-fails and flows until it stands at the static slope limit of the material. The slope is read from the last frame:
+Half of a symmetric pile: a column of sand L0 = 1 m wide and H0 = a L0 tall (or, with --initial DEG, a triangle whose
+flank stands DEG degrees steeper than phi) against a smooth wall (x_min: slip, the pile's plane of symmetry) on a
+rough base (y_min: fixed, no slip), released from rest and zero stress under gravity with local (Cundall) damping
+(`solver.damping`, docs/theory.md eq. 2.74), run for T = `--time` sqrt(H0/g). Its flank fails, flows and stops. The
+slope is read from the last frame:
 
   - the free surface: the particles sorted into columns of one cell h along x, the highest particle of each column
     (its x and its y + dp/2, dp the initial particle spacing);
   - the flank: those surface points whose height lies between 25% and 75% of the pile's height H (the highest surface
-    point), which leaves out the toe (the thin front) and the crest (the rounded shoulder and any plateau);
+    point), which leaves out the toe (the thin front) and the crest (the rounded shoulder);
   - the angle: the least-squares line y = c0 + c1 x through the flank points, beta = atan(-c1); the table gives the
-    rms distance of the points from the line (in dp) as the measure of how straight the flank is.
+    rms distance of the points from the line (in dp): how straight the flank is.
 
-The reference (docs/theory.md, "Static slope limit"): a cohesionless Mohr-Coulomb slope stands at beta <= phi (an
-infinite slope's surface-parallel plane carries tau / sigma_n = tan beta), so the flank of a pile that failed stops
-at beta = phi. For Drucker-Prager in plane strain the limit is the Mohr-Coulomb angle phi_eff of the cone at the
-out-of-plane stress of plane-strain plastic flow (d eps_zz^p = 0):
+The references (docs/theory.md eqs. 18.25-18.27): a slope can stand up to the static limit, phi for Mohr-Coulomb and
+phi_ps of eq. 18.26 for Drucker-Prager in plane strain (asin(eta) without dilation); a layer flowing down the surface
+stops at tan(beta_flow) = sin(phi_ps) cos(psi_ps) / (1 - sin(phi_ps) sin(psi_ps)) (Davis 1968): atan(sin phi) for
+Mohr-Coulomb and atan(eta) for the cone without dilation. With associated flow both are phi for Mohr-Coulomb and the
+plane_strain cone.
 
-  sin phi_eff = eta sqrt(1 - eta_bar^2 / 3) / (1 - eta eta_bar / 3)
-
-(eta, eta_bar: eq. 18.3 with phi and psi): phi_eff = phi for the plane_strain matching with associated flow
-(psi = phi); with psi = 0, sin phi_eff = eta (25 deg -> 24.24, 35 deg -> 32.99 with plane_strain).
-
-Sand: rho = 1800 kg/m^3, E = 2 MPa, nu = 0.3 (rho g H0 / E = 0.9% at a = 1: the elastic settlement does not move
-the angle), c = 0. MUSL, quadratic B-splines, APIC, 2 particles per cell per axis, CFL 0.4.
+Sand: rho = 1800 kg/m^3, E = 2 MPa, nu = 0.3 (rho g H0 / E = 0.9% at a = 1), c = 0. MUSL, quadratic B-splines, APIC,
+2 particles per cell per axis, CFL 0.4.
 
     /usr/bin/python3 bench/sand_pile.py                              # the table of docs/verification-notes.md
-    /usr/bin/python3 bench/sand_pile.py --models mohr_coulomb --angles 30 --cells 10,20,40
-    options: --mpm PATH (default build/apps/mpm), --out DIR (default build/sand_pile), --damping D, --time T,
-             --aspect-ratio A, --dilation {zero,associated}, --matching M, --shape S, --csv FILE
+    /usr/bin/python3 bench/sand_pile.py --models mohr_coulomb --angles 25 --cells 10,20,40 --damping 0,0.5,0.8
+    options: --mpm PATH (default build/apps/mpm), --out DIR (default build/sand_pile), --time T, --aspect-ratio A,
+             --dilation {zero,associated}, --matching M, --shape S, --initial column|DEG, --youngs-modulus E, --csv FILE
 """
 import argparse
 import csv
@@ -55,13 +53,22 @@ def cone(phi, matching):
     return 3 * t / math.sqrt(9 + 12 * t * t)
 
 
-def slope_limit(model, phi, psi, matching):
-    """The static slope limit in plane strain, degrees: phi for Mohr-Coulomb; for Drucker-Prager the Mohr-Coulomb
-    angle of the cone at the out-of-plane stress of plane-strain flow (d eps_zz^p = 0)."""
+def plane_angles(model, phi, psi, matching):
+    """(phi_ps, psi_ps) in degrees: the Mohr-Coulomb angles of the in-plane Mohr circle and flow (docs/theory.md
+    eq. 18.26 for Drucker-Prager in plane strain, d eps_zz^p = 0; phi and psi themselves for Mohr-Coulomb)."""
     if model == "mohr_coulomb":
-        return phi
+        return phi, psi
     eta, eta_bar = cone(phi, matching), cone(psi, matching)
-    return math.degrees(math.asin(eta * math.sqrt(1 - eta_bar**2 / 3) / (1 - eta * eta_bar / 3)))
+    phi_ps = math.asin(eta * math.sqrt(1 - eta_bar**2 / 3) / (1 - eta * eta_bar / 3))
+    psi_ps = math.asin(eta_bar / math.sqrt(1 - eta_bar**2 / 3))
+    return math.degrees(phi_ps), math.degrees(psi_ps)
+
+
+def slope_limits(model, phi, psi, matching):
+    """(static, flowing) slope limits in degrees (docs/theory.md eqs. 18.25-18.27)."""
+    phi_ps, psi_ps = (math.radians(x) for x in plane_angles(model, phi, psi, matching))
+    flow = math.atan(math.sin(phi_ps) * math.cos(psi_ps) / (1 - math.sin(phi_ps) * math.sin(psi_ps)))
+    return math.degrees(phi_ps), math.degrees(flow)
 
 
 def material(model, phi, psi, matching, youngs=E):
@@ -168,10 +175,10 @@ def run(mpm, out, model, phi, psi, matching, a, cells, damping, time_factor, sha
     energy = list(csv.reader(open(os.path.join(case, "out", "energy.csv"))))
     steps = int(float(energy[-1][1]))
     speed = math.sqrt(sum(float(c) ** 2 for row in v for c in row) / len(v)) / math.sqrt(G * a * L0)
-    limit = slope_limit(model, phi, psi, matching)
-    return {"model": model, "phi": phi, "psi": psi, "limit": limit, "a": a, "cells": cells, "damping": damping,
+    static, flow = slope_limits(model, phi, psi, matching)
+    return {"model": model, "phi": phi, "psi": psi, "static_limit": static, "flow_limit": flow, "a": a, "cells": cells, "damping": damping,
             "time": time_factor, "particles": len(xs), "steps": steps, "wall_s": round(wall, 1), "angle": angle,
-            "difference": angle - limit, "flank_points": n, "rms_dp": rms / spacing,
+            "difference": angle - flow, "flank_points": n, "rms_dp": rms / spacing,
             "height": max(ys) + spacing / 2, "toe": max(xs) + spacing / 2, "speed": speed}
 
 
@@ -186,17 +193,17 @@ def main():
     p.add_argument("--matching", default="plane_strain")
     p.add_argument("--aspect-ratio", type=float, default=1.0)
     p.add_argument("--cells", default="20", help="cells per column width L0, comma-separated")
-    p.add_argument("--damping", default="0.5", help="solver.damping values, comma-separated")
-    p.add_argument("--time", default="20", help="end times in sqrt(H0/g), comma-separated")
+    p.add_argument("--damping", default="0.8", help="solver.damping values, comma-separated")
+    p.add_argument("--time", default="40", help="end times in sqrt(H0/g), comma-separated")
     p.add_argument("--shape", default="quadratic_bspline")
     p.add_argument("--initial", default="column", help="column, or the wedge's excess angle over phi in degrees")
     p.add_argument("--youngs-modulus", type=float, default=E, help="Pa")
     p.add_argument("--csv", default=None)
     o = p.parse_args()
     results = []
-    print("| model | phi | psi | limit | a | L0/h | damping | T/sqrt(H0/g) | particles | steps | wall s | angle | "
-          "difference | flank points | rms (dp) | H/L0 | toe/L0 | rms speed/sqrt(g H0) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| model | phi | psi | static limit | flowing limit | a | L0/h | damping | T/sqrt(H0/g) | particles | steps "
+          "| wall s | angle | against the flowing limit | flank points | rms (dp) | H/L0 | toe/L0 | rms speed/sqrt(g H0) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for model in o.models.split(","):
         for phi in [float(x) for x in o.angles.split(",")]:
             psi = phi if o.dilation == "associated" else 0.0
@@ -208,7 +215,8 @@ def main():
                         if r is None:
                             continue
                         results.append(r)
-                        print(f"| {model} | {phi:g} | {psi:g} | {r['limit']:.2f} | {o.aspect_ratio:g} | {cells} | "
+                        print(f"| {model} | {phi:g} | {psi:g} | {r['static_limit']:.2f} | {r['flow_limit']:.2f} | "
+                              f"{o.aspect_ratio:g} | {cells} | "
                               f"{damping:g} | {tf:g} | {r['particles']} | {r['steps']} | {r['wall_s']} | "
                               f"{r['angle']:.2f} | {r['difference']:+.2f} | {r['flank_points']} | {r['rms_dp']:.2f} | "
                               f"{r['height']:.3f} | {r['toe']:.3f} | {r['speed']:.1e} |", flush=True)
