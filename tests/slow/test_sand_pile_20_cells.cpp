@@ -11,8 +11,7 @@
 
 #include "sand_pile.hpp"
 
-namespace mpm {
-namespace {
+namespace mpm::sand_pile_slow_test {  // named: a unity build puts the slow tests in one unit
 
 using namespace verification::sand_pile;
 
@@ -30,5 +29,4 @@ TEST(SandPile20Cells, FlankStopsAtTheFlowingSlopeLimitForBothModels) {
   }
 }
 
-}  // namespace
-}  // namespace mpm
+}  // namespace mpm::sand_pile_slow_test
