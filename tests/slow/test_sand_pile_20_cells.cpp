@@ -6,7 +6,8 @@
 // tan(beta) = sin(phi) for Mohr-Coulomb (22.91 and 29.84 deg; Davis 1968) and tan(beta) = eta for the cone (22.32
 // and 28.57 deg), below the static limits phi and asin(eta) (eqs. 18.25-18.26). With associated flow the two limits
 // are both phi (the plane_strain matching's property); those runs invert particles (docs/verification-notes.md).
-// The quick version (Mohr-Coulomb, to T = 10) is tests/verification/test_sand_pile.cpp. Label slow: about 4 x 10 s.
+// The quick version (Mohr-Coulomb, 16 cells, to T = 10) is tests/verification/test_sand_pile.cpp. Label slow: about
+// 115 s of CPU.
 #include <gtest/gtest.h>
 
 #include "sand_pile.hpp"

@@ -38,7 +38,7 @@ struct Pile {
   std::string model = "mohr_coulomb";  ///< or drucker_prager (cone_matching: plane_strain)
   double phi = 30;                     ///< deg, the friction angle; no dilation, no cohesion
   int cells = 20;                      ///< per L0
-  double damping = 0.95;               ///< solver.damping
+  double damping = 0.8;                ///< solver.damping
   double time = 40;                    ///< the end time in sqrt(H0/g)
 };
 
