@@ -19,7 +19,8 @@ The references (docs/theory.md eqs. 18.25-18.27): a slope can stand up to the st
 phi_ps of eq. 18.26 for Drucker-Prager in plane strain (asin(eta) without dilation); a layer flowing down the surface
 stops at tan(beta_flow) = sin(phi_ps) cos(psi_ps) / (1 - sin(phi_ps) sin(psi_ps)) (Davis 1968): atan(sin phi) for
 Mohr-Coulomb and atan(eta) for the cone without dilation. With associated flow both are phi for Mohr-Coulomb and the
-plane_strain cone.
+plane_strain cone. `--models mu_i` runs the mu(I) rheology with mu_s = tan(phi) (mu_2 = mu_s + 0.26, I_0 = 0.279,
+d = 0.5 mm, rho_s = 2650 kg/m^3): its flowing limit is atan(mu_s) = phi, its static limit asin(mu_s).
 
 Sand: rho = 1800 kg/m^3, E = 2 MPa, nu = 0.3 (rho g H0 / E = 0.9% at a = 1), c = 0. MUSL, quadratic B-splines, APIC,
 2 particles per cell per axis, CFL 0.4.
@@ -58,6 +59,8 @@ def plane_angles(model, phi, psi, matching):
     eq. 18.26 for Drucker-Prager in plane strain, d eps_zz^p = 0; phi and psi themselves for Mohr-Coulomb)."""
     if model == "mohr_coulomb":
         return phi, psi
+    if model == "mu_i":  # the cone eta = mu_s = tan(phi), isochoric (docs/theory.md §18, "Slope limits")
+        return math.degrees(math.asin(math.tan(math.radians(phi)))), 0.0
     eta, eta_bar = cone(phi, matching), cone(psi, matching)
     phi_ps = math.asin(eta * math.sqrt(1 - eta_bar**2 / 3) / (1 - eta * eta_bar / 3))
     psi_ps = math.asin(eta_bar / math.sqrt(1 - eta_bar**2 / 3))
@@ -72,6 +75,10 @@ def slope_limits(model, phi, psi, matching):
 
 
 def material(model, phi, psi, matching, youngs=E):
+    if model == "mu_i":  # mu_s = tan(phi): Jop et al.'s angle at which flow starts; mu_2 - mu_s of their glass beads
+        mu_s = math.tan(math.radians(phi))
+        return (f"{{model: mu_i, density: {RHO:g}, youngs_modulus: {youngs:g}, poisson_ratio: {NU}, mu_s: {mu_s:.10g}, "
+                f"mu_2: {mu_s + 0.26:.10g}, I_0: 0.279, grain_diameter: 0.5e-3, grain_density: 2650}}")
     m = (f"{{model: {model}, density: {RHO:g}, youngs_modulus: {youngs:g}, poisson_ratio: {NU}, friction_angle: {phi:g}, "
          f"dilation_angle: {psi:g}")
     return m + (f", cone_matching: {matching}}}" if model == "drucker_prager" else "}")
