@@ -189,8 +189,9 @@ SAND_PILE_TEXT = (
     'creeping down: 24.06° at T = 80), 0.99: 31.36° (far from rest); at 0.8 the angle is set by T ≈ 8 √(H₀/g) and moves\n'
     'by less than 0.5° after. Resolution (damping 0.8, Mohr–Coulomb 25° / 35°): 10 cells per width 24.35° / 33.40°\n'
     "(over-steepened: a flank 10 cells deep is held by the shear band's three-cell width), 16: 22.97° / 29.73°, 20:\n"
-    '23.31° / 29.29°, 40: 23.41° / 28.98°; linear hats lock the flank (+11°). The tables of every run and what limits\n'
-    'the case: docs/verification-notes.md, "Angle of repose of a sand pile".\n'
+    '23.31° / 29.29°, 40: 23.41° / 28.98°; linear hats lock the flank (+11°). `mu_i` with μ_s = tan φ, whose flowing\n'
+    'limit is φ itself (by hand, 20 cells, T = 40): 25.29° at φ = 25° (+0.29°), 32.37° at 35° (−2.63°, still creeping).\n'
+    'The tables of every run and what limits the case: docs/verification-notes.md, "Angle of repose of a sand pile".\n'
 )
 
 ENERGY_SENTINEL_TEXT = (
