@@ -8,6 +8,8 @@ set(mpm_test_costs
   Perforation.SphereThroughPlateRunsToItsEndWithClosedBooks 30
   Perforation.FailedAndErodedParticlesLeaveTheTimeStep 8
   ColumnCollapse.RunOutAndHeightOfAShortColumnAgainstLube2005 6
+  SandPile.MohrCoulombFlankStopsAtTheFlowingSlopeLimit 10
+  SandPile20Cells.FlankStopsAtTheFlowingSlopeLimitForBothModels 115
   EnergySentinelDisks.CpGimpDoesNotWarn 46
   Verify.AxisymmetricTaylorAnvilBandHoldsTheErrorAgainstTheFinestRun 38
   MmsCpdi.TwoD 35

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "../libmpm/scene_fixture.hpp"
+#include "granular_column.hpp"
 
 namespace mpm::column_collapse_test {  // named: the unity build puts the verification tests in one unit
 
@@ -28,19 +29,17 @@ constexpr double width = 0.1, aspect = 0.5, cells_per_width = 20, g = 9.81;
 
 std::string collapse_scene() {
   const double h = width / cells_per_width, H0 = aspect * width;
-  const double end = 12 * std::sqrt(H0 / g);
-  return "dimension: 2\n"
-         "grid: {origin: [0, 0], extent: [" +
-         std::to_string(50 * h) + ", " + std::to_string(12 * h) + "], cell_size: " + std::to_string(h) +
-         ", boundary: {x_min: slip, y_min: fixed}}\n"
-         "materials:\n"
-         "  beads: {model: mu_i, density: 1470, youngs_modulus: 5.0e6, poisson_ratio: 0.3, mu_s: 0.38, mu_2: 0.64,\n"
-         "          I_0: 0.279, grain_diameter: 0.5e-3, grain_density: 2450}\n"
-         "bodies: [{name: column, material: beads, shape: {type: box, min: [0, 0], max: [" +
-         std::to_string(width) + ", " + std::to_string(H0) +
-         "]}}]\n"
-         "solver: {scheme: musl, velocity_transfer: apic, cfl: 0.4, end_time: " +
-         std::to_string(end) + ", gravity: [0, -9.81]}\n";
+  verification::GranularColumn c;
+  c.width = width;
+  c.height = H0;
+  c.cell = h;
+  c.cells_x = 50;
+  c.cells_y = 12;
+  c.material =
+      "{model: mu_i, density: 1470, youngs_modulus: 5.0e6, poisson_ratio: 0.3, mu_s: 0.38, mu_2: 0.64,\n"
+      "          I_0: 0.279, grain_diameter: 0.5e-3, grain_density: 2450}";
+  c.end_time = 12 * std::sqrt(H0 / g);
+  return verification::granular_column_scene(c);
 }
 
 /// The edge of the connected deposit: the outermost particle reached from the back wall through particles no further

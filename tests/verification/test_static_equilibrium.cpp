@@ -28,7 +28,7 @@ constexpr double spacing = 0.025;                               // particle spac
 /// The exact static displacement at height y (m), positive downwards.
 double exact_settlement(double y) { return rho * g / M * (H * y - 0.5 * y * y); }
 
-struct ColumnResult {
+struct SettledColumn {
   double top = 0;         ///< m, settlement of the top particle row (reference height H - spacing/2)
   double middle = 0;      ///< Pa, mean sigma_vv of the two particle rows about H/2
   double dissipated = 0;  ///< J, the damping's books (eq. 2.75)
@@ -38,7 +38,7 @@ struct ColumnResult {
 
 /// Runs `sim` to its end and measures along the vertical axis `v`.
 template <int Dim>
-ColumnResult settle(Simulation<Dim>& sim, int v) {
+SettledColumn settle(Simulation<Dim>& sim, int v) {
   const double e0 = sim.energy().total();
   sim.run();
   const auto& p = sim.bodies().front().particles;
@@ -55,7 +55,7 @@ ColumnResult settle(Simulation<Dim>& sim, int v) {
       ++mid_count;
     }
   }
-  ColumnResult r;
+  SettledColumn r;
   r.top = (H - 0.5 * spacing) - top_sum / top_count;
   r.middle = mid_sum / mid_count;
   for (const auto& m : sim.modules())
@@ -70,7 +70,7 @@ ColumnResult settle(Simulation<Dim>& sim, int v) {
 const double top_exact = exact_settlement(H - 0.5 * spacing);  // 0.40867 mm
 const double middle_exact = -rho * g * (H - 0.5 * H);          // -4905 Pa
 
-void expect_static(const ColumnResult& r, const std::string& what) {
+void expect_static(const SettledColumn& r, const std::string& what) {
   SCOPED_TRACE(what);
   std::printf(
       "%s: top settlement %.6g mm (exact %.6g, error %+.3f%%), sigma_vv(H/2) %.6g Pa (exact %.6g, error %+.3f%%), "
@@ -85,7 +85,7 @@ void expect_static(const ColumnResult& r, const std::string& what) {
   EXPECT_LT(std::abs(r.balance), 0.01 * r.dissipated);
 }
 
-ColumnResult run_example(const std::string& scheme, VelocityTransfer transfer, double flip, double damping) {
+SettledColumn run_example(const std::string& scheme, VelocityTransfer transfer, double flip, double damping) {
   SceneDescription scene = load_scene(column_scene);
   scene.output.histories.clear();
   scene.solver.scheme = scheme;
@@ -109,7 +109,7 @@ TEST(StaticEquilibrium, ColumnSettlesWithEveryExplicitScheme) {
 TEST(StaticEquilibrium, UndampedColumnDoesNotSettle) {
   // The "before": with damping 0 (the default) the column swings about the static state with the amplitude of its
   // release from rest, so at 1 s it is anywhere between 0 and twice the static settlement.
-  const ColumnResult r = run_example("musl", VelocityTransfer::flip, 1, 0);
+  const SettledColumn r = run_example("musl", VelocityTransfer::flip, 1, 0);
   std::printf("undamped: top settlement %.6g mm (exact %.6g), sigma_vv(H/2) %.6g Pa (exact %.6g)\n", 1e3 * r.top,
               1e3 * top_exact, r.middle, middle_exact);
   EXPECT_EQ(r.dissipated, 0);
