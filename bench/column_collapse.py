@@ -31,9 +31,9 @@ import argparse
 import csv
 import math
 import os
-import subprocess
 import sys
-import time
+
+import scene_runs
 
 G = 9.81
 L0 = 0.1
@@ -102,16 +102,8 @@ def column(rows, name):
 
 
 def last_frame(out):
-    """The particle x coordinates of the run's last frame (VTK's reader: /usr/bin/python3 with python3-vtk9)."""
-    import glob
-
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(sorted(glob.glob(os.path.join(out, "particles_*.vtu")))[-1])
-    reader.Update()
-    return sorted(vtk_to_numpy(reader.GetOutput().GetPoints().GetData())[:, 0])
+    """The particle x coordinates of the run's last frame, sorted."""
+    return sorted(scene_runs.last_frame(out)[0][:, 0])
 
 
 def deposit_edge(xs, gap):
@@ -127,15 +119,8 @@ def deposit_edge(xs, gap):
 def run(mpm, out, model, a, cells, shape):
     text, spacing = scene(model, a, cells, shape)
     case = os.path.join(out, f"{model}_a{a:g}_n{cells}_{shape}")
-    os.makedirs(case, exist_ok=True)
-    with open(os.path.join(case, "scene.yaml"), "w") as f:
-        f.write(text)
-    start = time.time()
-    r = subprocess.run([mpm, "run", os.path.join(case, "scene.yaml"), "-o", os.path.join(case, "out")],
-                       capture_output=True, text=True)
-    wall = time.time() - start
-    if r.returncode != 0:
-        sys.stderr.write(f"{case}: mpm exited with {r.returncode}\n{r.stderr}\n")
+    wall = scene_runs.run_case(mpm, case, text)
+    if wall is None:
         return None
     read = lambda name: list(csv.reader(open(os.path.join(case, "out", name))))
     front, top, energy = read("front.csv"), read("top.csv"), read("energy.csv")

@@ -32,12 +32,11 @@ Sand: rho = 1800 kg/m^3, E = 2 MPa, nu = 0.3 (rho g H0 / E = 0.9% at a = 1), c =
 """
 import argparse
 import csv
-import glob
 import math
 import os
-import subprocess
 import sys
-import time
+
+import scene_runs
 
 G = 9.81
 L0 = 1.0
@@ -125,16 +124,8 @@ output:
 
 
 def last_frame(out):
-    """Positions and velocities of the run's last frame (VTK's reader: /usr/bin/python3 with python3-vtk9)."""
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(sorted(glob.glob(os.path.join(out, "particles_*.vtu")))[-1])
-    reader.Update()
-    grid = reader.GetOutput()
-    x = vtk_to_numpy(grid.GetPoints().GetData())
-    v = vtk_to_numpy(grid.GetPointData().GetArray("velocity"))
+    """Positions x, y and velocities of the run's last frame."""
+    x, v = scene_runs.last_frame(out)
     return x[:, 0], x[:, 1], v
 
 
@@ -167,15 +158,8 @@ def flank_angle(points, low=0.25, high=0.75):
 def run(mpm, out, model, phi, psi, matching, a, cells, damping, time_factor, shape, initial="column", youngs=E):
     text, spacing = scene(model, phi, psi, matching, a, cells, damping, time_factor, shape, initial, youngs)
     case = os.path.join(out, f"{model}_phi{phi:g}_psi{psi:g}_a{a:g}_n{cells}_d{damping:g}_t{time_factor:g}_{shape}_{initial}_E{youngs:g}")
-    os.makedirs(case, exist_ok=True)
-    with open(os.path.join(case, "scene.yaml"), "w") as f:
-        f.write(text)
-    start = time.time()
-    r = subprocess.run([mpm, "run", os.path.join(case, "scene.yaml"), "-o", os.path.join(case, "out")],
-                       capture_output=True, text=True)
-    wall = time.time() - start
-    if r.returncode != 0:
-        sys.stderr.write(f"{case}: mpm exited with {r.returncode}\n{r.stderr}\n")
+    wall = scene_runs.run_case(mpm, case, text)
+    if wall is None:
         return None
     xs, ys, v = last_frame(os.path.join(case, "out"))
     angle, n, rms = flank_angle(surface(xs, ys, L0 / cells, spacing))

@@ -1,0 +1,38 @@
+"""What the bench sweeps that run `mpm` on generated scenes share (column_collapse.py, sand_pile.py): one case
+written, run and timed in its own folder, and the particles of its last frame read back.
+
+Read with /usr/bin/python3 (Debian's python3-vtk9 for the frames)."""
+
+import glob
+import os
+import subprocess
+import sys
+import time
+
+
+def run_case(mpm, case, text):
+    """Writes `text` as CASE/scene.yaml, runs `mpm run` into CASE/out; the wall time (s), or None (with mpm's
+    message on stderr) when it failed."""
+    os.makedirs(case, exist_ok=True)
+    with open(os.path.join(case, "scene.yaml"), "w") as f:
+        f.write(text)
+    start = time.time()
+    r = subprocess.run([mpm, "run", os.path.join(case, "scene.yaml"), "-o", os.path.join(case, "out")],
+                       capture_output=True, text=True)
+    wall = time.time() - start
+    if r.returncode != 0:
+        sys.stderr.write(f"{case}: mpm exited with {r.returncode}\n{r.stderr}\n")
+        return None
+    return wall
+
+
+def last_frame(out):
+    """Positions (an n x 3 array) and velocities (n x 3) of the particles of the last frame in `out`."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(sorted(glob.glob(os.path.join(out, "particles_*.vtu")))[-1])
+    reader.Update()
+    grid = reader.GetOutput()
+    return vtk_to_numpy(grid.GetPoints().GetData()), vtk_to_numpy(grid.GetPointData().GetArray("velocity"))
