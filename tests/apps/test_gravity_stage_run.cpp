@@ -56,6 +56,8 @@ TEST(GravityStageRun, LogsItsEndAndWritesItsRatioPerStep) {
   const auto r = mpm("run " + (dir / "column.yaml").string() + " -o " + (dir / "out").string(), dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("gravity stage: at rest after"), std::string::npos) << r.err;
+  // the top row's settlement, 2.972 mm (the top surface's static rho g H^2 / (2 M) = 2.971 mm)
+  EXPECT_NE(r.err.find("largest displacement 0.00297 m)"), std::string::npos) << r.err;
   const auto table = rows(dir / "out" / "gravity_stage.csv");
   ASSERT_GT(table.size(), 10u);
   std::printf("[ measured ] %zu steps; unbalanced force ratio %.3g at the first step, %.3g at the last\n", table.size(),

@@ -70,6 +70,35 @@ Real kinetic_energy(const Simulation<Dim>& sim) {
   return e;
 }
 
+/// Each body's particle positions by id (ids are stable under the sorts of the stage).
+template <int Dim>
+std::vector<std::vector<VecU<Dim>>> positions_by_id(const Simulation<Dim>& sim) {
+  std::vector<std::vector<VecU<Dim>>> out;
+  for (const auto& b : sim.bodies()) {
+    const auto& p = b.particles;
+    std::vector<VecU<Dim>> x;
+    for (Index i = 0; i < p.size(); ++i) {
+      const std::size_t id = p.id[static_cast<std::size_t>(i)];
+      if (x.size() <= id) x.resize(id + 1);
+      x[id] = p.x[i];
+    }
+    out.push_back(std::move(x));
+  }
+  return out;
+}
+
+/// m: the largest distance from `start` (positions_by_id) of a particle now.
+template <int Dim>
+Real largest_displacement(const Simulation<Dim>& sim, const std::vector<std::vector<VecU<Dim>>>& start) {
+  Real d = 0;
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const auto& p = sim.bodies()[b].particles;
+    for (Index i = 0; i < p.size(); ++i)
+      d = std::max(d, Real((p.x[i] - start[b][p.id[static_cast<std::size_t>(i)]]).norm()));
+  }
+  return d;
+}
+
 /// The end of the stage: every particle at rest, the displacement counted from here (eq. 20.4).
 template <int Dim>
 void come_to_rest(Simulation<Dim>& sim) {
@@ -95,10 +124,14 @@ void come_to_rest(Simulation<Dim>& sim) {
 
 std::string GravityStageReport::summary() const {
   if (converged)
-    return fmt::format("gravity stage: at rest after {} steps (unbalanced force ratio {:.3g} < {:.3g} for {} steps)",
-                       steps, ratio, tolerance, settled_steps);
-  return fmt::format("gravity stage: not at rest after {} steps (unbalanced force ratio {:.3g}, tolerance {:.3g})",
-                     steps, ratio, tolerance);
+    return fmt::format(
+        "gravity stage: at rest after {} steps (unbalanced force ratio {:.3g} < {:.3g} for {} steps; largest "
+        "displacement {:.3g} m)",
+        steps, ratio, tolerance, settled_steps, largest_displacement);
+  return fmt::format(
+      "gravity stage: not at rest after {} steps (unbalanced force ratio {:.3g}, tolerance {:.3g}; largest "
+      "displacement {:.3g} m)",
+      steps, ratio, tolerance, largest_displacement);
 }
 
 template <int Dim>
@@ -117,6 +150,7 @@ GravityStageReport run_gravity_stage(Simulation<Dim>& sim, const GravityStageSet
   sim.set_transfer_settings(transfer);
   GravityStageReport report;
   report.tolerance = stage.tolerance;
+  const auto start = positions_by_id(sim);
   Index below = 0;
   while (report.steps < stage.max_steps) {
     // each step runs from -dt to 0: the conditions' values at its end (the held velocities the positions move with)
@@ -133,6 +167,7 @@ GravityStageReport run_gravity_stage(Simulation<Dim>& sim, const GravityStageSet
       break;
     }
   }
+  report.largest_displacement = largest_displacement(sim, start);
   sim.remove_module(meter.get());
   sim.set_transfer_settings(scene_transfer);
   come_to_rest(sim);
