@@ -69,6 +69,12 @@ void apply_condition(const SceneDescription& scene, const SetConditionDescriptio
                                  fmt::join(std::span(scene.solver.gravity.data(), Dim), ", ")));
   const Real up = g[a] < 0 ? 1 : -1, weight = std::abs(g[a]);
   const bool axisymmetric = geometry.coordinates == Coordinates::axisymmetric;
+  // K0 per body of the set (each model takes an initial stress: the loader refused the others), looked up once
+  const std::vector<int>& named = scene.sets[static_cast<std::size_t>(c.set)].bodies;
+  std::vector<Real> k0(bodies.size(), 0);
+  for (const auto& body : bodies)
+    if (named.empty() || std::find(named.begin(), named.end(), body.index) != named.end())
+      k0[static_cast<std::size_t>(body.index)] = at_rest_coefficient(scene, c, body.index);
   using Key = std::array<long long, 3>;  // the horizontal cell indices of the column
   std::map<Key, std::vector<ColumnEntry>> columns;
   const std::uint32_t mask = set_bit(c.set);
@@ -99,10 +105,11 @@ void apply_condition(const SceneDescription& scene, const SetConditionDescriptio
       sigma += k == 0 ? e.density * (surface - e.height)
                       : 0.5 * (column[k - 1].density + e.density) * (column[k - 1].height - e.height);
       const Real vertical = -weight * sigma;
-      const Real k0 = at_rest_coefficient(scene, c, e.body);
       SymTensor<Dim>& s = bodies[static_cast<std::size_t>(e.body)].particles.stress[e.particle];
       s = SymTensor<Dim>{};
-      for (int n = 0; n < 3; ++n) s.c[static_cast<std::size_t>(n)] = n == a ? vertical : k0 * vertical;  // eq. 20.2
+      for (int n = 0; n < 3; ++n)
+        s.c[static_cast<std::size_t>(n)] =
+            n == a ? vertical : k0[static_cast<std::size_t>(e.body)] * vertical;  // eq. 20.2
     }
   }
 }
