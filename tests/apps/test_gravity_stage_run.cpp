@@ -86,6 +86,20 @@ TEST(GravityStageRun, ThatDoesNotSettleStopsAtItsKeyOrWarns) {
   EXPECT_EQ(warn.status, 0) << warn.err;
   EXPECT_NE(warn.err.find("warning: gravity stage: not at rest after 20 steps"), std::string::npos) << warn.err;
   EXPECT_EQ(rows(dir / "warn" / "gravity_stage.csv").size(), 20u);
+  // a body that falls out through an outflow face while settling
+  std::ofstream(dir / "outflow.yaml")
+      << "dimension: 2\n"
+         "grid: {extent: [1, 1], cell_size: 0.1, boundary: {y_min: outflow}}\n"
+         "materials: {soil: {model: linear_elastic, density: 2000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}\n"
+         "bodies: [{name: block, material: soil, shape: {type: box, min: [0.3, 0.1], max: [0.7, 0.4]}}]\n"
+         "solver: {cfl: 0.5, end_time: 0.01, gravity: [0, -10], gravity_stage: {}}\n";
+  const auto out = mpm("run " + (dir / "outflow.yaml").string() + " -o " + (dir / "outflow").string(), dir);
+  EXPECT_EQ(out.status, 2) << out.err;
+  EXPECT_NE(out.err.find((dir / "outflow.yaml").string() + ":5:"), std::string::npos) << out.err;
+  EXPECT_NE(out.err.find("particles left through the outflow face y_min while the bodies settled under gravity"),
+            std::string::npos)
+      << out.err;
+  EXPECT_FALSE(fs::exists(dir / "outflow"));
   // `mpm check` does not run the stage
   EXPECT_EQ(mpm("check " + (dir / "stop.yaml").string(), dir).status, 0);
   fs::remove_all(dir);
