@@ -29,6 +29,7 @@
 #include "mpm/core/state_archive.hpp"
 #include "mpm/soils/mu_i.hpp"
 #include "mpm/soils/soil_batch.hpp"
+#include "soil_restart.hpp"
 
 namespace mpm::soils {
 namespace {
@@ -315,29 +316,7 @@ TEST(MuI, ColumnCollapseStaysAdmissibleAndBooksItsEnergy) {
 }
 
 TEST(MuI, RestartFromSavedStateIsExact) {
-  auto reference = test::simulation_from_yaml<2>(bead_column(), "beads.yaml");
-  reference->run({}, 800);
-  StateArchive archive;
-  reference->save_state(archive);
-  reference->run({}, 1600);
-  auto restarted = test::simulation_from_yaml<2>(bead_column(), "beads.yaml");
-  restarted->restore_state(archive);
-  ASSERT_EQ(restarted->step(), 800);
-  restarted->run({}, 1600);
-  const auto& a = reference->bodies()[0].particles;
-  const auto& b = restarted->bodies()[0].particles;
-  ASSERT_EQ(a.size(), b.size());
-  const auto& sa = a.field(keys::soil_state);
-  const auto& sb = b.field(keys::soil_state);
-  Real plastic = 0;
-  for (Index i = 0; i < a.size(); ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    EXPECT_EQ(Vec<2>(a.x[i]), Vec<2>(b.x[i])) << "particle " << i;
-    EXPECT_EQ(a.stress[i].full(), b.stress[i].full()) << "particle " << i;
-    EXPECT_EQ(sa[k].plastic_strain, sb[k].plastic_strain);
-    EXPECT_EQ(sa[k].plastic_work, sb[k].plastic_work);
-    plastic = std::max(plastic, sa[k].plastic_strain);
-  }
+  const Real plastic = test_support::expect_exact_restart(bead_column(), "beads.yaml", "mu_i");
   EXPECT_GT(plastic, 0.01);  // the saved state had flowed
 }
 
