@@ -4,10 +4,12 @@
 #include <mutex>
 
 #include "mpm/fluids/ideal_gas.hpp"
+#include "mpm/fluids/incompressible_fluid.hpp"
 #include "mpm/fluids/output_fields.hpp"
 #include "mpm/fluids/tait_fluid.hpp"
 #include "mpm/materials/material_batch.hpp"
 #include "mpm/materials/material_registry.hpp"
+#include "pressure_projection_module.hpp"
 #include "volume_smoothing_module.hpp"
 
 namespace mpm::fluids {
@@ -79,6 +81,33 @@ MaterialModel newtonian_model() {
           .phase = MaterialPhase::liquid};
 }
 
+std::vector<ParameterSpec> incompressible_parameters() {
+  return {
+      ParameterSpec::required("density", "kg/m^3", Range::above(0), "rho, constant"),
+      ParameterSpec::with_default("viscosity", "Pa s", 0, Range::at_least(0), "dynamic (shear) viscosity mu"),
+      ParameterSpec::with_default("projection_tolerance", "-", 1e-8, Range{0, false, 1e-2, true},
+                                  "relative residual |A p - b| / |b| at which the conjugate gradients of the pressure "
+                                  "projection stop (docs/theory.md eq. 21.2; with several incompressible "
+                                  "materials the smallest)"),
+      ParameterSpec::with_default("projection_iterations", "-", 2000, Range::at_least(1),
+                                  "most conjugate-gradient iterations of one projection (with several materials "
+                                  "the largest); a solve that stops short is reported after the run"),
+  };
+}
+
+MaterialModel incompressible_model() {
+  return {.key = IncompressibleFluid::key,
+          .description =
+              "incompressible Newtonian fluid (docs/theory.md §21): sigma = 2 mu dev(D) - p I with the pressure "
+              "from a projection of the grid velocity onto div v = 0 each step (no sound speed: the time step follows "
+              "the flow); explicit musl, usl, usf in 2D and 3D, one process",
+          .parameters = incompressible_parameters(),
+          .make_1d = &make_incompressible_fluid<1>,
+          .make_2d = &make_incompressible_fluid<2>,
+          .make_3d = &make_incompressible_fluid<3>,
+          .phase = MaterialPhase::liquid};
+}
+
 MaterialModel ideal_gas_model() {
   return {.key = "ideal_gas",
           .description =
@@ -104,6 +133,12 @@ std::unique_ptr<Material<Dim>> make_newtonian_fluid(const MaterialDescription& d
 }
 
 template <int Dim>
+std::unique_ptr<Material<Dim>> make_incompressible_fluid(const MaterialDescription& d) {
+  return std::make_unique<MaterialBatch<Dim, IncompressibleFluid>>(
+      IncompressibleFluid::Params{d.parameters.at("density"), d.parameters.at("viscosity")});
+}
+
+template <int Dim>
 std::unique_ptr<Material<Dim>> make_ideal_gas(const MaterialDescription& d) {
   const auto& p = d.parameters;
   IdealGasParams c;
@@ -120,14 +155,19 @@ void register_module() {
   std::call_once(once, [] {
     register_material_model(newtonian_model());
     register_material_model(ideal_gas_model());
+    register_material_model(incompressible_model());
     register_output_fields();
     register_volume_smoothing();
+    register_pressure_projection();
   });
 }
 
 template std::unique_ptr<Material<1>> make_newtonian_fluid<1>(const MaterialDescription&);
 template std::unique_ptr<Material<2>> make_newtonian_fluid<2>(const MaterialDescription&);
 template std::unique_ptr<Material<3>> make_newtonian_fluid<3>(const MaterialDescription&);
+template std::unique_ptr<Material<1>> make_incompressible_fluid<1>(const MaterialDescription&);
+template std::unique_ptr<Material<2>> make_incompressible_fluid<2>(const MaterialDescription&);
+template std::unique_ptr<Material<3>> make_incompressible_fluid<3>(const MaterialDescription&);
 template std::unique_ptr<Material<1>> make_ideal_gas<1>(const MaterialDescription&);
 template std::unique_ptr<Material<2>> make_ideal_gas<2>(const MaterialDescription&);
 template std::unique_ptr<Material<3>> make_ideal_gas<3>(const MaterialDescription&);

@@ -11,3 +11,11 @@ namespace mpm::fluids::keys {
 inline constexpr FieldKey<Real> internal_energy{"internal_energy"};
 
 }  // namespace mpm::fluids::keys
+
+namespace mpm::fluids::keys {
+
+/// Pressure p of an incompressible fluid particle, Pa: the projection's multiplier of its cell (eq. 21.3), kept so
+/// that the -p I the projection adds to the stress at the end of a step comes off again before the next transfer.
+inline constexpr FieldKey<Real> projected_pressure{"projected_pressure"};
+
+}  // namespace mpm::fluids::keys

@@ -15,6 +15,8 @@ void register_module();
 template <int Dim>
 std::unique_ptr<Material<Dim>> make_newtonian_fluid(const MaterialDescription& description);
 template <int Dim>
+std::unique_ptr<Material<Dim>> make_incompressible_fluid(const MaterialDescription& description);
+template <int Dim>
 std::unique_ptr<Material<Dim>> make_ideal_gas(const MaterialDescription& description);
 
 }  // namespace mpm::fluids
