@@ -79,6 +79,10 @@ class Material {
   /// Kinematic viscosity nu (m^2/s) of the model's viscous stress, 0 if it has none: the simulation adds the
   /// explicit diffusion bound dt <= h^2 / (2 Dim nu) to the CFL bound (review §5.4).
   virtual Real kinematic_viscosity() const { return 0; }
+  /// False for a model that reads no deformation gradient (the incompressible fluid, whose particles keep their
+  /// volume): the explicit schemes then leave F = I instead of updating it, and an update that would invert it (a
+  /// splash's velocity gradient over a step the flow's CFL allows) is not an error.
+  virtual bool tracks_deformation() const { return true; }
   /// Each particle's dilatational wave speed c (m/s) in its current state, into `c` (resized to p.size()), for the
   /// failure criterion min_time_step (eq. 16.3); false when the model cannot give it per particle.
   virtual bool particle_wave_speeds(const ParticleSet<Dim>&, std::vector<Real>& /*c*/) const { return false; }

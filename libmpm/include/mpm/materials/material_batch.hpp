@@ -15,13 +15,14 @@
 /// in-plane storage; the batch loop then uses it (the elastic laws do: it avoids 3x3 round trips), and
 /// `update_packed_axisymmetric(params, F, L, F_tt, L_tt, J, dt, stress)` for axisymmetric bodies (else those
 /// take the 3x3 law with F_tt and L_tt on the diagonal, axisymmetric.hpp).
-/// Optional: `static bool volumetric_only(const Params&)`, for a law that reads F through J = det F alone (a fluid);
-/// true when F is to keep its volume only: the batch then replaces the in-plane F by J_p^(1/Dim) I before the update
-/// (J_p its determinant; the hoop stretch and so J unchanged), so that no isochoric distortion accumulates. When it
-/// is false the batch still does so for a particle whose F is distorted beyond the precision of its determinant
-/// (eps ||F||_F^Dim > 1e-8 J_p, the round-off of det F above 1e-8 of its value): a fluid sheared for long
-/// has F entries of 1e8 whose determinant is round-off, and a particle "inverts" that was never compressed. Below
-/// that distortion F is kept whole (the cpGIMP domains follow it).
+/// Optional: `static constexpr bool tracks_deformation = false` for a law that reads no F
+/// (Material::tracks_deformation). Optional: `static bool volumetric_only(const Params&)`, for a law that reads F
+/// through J = det F alone (a fluid); true when F is to keep its volume only: the batch then replaces the in-plane F by
+/// J_p^(1/Dim) I before the update (J_p its determinant; the hoop stretch and so J unchanged), so that no isochoric
+/// distortion accumulates. When it is false the batch still does so for a particle whose F is distorted beyond the
+/// precision of its determinant (eps ||F||_F^Dim > 1e-8 J_p, the round-off of det F above 1e-8 of its value): a fluid
+/// sheared for long has F entries of 1e8 whose determinant is round-off, and a particle "inverts" that was never
+/// compressed. Below that distortion F is kept whole (the cpGIMP domains follow it).
 
 #include <algorithm>
 #include <cmath>
@@ -59,6 +60,12 @@ class MaterialBatch final : public Material<Dim> {
       return Model::kinematic_viscosity(params_);
     else
       return 0;
+  }
+  bool tracks_deformation() const override {
+    if constexpr (requires { Model::tracks_deformation; })
+      return Model::tracks_deformation;
+    else
+      return true;
   }
   std::string state_warning(const ParticleSet<Dim>& p) const override {
     if constexpr (requires(const Params& c, Real J) { Model::state_warning(c, J, J); }) {

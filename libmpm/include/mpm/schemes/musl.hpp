@@ -133,6 +133,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
         Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
     axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
+    const bool deforms = body.material->tracks_deformation();  // F stays I otherwise
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
       st.compute(p.x[i], g, domain(i));
@@ -153,7 +154,7 @@ class Musl final : public ShapedScheme<Dim, Shape> {
       if (affine) affine[i] = kernels::affine_matrix(st, [&](Index n) { return Vec<Dim>(vel[n].mapped); });
       if constexpr (std::is_same_v<Shape, LinearHat>)
         if (poly) poly[i] = kernels::polypic_modes(st, g, [&](Index n) { return Vec<Dim>(vel[n].mapped); });
-      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) &&
+      ok &= (!deforms || kernels::update_deformation_gradient<Dim>(p.F[i], L, dt)) &&
             kernels::inside<Dim, Coords>(p.x[i], keep_lower, keep_upper) && std::isfinite(p.v[i].sum());
     }
     return ok;

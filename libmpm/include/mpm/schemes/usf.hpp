@@ -61,6 +61,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
         Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
     axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
+    const bool deforms = body.material->tracks_deformation();  // F stays I otherwise
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
       st.compute(p.x[i], g, domain(i));
@@ -72,7 +73,7 @@ class Usf final : public ShapedScheme<Dim, Shape> {
       for (int a = 0; a < st.count; ++a)
         for (int c = 0; c < Dim; ++c) L.col(c) += vel[st.node[a]].mapped * st.grad[a][c];
       L_out[i - begin] = L;
-      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, ctx.dt);
+      if (deforms) ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, ctx.dt);
     }
     return ok;
   }

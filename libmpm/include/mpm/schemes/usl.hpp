@@ -42,6 +42,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
         Coords::axisymmetric ? axisym::hoop_fields(p) : axisym::HoopFields{};
     axisym::StencilFor<Dim, Shape, Coords> st;
     const ParticleDomain<Dim, Shape> domain(p);
+    const bool deforms = body.material->tracks_deformation();  // F stays I otherwise
     bool ok = true;
     for (Index i = begin; i != end; ++i) {
       st.compute(p.x[i], g, domain(i));
@@ -71,7 +72,7 @@ class Usl final : public ShapedScheme<Dim, Shape> {
       p.x[i] += dt * v_pic;
       kernels::keep_inside_walls<Dim>(p.x[i], wall_lower, wall_upper);
       L_out[i - begin] = L;
-      ok &= kernels::update_deformation_gradient<Dim>(p.F[i], L, dt) &&
+      ok &= (!deforms || kernels::update_deformation_gradient<Dim>(p.F[i], L, dt)) &&
             kernels::inside<Dim, Coords>(p.x[i], keep_lower, keep_upper) && std::isfinite(p.v[i].sum());
     }
     return ok;

@@ -6,7 +6,7 @@
 /// step by the grid projection (pressure_projection.hpp, eqs 21.1-21.4), which adds -p I to the stress at the end of
 /// the step (for the output) and takes it out again before the next transfer. No sound speed: the time step follows
 /// the flow (h / |v|) and the projection's free-fall bound, not an artificial bulk modulus. The particle keeps its
-/// volume (the projection resets F to I every step): it stores no energy.
+/// volume (F = I: the schemes do not update it, tracks_deformation): it stores no energy.
 
 #include "mpm/materials/material.hpp"
 
@@ -14,6 +14,8 @@ namespace mpm::fluids {
 
 struct IncompressibleFluid {
   static constexpr const char* key = "incompressible_fluid";
+  /// The particle keeps its volume: the schemes leave F = I (Material::tracks_deformation).
+  static constexpr bool tracks_deformation = false;
   struct Params {
     Real density;    ///< rho, kg/m^3
     Real viscosity;  ///< mu, Pa s

@@ -16,14 +16,15 @@
 /// perturbations grow 8x per step; with B-splines the particles, the quadrature of the nodal masses and so of gravity
 /// — the cell integral reaches the nodes above the surface that only the particles' mass holds, and the column
 /// started to move at 0.06 m/s. A component held by a face
-/// condition (fixed, slip, a prescribed velocity) or a node lighter than the mass cut-off keeps its velocity: W is 0
-/// there, and the held velocity enters the right-hand side. Solved by conjugate gradients with a diagonal
-/// (Jacobi) preconditioner, from the particles' pressures of the last step; a solve that does not reach the tolerance
-/// within its iterations stops the run with a message (both are the material's keys).
-/// The pressure of a particle is that of its cell (eq. 21.4): added to its stress as -p I at the end of the step (the
+/// condition (fixed, slip, a prescribed velocity) keeps its value: W is 0 there, and the held velocity enters the
+/// right-hand side; a node lighter than the mass cut-off has no velocity (eq. 2.63) and no entry. Solved by conjugate
+/// gradients with a diagonal (Jacobi) preconditioner, from the particles' pressures of the last step; a solve that does
+/// not reach the tolerance within its iterations stops the run with a message (both are the material's keys). The
+/// pressure of a particle is that of its cell (eq. 21.4): added to its stress as -p I at the end of the step (the
 /// output, the histories and the checkpoint see it), and taken off again before the next transfer, since the
-/// projection, not the stress divergence, applies it. Every fluid particle keeps its volume (F = I at the end of each
-/// step): the constraint is one per cell, and a particle's own div v only carries that constraint's error.
+/// projection, not the stress divergence, applies it. Every fluid particle keeps its volume (F = I: the schemes leave
+/// it, Material::tracks_deformation): the constraint is one per cell, and a particle's own div v only carries that
+/// constraint's error (a splash's gradient over one step can exceed 1/dt).
 /// v is the M-orthogonal projection of v* (W M = I on the free components and G v = 0): the projection never adds
 /// kinetic energy to the grid (eq. 21.5).
 
@@ -94,15 +95,13 @@ class PressureProjection final : public Module<Dim> {
     if (stage == GridStage::updated) project(ctx);
   }
 
-  /// The pressure into the stress (eq. 21.4) and F back to I (the particle keeps its volume).
+  /// The pressure into the stress (eq. 21.4).
   void end_of_step(StepContext<Dim>& ctx) override {
     for (const int k : bodies_) {
       auto& p = ctx.bodies[static_cast<std::size_t>(k)].particles;
       const auto& pressure = p.field(keys::projected_pressure);
-      for (Index i = 0; i < p.size(); ++i) {
+      for (Index i = 0; i < p.size(); ++i)
         for (int d = 0; d < 3; ++d) p.stress[i].c[d] -= pressure[static_cast<std::size_t>(i)];
-        p.F[i] = MatU<Dim>::Identity();
-      }
     }
   }
 
