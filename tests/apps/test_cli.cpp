@@ -150,6 +150,9 @@ TEST(Cli, EveryBadSceneIsRefusedAndNothingIsWritten) {
 #ifndef MPM_WITH_THERMAL
       if (entry.path().filename() == "implicit_thermal.yaml") continue;
 #endif
+#ifndef MPM_WITH_CONTACT  // the incompressible fluid refusing a contact section needs the section to exist
+      if (entry.path().filename() == "fluids_incompressible_fluid_contact.yaml") continue;
+#endif
       files.push_back(entry.path());
     }
   for (const auto& file : files) {

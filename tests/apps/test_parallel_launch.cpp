@@ -159,6 +159,21 @@ TEST(ParallelLaunch, UnderMpirunWhatCannotBeDistributedIsRefusedOnce) {
   err = cli::slurp(dir / "stderr");
   EXPECT_NE(err.find("module 'contact' does not run on several ranks yet (normals: density"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out / "energy.csv"));
+#ifdef MPM_WITH_FLUIDS
+  // The incompressible fluid's pressure projection (one global linear system per step).
+  std::ofstream(dir / "incompressible.yaml") << R"yaml(dimension: 2
+grid: {origin: [0, 0], extent: [0.4, 0.4], cell_size: 0.02, boundary: {x_min: slip, x_max: slip, y_min: slip}}
+materials:
+  water: {model: incompressible_fluid, density: 1000}
+bodies:
+  - {name: water, material: water, shape: {type: box, min: [0, 0], max: [0.2, 0.2]}}
+solver: {cfl: 0.5, gravity: [0, -9.81], end_time: 0.1}
+)yaml";
+  EXPECT_EQ(mpirun(2, "run " + (dir / "incompressible.yaml").string() + " --steps 3 -o " + out.string(), dir), 2);
+  err = cli::slurp(dir / "stderr");
+  EXPECT_NE(err.find("module 'pressure_projection' does not run on several ranks yet"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(out / "energy.csv"));
+#endif
   // More ranks than tiles: the two-disk scene on 4 x 4 cells has 2 tiles (8 cells wide along x, 2 along y).
   std::string coarse = cli::slurp(scene);
   coarse.replace(coarse.find("cell_size: 0.05"), 15, "cell_size: 0.25");

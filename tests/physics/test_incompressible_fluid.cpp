@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../apps/run_mpm.hpp"
 #include "../libmpm/scene_fixture.hpp"
 #include "mpm/core/state_archive.hpp"
 #include "mpm/fluids/pressure_projection.hpp"
@@ -197,6 +198,24 @@ TEST(IncompressibleFluid, RestartsExactly) {
     if (const auto* found = dynamic_cast<const fluids::PressureProjection<2, LinearHat>*>(m.get())) projection = found;
   ASSERT_NE(projection, nullptr);
   EXPECT_EQ(projection->statistics().solves, 120);
+}
+
+// A solve that does not reach projection_tolerance within projection_iterations stops the program (exit status 1, as a
+// stability stop) with the step, the residual and the two keys to change; the column's first solve needs more than 3.
+TEST(IncompressibleFluid, ASolveThatStopsShortStopsTheRun) {
+  const auto dir = cli::scratch("incompressible_short_solve");
+  std::string scene = projected_column("scheme: musl, shape_function: linear");
+  scene.replace(scene.find("projection_tolerance: 1.0e-12"), 29, "projection_iterations: 3");
+  std::ofstream(dir / "column.yaml") << scene;
+  const auto r = cli::mpm("run " + (dir / "column.yaml").string() + " -o " + (dir / "out").string(), dir);
+  EXPECT_NE(r.status, 0);
+  const std::string err = cli::slurp(dir / "stderr");
+  EXPECT_NE(err.find("pressure projection: the conjugate gradients stopped after 3 iterations"), std::string::npos)
+      << err;
+  EXPECT_NE(err.find("(step 1, t = 0 s, 800 fluid cells): raise materials.water.projection_iterations"),
+            std::string::npos)
+      << err;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -63,12 +63,12 @@ std::shared_ptr<Module<Dim>> prepare_projection(const SceneDescription& scene, s
     const Vec<Dim> gravity = Eigen::Map<const Eigen::Vector3d>(scene.solver.gravity.data()).template head<Dim>();
     dispatch_shape(scene.solver.shape_function, [&]<class Shape>() {
       if constexpr (projects_with<Shape, Dim>)
-        module = std::make_shared<PressureProjection<Dim, Shape>>(std::move(fluid), gravity, grid.h.minCoeff(),
-                                                                  tolerance, max_iterations);
+        module = std::make_shared<PressureProjection<Dim, Shape>>(
+            std::move(fluid), gravity, grid.h.minCoeff(), tolerance, max_iterations, "materials." + first->name);
     });
     if (!module)
       refuse(
-          fmt::format("the pressure projection reads the shape function at the particle positions; "
+          fmt::format("the pressure projection evaluates the shape function at points, without a particle domain; "
                       "shape_function '{}' is not one it takes (use one of: {})",
                       scene.solver.shape_function,
                       shape_function_names_where([]<class Shape>() { return projects_with<Shape, Dim>; })));

@@ -60,13 +60,16 @@ template <int Dim, class Shape>
 class PressureProjection final : public Module<Dim> {
  public:
   /// `bodies`: the indices (Body::index) of the incompressible bodies, each with the field projected_pressure.
-  /// `tolerance`: the relative residual of the solves; `max_iterations`: per solve.
-  PressureProjection(std::vector<int> bodies, const Vec<Dim>& gravity, Real h_min, Real tolerance, int max_iterations)
+  /// `tolerance`: the relative residual of the solves; `max_iterations`: per solve; `material`: the key of the
+  /// material that set them ("materials.water"), for the message of a solve that stops short.
+  PressureProjection(std::vector<int> bodies, const Vec<Dim>& gravity, Real h_min, Real tolerance, int max_iterations,
+                     std::string material)
       : bodies_(std::move(bodies)),
         gravity_(gravity.norm()),
         h_min_(h_min),
         tolerance_(tolerance),
-        max_iterations_(max_iterations) {}
+        max_iterations_(max_iterations),
+        material_(std::move(material)) {}
 
   std::string_view name() const override { return "pressure_projection"; }
   unsigned phases() const override { return phase_before_step | phase_grid_velocity | phase_end_of_step; }
@@ -273,9 +276,10 @@ class PressureProjection final : public Module<Dim> {
         throw std::runtime_error(fmt::format(
             "pressure projection: the conjugate gradients stopped after {} iterations at a relative residual of "
             "{:.3g}, "
-            "above projection_tolerance = {:.3g} (step {}, t = {:.9g} s, {} fluid cells): raise the material's "
-            "projection_iterations (or its projection_tolerance)",
-            cg.iterations(), cg.error(), tolerance_, ctx.step, ctx.time, n));
+            "above projection_tolerance = {:.3g} (step {}, t = {:.9g} s, {} fluid cells): raise "
+            "{}.projection_iterations "
+            "(or {}.projection_tolerance)",
+            cg.iterations(), cg.error(), tolerance_, ctx.step, ctx.time, n, material_, material_));
     }
     // eq. 21.3
     const Vector dv = ctx.dt * w.cwiseProduct(G.transpose() * pressure);
@@ -299,6 +303,7 @@ class PressureProjection final : public Module<Dim> {
   Real h_min_;
   Real tolerance_;
   int max_iterations_;
+  std::string material_;
   std::vector<unsigned char> held_;                   ///< per node: bit d set when a face holds component d
   std::vector<Index> unknown_of_cell_;                ///< scratch: per grid cell its unknown, or -1
   std::vector<Index> column_of_;                      ///< scratch: per node component its column of G, or -1
