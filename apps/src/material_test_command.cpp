@@ -163,6 +163,12 @@ int material_test_command(const MaterialTestCommandOptions& options, std::ostrea
       throw MaterialTestError(fmt::format("material '{}' is rigid (model {}): it has no stress to drive along a path",
                                           options.material, it->second.model));
     const std::unique_ptr<Material<3>> material = make_material<3>(it->second);
+    if (!material->tracks_deformation())
+      throw MaterialTestError(fmt::format(
+          "material '{}' (model {}) keeps its volume: its pressure is the multiplier of div v = 0 that the grid's "
+          "projection finds for the whole flow, not a response of one point, so no path can drive it (its viscous "
+          "stress is 2 mu dev D; docs/theory.md §21)",
+          options.material, it->second.model));
     const MaterialTestResult result = run_material_test(*material, driver);
     const std::string csv = material_test_csv(result);
     if (options.output.empty()) {
