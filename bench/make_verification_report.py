@@ -194,6 +194,35 @@ SAND_PILE_TEXT = (
     'The tables of every run and what limits the case: docs/verification-notes.md, "Angle of repose of a sand pile".\n'
 )
 
+# Slope stability by strength reduction (measured by the slow test and by hand with bench/strength_reduction.py;
+# issue 52): kept here so that a regenerated report keeps it, at its end.
+STRENGTH_REDUCTION_TEXT = (
+    '## Slope stability by strength reduction (verification, issue 52)\n'
+    '\n'
+    'Test `StrengthReduction.GriffithsLaneSlopeFailsBetweenFactors135And1425` (tests/slow/test_strength_reduction.cpp,\n'
+    'label `slow`); the sweep by hand with `/usr/bin/python3 bench/strength_reduction.py`. Griffiths & Lane (1999),\n'
+    'example 1: a 2:1 slope 10 m high on a rough base at the toe, Mohr-Coulomb with c/(γH) = 0.05, φ = 20°, ψ = 0,\n'
+    'E = 100 MPa, ν = 0.3; for a factor F the strength c/F, atan(tan φ/F), the geostatic stress, then the gravity stage\n'
+    '(local damping 0.8, unbalanced force ratio below 1e-4 for 10 steps). The slope stands at F when the stage settles\n'
+    'within K times the steps it takes at F = 1 (Griffiths & Lane\'s non-convergence criterion). Linear hats, 2 × 2\n'
+    'particles per cell, MUSL. Reference: 1.4 (Griffiths & Lane, finite elements), 1.38 (Bishop & Morgenstern).\n'
+    '\n'
+    '| cells per H | particles | N(F = 1) | factor of safety, K = 4 | K = 10 |\n'
+    '|---|---|---|---|---|\n'
+    '| 10 | 880 | 18,313 | (1.40, 1.45) | (1.50, 1.55) |\n'
+    '| 20 | 3,520 | 4,393 | (1.375, 1.40) | (1.40, 1.425) |\n'
+    '| 40 | 14,080 | 4,659 | (1.35, 1.375) | (1.35, 1.375) |\n'
+    '| 80 | 56,320 | 4,345 | (1.35, 1.375) | (1.35, 1.375) |\n'
+    '\n'
+    'The bracket falls as the mesh is refined, then stays: 1.35-1.375 at 40 and 80 cells per H with both limits, 1.8-3.6%\n'
+    'below 1.4 and 0.4-2.2% below 1.38. The test asserts (1.35, 1.425) at 20 cells per H with K = 4 (the bracket that\n'
+    'holds on every mesh from 20 cells per H on): within 3.6% of 1.4 (the issue asks for 5%).\n'
+    'Run time on the 2 shared cores: the test 33 s of CPU (F = 1, 1.35 and 1.425 at 20 cells per H). The steps, the\n'
+    'displacements, why the bracket depends on K (linear hats lock under the isochoric plastic flow: above the factor of\n'
+    'safety the slope creeps in the damped stage rather than collapsing) and what did not work (quadratic B-splines, one\n'
+    'particle per cell): docs/verification-notes.md, "Slope stability by strength reduction".\n'
+)
+
 ENERGY_SENTINEL_TEXT = (
     "Every 50 steps the energy sentinel (`solver.energy_tolerance`, `solver.on_energy_drift`; docs/theory.md §8) "
     "compares the balance E(t) − E(0) − W with 0.05 of the largest energy of the run so far; the stability "
@@ -623,6 +652,7 @@ def main():
         w("")
 
     w(SAND_PILE_TEXT)
+    w(STRENGTH_REDUCTION_TEXT)
 
     with open(os.path.join(docs, "VERIFICATION.md"), "w") as f:
         f.write("\n".join(out) + "\n")

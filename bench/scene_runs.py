@@ -1,5 +1,6 @@
-"""What the bench sweeps that run `mpm` on generated scenes share (column_collapse.py, sand_pile.py): one case
-written, run and timed in its own folder, and the particles of its last frame read back.
+"""What the bench sweeps that run `mpm` on generated scenes share (column_collapse.py, sand_pile.py,
+strength_reduction.py): one case written, run and timed in its own folder, its log, and the particles of its last
+frame read back.
 
 Read with /usr/bin/python3 (Debian's python3-vtk9 for the frames)."""
 
@@ -10,20 +11,28 @@ import sys
 import time
 
 
-def run_case(mpm, case, text):
-    """Writes `text` as CASE/scene.yaml, runs `mpm run` into CASE/out; the wall time (s), or None (with mpm's
-    message on stderr) when it failed."""
+def run_case(mpm, case, text, args=()):
+    """Writes `text` as CASE/scene.yaml, runs `mpm run` (with the extra command-line `args`) into CASE/out; the wall
+    time (s), or None (with mpm's message on stderr) when it failed."""
+    return run_case_logged(mpm, case, text, args)[0]
+
+
+def run_case_logged(mpm, case, text, args=()):
+    """run_case, and what mpm printed (stdout, then stderr), also kept as CASE/log.txt: (wall time or None, log)."""
     os.makedirs(case, exist_ok=True)
     with open(os.path.join(case, "scene.yaml"), "w") as f:
         f.write(text)
     start = time.time()
-    r = subprocess.run([mpm, "run", os.path.join(case, "scene.yaml"), "-o", os.path.join(case, "out")],
+    r = subprocess.run([mpm, "run", os.path.join(case, "scene.yaml"), "-o", os.path.join(case, "out"), *args],
                        capture_output=True, text=True)
     wall = time.time() - start
+    log = r.stdout + r.stderr
+    with open(os.path.join(case, "log.txt"), "w") as f:
+        f.write(log)
     if r.returncode != 0:
         sys.stderr.write(f"{case}: mpm exited with {r.returncode}\n{r.stderr}\n")
-        return None
-    return wall
+        return None, log
+    return wall, log
 
 
 def last_frame(out):

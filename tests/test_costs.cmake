@@ -10,6 +10,7 @@ set(mpm_test_costs
   ColumnCollapse.RunOutAndHeightOfAShortColumnAgainstLube2005 6
   SandPile.MohrCoulombFlankStopsAtTheFlowingSlopeLimit 10
   SandPile20Cells.FlankStopsAtTheFlowingSlopeLimitForBothModels 115
+  StrengthReduction.GriffithsLaneSlopeFailsBetweenFactors135And1425 25
   EnergySentinelDisks.CpGimpDoesNotWarn 46
   Verify.AxisymmetricTaylorAnvilBandHoldsTheErrorAgainstTheFinestRun 38
   MmsCpdi.TwoD 35
@@ -22,7 +23,7 @@ set(mpm_test_costs
   EnergySentinelDisks.PicFractionDoesNotWarn 13
   EnergySentinelDisks.FlipWithHatsWarnsWithTheFlipHint 13
   Cli.EveryBadSceneIsRefusedAndNothingIsWritten 13
-  RunOverrides.EveryExampleRunsThreeSteps 12
+  RunOverrides.EveryExampleRunsThreeSteps 17
   EnergySentinelDisks.StopEndsTheProgramWithStatusThree 11
   ImplicitScheme.CollidingCylindersDissipateEnergyAndKeepMomenta 10
   CflBoundLongRun.MuslRunsAndDamps 10
