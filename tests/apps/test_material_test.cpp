@@ -109,7 +109,7 @@ TEST(MaterialTest, EveryModelAlongEveryPath) {
                                "1.0,0.98,0.02,0,0,1.001,0,0,0,1\n");
   for (const std::string& model : mpm::material_model_names()) {
     if (model == "rigid") continue;
-    if (model == "user") continue;  // a law from a shared library: tests/user_material drives its plugins
+    if (model == "user") continue;          // a law from a shared library: tests/user_material drives its plugins
     if (model == "incompressible_fluid") {  // a constraint of the flow, not a law of the point: refused
       const auto r = s.run("--material " + model + " --path uniaxial_strain");
       EXPECT_EQ(r.status, 2) << r.err;
