@@ -172,11 +172,7 @@ def main():
                 print(f"| {model} | {a:g} | {cells} | {r['particles']} | {r['steps']} | {r['wall_s']} | "
                       f"{r['runout']:.3f} | {law} | {err} | {r['farthest']:.3f} | {r['height']:.3f} | {r['height_law']:.3f} | "
                       f"{100 * r['transfer_loss']:.1f}% | {r['creep']:.4f} | {r['left']} |", flush=True)
-    if o.csv:
-        with open(o.csv, "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
-            w.writeheader()
-            w.writerows(results)
+    scene_runs.write_rows(o.csv, results)
 
 
 if __name__ == "__main__":

@@ -211,11 +211,7 @@ def main():
                               f"{damping:g} | {tf:g} | {r['particles']} | {r['steps']} | {r['wall_s']} | "
                               f"{r['angle']:.2f} | {r['difference']:+.2f} | {r['flank_points']} | {r['rms_dp']:.2f} | "
                               f"{r['height']:.3f} | {r['toe']:.3f} | {r['speed']:.1e} |", flush=True)
-    if o.csv and results:
-        with open(o.csv, "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
-            w.writeheader()
-            w.writerows(results)
+    scene_runs.write_rows(o.csv, results)
 
 
 if __name__ == "__main__":

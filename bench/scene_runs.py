@@ -45,3 +45,14 @@ def last_frame(out):
     reader.Update()
     grid = reader.GetOutput()
     return vtk_to_numpy(grid.GetPoints().GetData()), vtk_to_numpy(grid.GetPointData().GetArray("velocity"))
+
+
+def write_rows(path, rows):
+    """Writes the sweep's result rows (dicts with the same keys) to the CSV file `path`; nothing without rows."""
+    if not path or not rows:
+        return
+    import csv
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)

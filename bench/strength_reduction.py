@@ -27,7 +27,6 @@ fails), so the outcome for any smaller K can be read off it. `--bisect TOL` narr
              K N(1)), --threads N (1), --csv FILE
 """
 import argparse
-import csv
 import math
 import os
 import re
@@ -159,11 +158,7 @@ def main():
                       f"{1e3 * r['displacement']:.2f} | {r['wall']:.1f} |")
             print(flush=True)
             results += rows
-    if o.csv and results:
-        with open(o.csv, "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
-            w.writeheader()
-            w.writerows(results)
+    scene_runs.write_rows(o.csv, results)
 
 
 if __name__ == "__main__":
