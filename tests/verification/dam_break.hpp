@@ -27,6 +27,9 @@ struct DamBreakSpec {
   double end_T = 3.2;         ///< dimensionless end time
   double cfl = 0.5;
   double output_interval = 0;  ///< s, for the example's scene text (0: first and last frame)
+  /// model incompressible_fluid (the pressure projection, docs/theory.md §21) instead of the Tait water: no bulk
+  /// modulus, `mach` unused.
+  bool incompressible = false;
 };
 
 struct DamBreakResult {
@@ -50,5 +53,8 @@ struct MartinMoyce {
   double front_at(double T) const;
 };
 MartinMoyce martin_moyce(const std::string& csv_path, double width_inch = 2.25);
+
+/// The largest |Z / Z_experiment - 1| over the experiment's points with T <= `last_T` (no shift of the clock).
+double largest_front_deviation(const DamBreakResult& run, const MartinMoyce& experiment, double last_T = 3);
 
 }  // namespace mpm::verification
