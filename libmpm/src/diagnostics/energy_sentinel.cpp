@@ -107,7 +107,12 @@ void EnergySentinel<Dim>::end_of_step(StepContext<Dim>& ctx) {
   for (const auto& m : ctx.hooks.all()) balance += m->removed_energy();
   const Real scale = e.kinetic + e.strain + e.plastic_work + std::abs(e.gravity - initial_.gravity) + std::abs(work_);
   if (scale > scale_ || std::isnan(scale)) scale_ = scale;
-  const Real tolerance = fraction_ * scale_;
+  // The scale never falls below the round-off of the energies themselves, 1e-9 of the terms of E(0): a body at rest
+  // that stores no energy (incompressible water) has a scale of round-off, and the 1e-12 E(0) its pressure solve
+  // leaves in the gravity potential read as a drift 20x the tolerance.
+  const Real round_off =
+      1e-9 * (std::abs(initial_.gravity) + initial_.kinetic + initial_.strain + initial_.plastic_work);
+  const Real tolerance = fraction_ * std::max(scale_, round_off);
   last_ratio_ = tolerance > 0 ? balance / tolerance : 0;
   if (last_ratio_ > largest_ratio_) {
     largest_ratio_ = last_ratio_;

@@ -14,7 +14,8 @@
 /// and, with `stop`, ends the run through the stability path.
 ///
 /// The energy scale of a step is K + U + D + |Phi - Phi(0)| + |W| (every term that can carry the balance), its
-/// largest value so far the reference of the tolerance. A module built by the scene builder for every scene.
+/// largest value so far the reference of the tolerance, and never less than 1e-9 of |Phi(0)| + K(0) + U(0) + D(0)
+/// (the round-off of the energies themselves). A module built by the scene builder for every scene.
 
 #include <optional>
 #include <string>
