@@ -59,6 +59,19 @@ std::shared_ptr<Module<Dim>> prepare_projection(const SceneDescription& scene, s
           "the pressure projection works on the shared velocity field of the grid, and the contact module gives "
           "each body its own: an incompressible fluid with contact is not written yet (without the `contact:` "
           "section the bodies share the grid and the pressure acts on them all)");
+    const Vec<Dim> g = Eigen::Map<const Eigen::Vector3d>(scene.solver.gravity.data()).template head<Dim>();
+    if (g.norm() == 0 && !scene.solver.dt && fluid.size() == bodies.size()) {
+      bool at_rest = true;  // (prototype bodies, without particles, are not judged)
+      Index particles = 0;
+      for (const auto& body : bodies) {
+        particles += body.particles.size();
+        for (Index i = 0; i < body.particles.size(); ++i) at_rest = at_rest && Vec<Dim>(body.particles.v[i]).isZero();
+      }
+      if (at_rest && particles > 0)
+        throw SceneError(scene.solver.dt_where, "solver.cfl",
+                         "an incompressible fluid has no sound speed: at rest and without gravity nothing bounds its "
+                         "time step (h / |v| with v = 0); give a fixed solver.dt, gravity or an initial velocity");
+    }
     std::shared_ptr<Module<Dim>> module;
     const Vec<Dim> gravity = Eigen::Map<const Eigen::Vector3d>(scene.solver.gravity.data()).template head<Dim>();
     dispatch_shape(scene.solver.shape_function, [&]<class Shape>() {
