@@ -27,7 +27,6 @@ Prints a Markdown table (and writes it as CSV with --csv): model, a, cells per L
 run-out, the law's run-out and the difference, H_inf/L0 and the law's, the share of the potential energy drop the
 transfers dissipated (the part the plastic work does not book), and the front's move over the last twelfth (in L0).
 """
-import argparse
 import csv
 import math
 import os
@@ -146,10 +145,7 @@ def run(mpm, out, model, a, cells, shape):
 
 
 def main():
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--mpm", default=os.path.join(root, "build", "apps", "mpm"))
-    p.add_argument("--out", default=os.path.join(root, "build", "column_collapse"))
+    p = scene_runs.sweep_parser(__doc__, "column_collapse")
     p.add_argument("--models", default="drucker_prager,mu_i")
     p.add_argument("--aspect-ratios", default="0.5,1,2,4")
     p.add_argument("--cells", default="20", help="cells per column width L0, comma-separated")

@@ -30,7 +30,6 @@ Sand: rho = 1800 kg/m^3, E = 2 MPa, nu = 0.3 (rho g H0 / E = 0.9% at a = 1), c =
     options: --mpm PATH (default build/apps/mpm), --out DIR (default build/sand_pile), --time T, --aspect-ratio A,
              --dilation {zero,associated}, --matching M, --shape S, --initial column|DEG, --youngs-modulus E, --csv FILE
 """
-import argparse
 import csv
 import math
 import os
@@ -174,10 +173,7 @@ def run(mpm, out, model, phi, psi, matching, a, cells, damping, time_factor, sha
 
 
 def main():
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--mpm", default=os.path.join(root, "build", "apps", "mpm"))
-    p.add_argument("--out", default=os.path.join(root, "build", "sand_pile"))
+    p = scene_runs.sweep_parser(__doc__, "sand_pile")
     p.add_argument("--models", default="mohr_coulomb,drucker_prager")
     p.add_argument("--angles", default="25,35", help="friction angles, degrees")
     p.add_argument("--dilation", default="zero", choices=["zero", "associated"])

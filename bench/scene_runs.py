@@ -4,6 +4,7 @@ frame read back.
 
 Read with /usr/bin/python3 (Debian's python3-vtk9 for the frames)."""
 
+import argparse
 import glob
 import os
 import subprocess
@@ -56,3 +57,13 @@ def write_rows(path, rows):
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
         w.writerows(rows)
+
+
+def sweep_parser(doc, name):
+    """The sweep's argument parser with the two options every sweep has: --mpm (the program, default the build
+    tree's) and --out (where the cases go, default build/NAME)."""
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    p = argparse.ArgumentParser(description=doc.split("\n")[0])
+    p.add_argument("--mpm", default=os.path.join(root, "build", "apps", "mpm"))
+    p.add_argument("--out", default=os.path.join(root, "build", name))
+    return p

@@ -26,7 +26,6 @@ fails), so the outcome for any smaller K can be read off it. `--bisect TOL` narr
              --depth-factor D, --tension apex|none, --tolerance R, --limit K, --max-steps N (a fixed limit instead of
              K N(1)), --threads N (1), --csv FILE
 """
-import argparse
 import math
 import os
 import re
@@ -105,10 +104,7 @@ def run_factor(o, cell, shape, F, max_steps):
 
 
 def main():
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--mpm", default=os.path.join(root, "build", "apps", "mpm"))
-    p.add_argument("--out", default=os.path.join(root, "build", "strength_reduction"))
+    p = scene_runs.sweep_parser(__doc__, "strength_reduction")
     p.add_argument("--shapes", default="linear")
     p.add_argument("--cells", default="1,0.5", help="cell sizes in m, comma-separated")
     p.add_argument("--factors", default="1.2,1.3,1.4,1.5,1.6", help="strength reduction factors, comma-separated")
