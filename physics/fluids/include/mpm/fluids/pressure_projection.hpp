@@ -153,13 +153,6 @@ class PressureProjection final : public Module<Dim> {
   /// Hats: G integrated over the whole cell (eq. 21.1a); wider functions: by the cell's particles (eq. 21.1b).
   static constexpr bool integrates_cells = Shape::support == 2;
 
-  /// The point of one cell (offset from its lower corner, weight in m^Dim) that integrates the gradients of the hats
-  /// exactly: the midpoint (each gradient is linear across the cell).
-  const std::vector<std::pair<Vec<Dim>, Real>>& cell_points(const GridGeometry<Dim>& g) {
-    if (points_.empty()) points_.emplace_back(g.h / 2, g.h.prod());
-    return points_;
-  }
-
   /// Eqs 21.1-21.3 on the grid's updated velocities, and each fluid particle's pressure (eq. 21.4).
   void project(StepContext<Dim>& ctx) {
     const auto& g = ctx.grid.geometry;
@@ -202,19 +195,16 @@ class PressureProjection final : public Module<Dim> {
             entries_.emplace_back(static_cast<int>(u), static_cast<int>(column(st.node[a], d)), weight * st.grad[a][d]);
       }
     };
-    if constexpr (integrates_cells) {  // over the whole cell, by its Gauss points
-      const auto& points = cell_points(g);
+    if constexpr (integrates_cells) {  // over the whole cell: the midpoint rule is exact (hats' gradients are linear)
       for (Index u = 0; u < static_cast<Index>(cells_.size()); ++u) {
         Index rest = cells_[static_cast<std::size_t>(u)];
-        Vec<Dim> corner;
+        VecU<Dim> middle;
         for (int d = 0; d < Dim; ++d) {
-          corner[d] = g.origin[d] + g.h[d] * static_cast<Real>(rest % g.cells(d));
+          middle[d] = g.origin[d] + g.h[d] * (static_cast<Real>(rest % g.cells(d)) + Real(0.5));
           rest /= g.cells(d);
         }
-        for (const auto& [offset, weight] : points) {
-          st.compute(VecU<Dim>(corner + offset), g);
-          add(u, weight);
-        }
+        st.compute(middle, g);
+        add(u, g.cell_volume());
       }
     } else {  // by the cell's particles, the quadrature of their mass
       for (std::size_t k = 0; k < bodies_.size(); ++k) {
@@ -311,7 +301,6 @@ class PressureProjection final : public Module<Dim> {
   std::vector<Index> columns_;                        ///< scratch: node * Dim + d of each column
   std::vector<Eigen::Triplet<Real>> entries_;         ///< scratch: the entries of G
   std::vector<Eigen::Triplet<Real>> a_entries_;       ///< scratch: the entries of A = G W G^T
-  std::vector<std::pair<Vec<Dim>, Real>> points_;     ///< Gauss points of a cell (cell_points)
   std::vector<std::vector<Index>> particle_unknown_;  ///< scratch: per body and particle, its cell's unknown
   ProjectionStatistics statistics_;
 };
