@@ -44,10 +44,12 @@ if [ ! -f "$build/compile_commands.json" ]; then
   exit 2
 fi
 # The precompiled headers of the build (MPM_PRECOMPILED_HEADERS, cmake/precompiled_headers.cmake) are GCC's, which
-# clang cannot read: clang-tidy gets the compile commands without them, so it reads each source as written.
+# clang cannot read: clang-tidy gets the compile commands without them, so it reads each source as written. GCC's
+# optimiser parameters (--param=..., the top CMakeLists.txt) mean nothing to clang, which calls them unused.
 commands=$(mktemp -d)
 trap 'rm -rf "$commands"' EXIT
-sed -E 's# -Winvalid-pch -include [^ ]*cmake_pch\.hxx##g' "$build/compile_commands.json" >"$commands/compile_commands.json"
+sed -E 's# -Winvalid-pch -include [^ ]*cmake_pch\.hxx##g; s# --param=[^ ]*##g' "$build/compile_commands.json" \
+  >"$commands/compile_commands.json"
 # A library compiled in unity batches (MPM_UNITY_BUILD, cmake/unity_libraries.cmake) lists its batches, not its
 # sources: each source a batch includes gets the batch's command, so that clang-tidy checks it as written.
 /usr/bin/env python3 - "$commands/compile_commands.json" <<'PY'

@@ -57,7 +57,8 @@ FaceConditionKind at_rest_kind(std::string name, std::string description, Held) 
   k.parse = [](const io::YamlReader& reader, const io::YamlValue& value, const FaceContext& face) -> std::any {
     allow_keys(reader, value, {});
     VelocityFaceSpec spec;
-    for (int d : Held{}(face.face, face.dimension)) spec.velocity[d] = "0";
+    // the held components as the expression "0" (built by count: GCC 12 warns on copying the literal here)
+    for (int d : Held{}(face.face, face.dimension)) spec.velocity[d].emplace(1, '0');
     return spec;
   };
   k.traits = velocity_traits;

@@ -8,14 +8,12 @@
 /// - a distributed run: the nodes the rank's tiles reach (HaloPlan::held), the nodes it holds.
 /// Without runs (NodeRuns{}), every node: TLMPM, the implicit scheme and unit tests.
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include "mpm/core/parallel_chunks.hpp"
 #include "mpm/core/types.hpp"
 
 namespace mpm {
@@ -44,19 +42,17 @@ struct NodeRuns {
 template <class Block>
 void for_each_node_block(Index nodes, NodeRuns set, Index grain, Block&& block) {
   if (set.all) {
-    tbb::parallel_for(tbb::blocked_range<Index>(0, nodes, static_cast<std::size_t>(grain)),
-                      [&](const tbb::blocked_range<Index>& r) { block(r.begin(), r.end()); });
+    parallel_chunks(Index{0}, nodes, static_cast<std::size_t>(grain), block);
     return;
   }
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.runs.size()), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+  parallel_chunks(std::size_t{0}, set.runs.size(), 1, [&](std::size_t run_begin, std::size_t run_end) {
+    for (std::size_t k = run_begin; k != run_end; ++k) {
       const Index first = set.runs[k].first, end = std::min(set.runs[k].second, nodes);
       if (end - first <= grain) {
         if (end > first) block(first, end);
         continue;
       }
-      tbb::parallel_for(tbb::blocked_range<Index>(first, end, static_cast<std::size_t>(grain)),
-                        [&](const tbb::blocked_range<Index>& s) { block(s.begin(), s.end()); });
+      parallel_chunks(first, end, static_cast<std::size_t>(grain), block);
     }
   });
 }

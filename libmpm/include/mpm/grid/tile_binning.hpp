@@ -21,9 +21,6 @@
 /// Before, the threads scattered whole slabs (even slabs, then odd ones): at most slabs/2 tasks at a time, 26 on a
 /// 256-cell axis with cubic B-splines; the tiles give a 256^3 grid 6,656 tasks per colour.
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -35,6 +32,7 @@
 #include <utility>
 #include <vector>
 
+#include "mpm/core/parallel_chunks.hpp"
 #include "mpm/grid/scatter_exchange.hpp"
 #include "mpm/particles/particle_set.hpp"
 
@@ -219,8 +217,8 @@ void scatter_colour(const TileBins& bins, int colour, Scatter&& scatter) {
   const Index slab_runs = (bins.slab_count - slab_parity + 1) / 2;
   const Index total = per_slab * slab_runs;
   if (total <= 0) return;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, total), [&](const tbb::blocked_range<Index>& r) {
-    for (Index k = r.begin(); k != r.end(); ++k) {
+  parallel_chunks(Index{0}, total, 1, [&](Index chunk_begin, Index chunk_end) {
+    for (Index k = chunk_begin; k != chunk_end; ++k) {
       const Index run = k / per_slab, in_slab = k % per_slab;
       const Index slab = 2 * run + slab_parity;
       Index t = slab * bins.tiles_per_slab;
@@ -237,8 +235,8 @@ void scatter_colour(const TileBins& bins, int colour, Scatter&& scatter) {
 template <class Scatter>
 void scatter_tiles(const TileBins& bins, const std::vector<Index>& tiles, Scatter&& scatter) {
   if (tiles.empty()) return;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size()), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+  parallel_chunks(std::size_t{0}, tiles.size(), 1, [&](std::size_t chunk_begin, std::size_t chunk_end) {
+    for (std::size_t k = chunk_begin; k != chunk_end; ++k) {
       const Index t = tiles[k];
       const Index begin = bins.offsets[t], end = bins.offsets[t + 1];
       if (end > begin) scatter(bins.order.data() + begin, end - begin);

@@ -12,9 +12,6 @@
 /// pack_field/unpack_field, pack/append_packed): checkpoints and the migration of particles between ranks
 /// use that one mechanism, so a new field is checkpointed and migrated without code of its own.
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -30,6 +27,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "mpm/core/parallel_chunks.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/field_key.hpp"
 #include "mpm/particles/field_layout.hpp"
@@ -49,10 +47,10 @@ void gather_vector(std::vector<T>& v, const std::vector<Index>& order) {
   auto& out = scratch;  // the calling thread's: a lambda naming `scratch` would reach each worker's own
   out.resize(order.size());
   // Threads take blocks of the new order (each value is written once, so the result is the same for any count).
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.size(), std::size_t{1} << 14),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) out[i] = v[order[i]];
-                    });
+  parallel_chunks(std::size_t{0}, order.size(), std::size_t{1} << 14,
+                  [&](std::size_t chunk_begin, std::size_t chunk_end) {
+                    for (std::size_t i = chunk_begin; i != chunk_end; ++i) out[i] = v[order[i]];
+                  });
   if (out.capacity() <= v.capacity())
     v.swap(out);
   else {

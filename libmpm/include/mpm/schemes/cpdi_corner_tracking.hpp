@@ -6,12 +6,10 @@
 /// Neighbouring particles share corner positions, so they move together and leave no gaps. The module
 /// is constructed only for scenes whose CPDI domains follow their corners (field "cpdi_corners").
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
+#include "mpm/core/parallel_chunks.hpp"
 #include "mpm/particles/field_keys.hpp"
 #include "mpm/shape/cpdi_elements.hpp"
 #include "mpm/simulation/module.hpp"
@@ -58,8 +56,8 @@ class CpdiCornerTracking final : public Module<Dim> {
       auto& corners = body.particles.field(keys::cpdi_corners<Dim>);
       // the body's own field with contact (its velocity after the contact correction), else the shared one
       const Grid<Dim>& grid = body.separate_grid ? *body.separate_grid : ctx.grid;
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, corners.size(), 1024), [&](const auto& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i)
+      parallel_chunks(std::size_t{0}, corners.size(), 1024, [&](std::size_t chunk_begin, std::size_t chunk_end) {
+        for (std::size_t i = chunk_begin; i != chunk_end; ++i)
           for (int c = 0; c < corners_; ++c) corners[i][c] += ctx.dt * grid_velocity_at(grid, Vec<Dim>(corners[i][c]));
       });
     }

@@ -3,9 +3,10 @@
 /// The parts of a step that USL and MUSL share: the first mapping with the grid update, and the
 /// batched stress update.
 
-#include <tbb/parallel_reduce.h>
-
 #include <algorithm>
+#include <mutex>
+
+#include "mpm/core/parallel_chunks.hpp"
 
 #include "mpm/particles/field_keys.hpp"
 #include "mpm/schemes/transfer_kernels.hpp"
@@ -48,9 +49,11 @@ void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
   FusedSplit split;
   const auto start = profiled ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
   ctx.wave_speed = {};
-  auto merge = [](WaveSpeedBound<Dim> a, const WaveSpeedBound<Dim>& b) {
-    a.merge(b);
-    return a;
+  // The bound is a maximum (WaveSpeedBound::merge), so merging the chunks' bounds in any order gives the same bits.
+  std::mutex merge_mutex;
+  auto merge = [&](const WaveSpeedBound<Dim>& b) {
+    const std::lock_guard lock(merge_mutex);
+    ctx.wave_speed.merge(b);
   };
   for (auto& body : ctx.bodies) {
     auto& p = body.particles;
@@ -58,31 +61,28 @@ void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
     MatU<Dim>* stored =
         p.has_field(keys::velocity_gradient<Dim>) ? p.field(keys::velocity_gradient<Dim>).data() : nullptr;
     if (!fused) body.velocity_gradient.resize(p.size());
-    const auto bound = tbb::parallel_reduce(
-        tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},
-        [&](const tbb::blocked_range<Index>& r, WaveSpeedBound<Dim> b) {
-          thread_local std::vector<MatU<Dim>> buffer;
-          buffer.resize(block);
-          for (Index begin = r.begin(); begin < r.end(); begin += block) {
-            const Index end = std::min(begin + block, r.end());
-            MatU<Dim>* L = fused ? buffer.data() : body.velocity_gradient.data() + begin;
-            const auto t0 = profiled ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
-            if (!transfer(body, begin, end, L)) ctx.guard_tripped = true;
-            if (stored) std::copy(L, L + (end - begin), stored + begin);
-            if (!fused) continue;
-            if (!profiled) {
-              b.merge(material.update_stress(p, begin, end, L, ctx.dt));
-              continue;
-            }
-            const auto t1 = StepProfile::Clock::now();
-            b.merge(material.update_stress(p, begin, end, L, ctx.dt));
-            split.transfer += std::chrono::duration<double>(t1 - t0).count();
-            split.stress += StepProfile::since(t1);
-          }
-          return b;
-        },
-        merge);
-    ctx.wave_speed.merge(bound);
+    parallel_chunks(Index{0}, p.size(), block, [&](Index chunk_begin, Index chunk_end) {
+      WaveSpeedBound<Dim> b;
+      thread_local std::vector<MatU<Dim>> buffer;
+      buffer.resize(block);
+      for (Index begin = chunk_begin; begin < chunk_end; begin += block) {
+        const Index end = std::min(begin + block, chunk_end);
+        MatU<Dim>* L = fused ? buffer.data() : body.velocity_gradient.data() + begin;
+        const auto t0 = profiled ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
+        if (!transfer(body, begin, end, L)) ctx.guard_tripped = true;
+        if (stored) std::copy(L, L + (end - begin), stored + begin);
+        if (!fused) continue;
+        if (!profiled) {
+          b.merge(material.update_stress(p, begin, end, L, ctx.dt));
+          continue;
+        }
+        const auto t1 = StepProfile::Clock::now();
+        b.merge(material.update_stress(p, begin, end, L, ctx.dt));
+        split.transfer += std::chrono::duration<double>(t1 - t0).count();
+        split.stress += StepProfile::since(t1);
+      }
+      merge(b);
+    });
   }
   if (profiled) {
     if (fused)
@@ -95,15 +95,10 @@ void transfer_and_update_stress(StepContext<Dim>& ctx, Transfer&& transfer) {
     PhaseTimer timer(ctx.profile, StepPhase::stress_update);
     for (auto& body : ctx.bodies) {
       auto& p = body.particles;
-      const auto bound = tbb::parallel_reduce(
-          tbb::blocked_range<Index>(0, p.size(), block), WaveSpeedBound<Dim>{},
-          [&](const tbb::blocked_range<Index>& r, WaveSpeedBound<Dim> b) {
-            b.merge(
-                body.material->update_stress(p, r.begin(), r.end(), body.velocity_gradient.data() + r.begin(), ctx.dt));
-            return b;
-          },
-          merge);
-      ctx.wave_speed.merge(bound);
+      parallel_chunks(Index{0}, p.size(), block, [&](Index chunk_begin, Index chunk_end) {
+        merge(body.material->update_stress(p, chunk_begin, chunk_end, body.velocity_gradient.data() + chunk_begin,
+                                           ctx.dt));
+      });
     }
   }
   if (!ctx.wave_speed.finite) ctx.guard_tripped = true;

@@ -18,10 +18,10 @@
 /// (axisymmetric.hpp). The cache is then the full stencil with its hoop weights.
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include <array>
 
+#include "mpm/core/parallel_chunks.hpp"
 #include "mpm/particles/field_keys.hpp"
 #include "mpm/schemes/explicit_step.hpp"
 #include "mpm/schemes/scheme.hpp"
@@ -81,8 +81,8 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
   void advance(StepContext<Dim>& ctx) override {
     auto& grid = ctx.grid;
     PhaseTimer p2g(ctx.profile, StepPhase::p2g);
-    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
-      for (Index i = r.begin(); i != r.end(); ++i) {
+    parallel_chunks(Index{0}, grid.size(), 1 << 12, [&](Index chunk_begin, Index chunk_end) {
+      for (Index i = chunk_begin; i != chunk_end; ++i) {
         grid.node[i].mass = nodal_mass_[i];
         grid.node[i].momentum.setZero();
         grid.node[i].force.setZero();
@@ -98,14 +98,14 @@ class Tlmpm final : public ShapedScheme<Dim, Shape> {
     grid_update.stop();
 
     PhaseTimer remap(ctx.profile, StepPhase::p2g);
-    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 14), [&](const auto& r) {
-      for (Index i = r.begin(); i != r.end(); ++i) grid.node[i].momentum.setZero();
+    parallel_chunks(Index{0}, grid.size(), 1 << 14, [&](Index chunk_begin, Index chunk_end) {
+      for (Index i = chunk_begin; i != chunk_end; ++i) grid.node[i].momentum.setZero();
     });
     for (std::size_t b = 0; b < ctx.bodies.size(); ++b) update_velocity_and_remap(ctx.bodies[b], stencils_[b], ctx);
     remap.stop();
     PhaseTimer remapped_velocity(ctx.profile, StepPhase::grid_update);
-    tbb::parallel_for(tbb::blocked_range<Index>(0, grid.size(), 1 << 12), [&](const auto& r) {
-      for (Index i = r.begin(); i != r.end(); ++i) {
+    parallel_chunks(Index{0}, grid.size(), 1 << 12, [&](Index chunk_begin, Index chunk_end) {
+      for (Index i = chunk_begin; i != chunk_end; ++i) {
         const NodeRecord<Dim>& n = grid.node[i];
         if (n.mass > ctx.settings.mass_cutoff)
           grid.velocity[i].mapped = n.momentum / n.mass;

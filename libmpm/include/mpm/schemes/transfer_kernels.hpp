@@ -3,9 +3,6 @@
 /// The particle-grid transfers shared by the explicit schemes (review §2.5, Alg. 1-2). Each kernel is
 /// short, templated on dimension and shape function, and has no virtual call inside its loops.
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>

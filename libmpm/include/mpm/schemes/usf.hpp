@@ -108,11 +108,11 @@ class Usf final : public ShapedScheme<Dim, Shape> {
     const Real alpha = ctx.settings.flip_fraction, dt = ctx.dt;
     MatU<Dim>* affine = kernels::affine_of(p);
     keys::PolyModes<Dim>* poly = kernels::polypic_of<Dim, Shape>(p);
-    tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
+    parallel_chunks(Index{0}, p.size(), 1024, [&](Index chunk_begin, Index chunk_end) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ParticleDomain<Dim, Shape> domain(p);
       bool ok = true;
-      for (Index i = r.begin(); i != r.end(); ++i) {
+      for (Index i = chunk_begin; i != chunk_end; ++i) {
         st.compute(p.x[i], g, domain(i));
         Vec<Dim> v_pic = Vec<Dim>::Zero(), dv = Vec<Dim>::Zero();
         for (int a = 0; a < st.count; ++a) {

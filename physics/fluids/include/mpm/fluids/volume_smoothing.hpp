@@ -16,8 +16,6 @@
 /// stored energy. What it removes is summed (energy.csv column `smoothed_energy`, eq. PS.3) but not booked as removed
 /// in the sentinel's balance (smoothed_energy() says why). The only state is that sum (checkpointed).
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -25,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "mpm/core/parallel_chunks.hpp"
 #include "mpm/core/state_archive.hpp"
 #include "mpm/grid/node_runs.hpp"
 #include "mpm/grid/tile_binning.hpp"
@@ -120,9 +119,9 @@ class VolumeSmoothing final : public Module<Dim> {
         }
       }
     });
-    tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const tbb::blocked_range<Index>& r) {
+    parallel_chunks(Index{0}, p.size(), 1024, [&](Index chunk_begin, Index chunk_end) {
       Stencil<Dim, LinearHat> st;
-      for (Index i = r.begin(); i != r.end(); ++i) {
+      for (Index i = chunk_begin; i != chunk_end; ++i) {
         const Real J = axisym::volume_ratio(p, i, hoop);
         if (!(J > 0)) continue;  // the stability guard names it
         st.compute(x[static_cast<std::size_t>(i)], g);

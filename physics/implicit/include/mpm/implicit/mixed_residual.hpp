@@ -14,14 +14,12 @@
 /// The per-point work runs in parallel into per-point slots; every sum (cells, nodes) runs serially in point
 /// order: the same bits for any thread count.
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <vector>
 
+#include "mpm/core/parallel_chunks.hpp"
 #include "mpm/implicit/consistent_mass.hpp"
 #include "mpm/implicit/free_dofs.hpp"
 #include "mpm/implicit/implicit_options.hpp"
@@ -112,14 +110,14 @@ class MixedResidual final : public NonlinearProblem {
   bool evaluate_points() {
     std::atomic<bool> ok{true};
     const Index n = pts_.size();
-    tbb::parallel_for(tbb::blocked_range<Index>(0, n, 256), [&](const tbb::blocked_range<Index>& range) {
-      for (Index i = range.begin(); i != range.end(); ++i)
+    parallel_chunks(Index{0}, n, 256, [&](Index chunk_begin, Index chunk_end) {
+      for (Index i = chunk_begin; i != chunk_end; ++i)
         if (!evaluate_point(i)) ok.store(false, std::memory_order_relaxed);
     });
     if (!ok.load()) return false;
     if (!mixed_pressures()) return false;
-    tbb::parallel_for(tbb::blocked_range<Index>(0, n, 256), [&](const tbb::blocked_range<Index>& range) {
-      for (Index i = range.begin(); i != range.end(); ++i) {
+    parallel_chunks(Index{0}, n, 256, [&](Index chunk_begin, Index chunk_end) {
+      for (Index i = chunk_begin; i != chunk_end; ++i) {
         const Mat3 S_h = plasticity::algorithmic_stress(S_algo_[i], pressure_[i], DCJ_[i]);  // (90)
         P_[i] = pts_.volume0[i] * (0.5 * (pts_.F_n[i] + F1_[i]) * S_h * pts_.F_n[i].transpose());
       }

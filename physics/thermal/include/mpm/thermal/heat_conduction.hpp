@@ -29,8 +29,6 @@
 /// a_I^k = sum_p V_p grad phi_I (the node's share of the interface); integrated exactly over the step for the
 /// two nodal capacities (eq. TC.2). Without a finite conductance the single shared field runs unchanged.
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -41,6 +39,7 @@
 #include <vector>
 
 #include "mpm/core/expression.hpp"
+#include "mpm/core/parallel_chunks.hpp"
 #include "mpm/core/state_archive.hpp"
 #include "mpm/particles/field_keys.hpp"
 #include "mpm/schemes/axisymmetric.hpp"
@@ -314,8 +313,8 @@ class HeatConduction final : public Module<Dim> {
 
   /// T~_I = T_I + dt Q_I / C_I.
   static void predict(NodalHeat& f, Real dt) {
-    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(f.capacity.size()), 1 << 12), [&](const auto& r) {
-      for (Index n = r.begin(); n != r.end(); ++n)
+    parallel_chunks(Index{0}, static_cast<Index>(f.capacity.size()), 1 << 12, [&](Index chunk_begin, Index chunk_end) {
+      for (Index n = chunk_begin; n != chunk_end; ++n)
         f.updated[n] = f.capacity[n] > 0 ? f.temperature[n] + dt * f.heat_flow[n] / f.capacity[n] : f.temperature[n];
     });
   }
@@ -380,10 +379,10 @@ class HeatConduction final : public Module<Dim> {
   void exchange(std::size_t bodies, Real dt) {
     const int n = static_cast<int>(bodies);
     const Index nodes = static_cast<Index>(shared_.capacity.size());
-    tbb::parallel_for(tbb::blocked_range<Index>(0, nodes, 1 << 12), [&](const auto& r) {
+    parallel_chunks(Index{0}, nodes, 1 << 12, [&](Index chunk_begin, Index chunk_end) {
       std::vector<int> present(bodies), root(bodies);
       std::vector<Real> C(bodies), T(bodies), Q(bodies);
-      for (Index I = r.begin(); I != r.end(); ++I) {
+      for (Index I = chunk_begin; I != chunk_end; ++I) {
         const int count = groups_at(I, bodies, present.data(), root.data());
         if (count < 2) continue;
         // group sums, held at the group's first member
@@ -422,10 +421,10 @@ class HeatConduction final : public Module<Dim> {
   /// field holds the capacity-weighted mean (for the grid output).
   void merge_groups(std::size_t bodies) {
     const Index nodes = static_cast<Index>(shared_.capacity.size());
-    tbb::parallel_for(tbb::blocked_range<Index>(0, nodes, 1 << 12), [&](const auto& r) {
+    parallel_chunks(Index{0}, nodes, 1 << 12, [&](Index chunk_begin, Index chunk_end) {
       std::vector<int> present(bodies), root(bodies);
       std::vector<Real> C(bodies), H(bodies);
-      for (Index I = r.begin(); I != r.end(); ++I) {
+      for (Index I = chunk_begin; I != chunk_end; ++I) {
         Real c = 0, hc = 0;
         for (const auto& own : own_) c += own.capacity[I], hc += own.heat_content[I];
         shared_.capacity[I] = c;
@@ -607,8 +606,8 @@ class HeatConduction final : public Module<Dim> {
 
   /// T_I = sum phi (m c T) / C_I (eq. 5.25).
   static void nodal_values(NodalHeat& f) {
-    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(f.capacity.size()), 1 << 12), [&](const auto& r) {
-      for (Index n = r.begin(); n != r.end(); ++n)
+    parallel_chunks(Index{0}, static_cast<Index>(f.capacity.size()), 1 << 12, [&](Index chunk_begin, Index chunk_end) {
+      for (Index n = chunk_begin; n != chunk_end; ++n)
         f.temperature[n] = f.capacity[n] > 0 ? f.heat_content[n] / f.capacity[n] : 0;
     });
   }
@@ -655,11 +654,11 @@ class HeatConduction final : public Module<Dim> {
         });
       }
       for (NodalHeat* f : fields) {
-        tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(f->target.size()), 1 << 12),
-                          [&](const auto& r) {
-                            for (Index n = r.begin(); n != r.end(); ++n)
-                              if (f->capacity[n] > 0) f->target[n] += f->updated[n] - f->round_trip[n] / f->capacity[n];
-                          });
+        parallel_chunks(Index{0}, static_cast<Index>(f->target.size()), 1 << 12,
+                        [&](Index chunk_begin, Index chunk_end) {
+                          for (Index n = chunk_begin; n != chunk_end; ++n)
+                            if (f->capacity[n] > 0) f->target[n] += f->updated[n] - f->round_trip[n] / f->capacity[n];
+                        });
         hold_nodes(f->target, ctx.time + ctx.dt);
       }
     }
@@ -688,10 +687,10 @@ class HeatConduction final : public Module<Dim> {
     for (const auto& r : region_) held.push_back(r(0, 0, 0, t1));
     const Real alpha = relaxation_fraction(b, dt);
     const Real* target = alpha > 0 ? f.target.data() : nullptr;
-    tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
+    parallel_chunks(Index{0}, p.size(), 1024, [&](Index chunk_begin, Index chunk_end) {
       axisym::StencilFor<Dim, Shape, Coords> st;
       const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
-      for (Index i = r.begin(); i != r.end(); ++i) {
+      for (Index i = chunk_begin; i != chunk_end; ++i) {
         st.compute(x[i], g, domain(i));
         Real d = 0;
         for (int a = 0; a < st.count; ++a) d += st.w[a] * (f.updated[st.node[a]] - f.temperature[st.node[a]]);
@@ -716,10 +715,10 @@ class HeatConduction final : public Module<Dim> {
       const VecU<Dim>* x = positions(p);
       const Mat<Dim> k = setup_.bodies[b].conductivity;
       const std::vector<Real>& nodal_temperature = own_.empty() ? shared_.temperature : own_[b].temperature;
-      tbb::parallel_for(tbb::blocked_range<Index>(0, p.size(), 1024), [&](const auto& r) {
+      parallel_chunks(Index{0}, p.size(), 1024, [&](Index chunk_begin, Index chunk_end) {
         axisym::StencilFor<Dim, Shape, Coords> st;
         const ThermalDomain<Dim, Shape> domain(p, setup_.total_lagrangian);
-        for (Index i = r.begin(); i != r.end(); ++i) {
+        for (Index i = chunk_begin; i != chunk_end; ++i) {
           st.compute(x[i], g, domain(i));
           Vec<Dim> grad = Vec<Dim>::Zero();
           for (int a = 0; a < st.count; ++a)
