@@ -126,27 +126,32 @@ def test_the_guard_raises_stability_error_with_the_programs_report(tmp_path):
 
 
 def test_other_python_threads_run_while_the_engine_steps():
-    # The interpreter lock is released while the engine steps: a Python thread spinning meanwhile makes progress
-    # (were it held, the spinner could not run at all until run() returned).
+    # The interpreter lock is released while the engine steps: a Python thread reading the step count meanwhile
+    # sees counts strictly between the first and the last. Were the lock held for the whole of run() (no poll or
+    # callback runs Python code inside it here), the reader could run only before run() starts or after it
+    # returns, and would see only those two counts. (A count of the reader's iterations cannot tell: it also
+    # grows in the switch intervals before and after run(), 31,592-80,414 with the lock held.)
     import threading
 
     d = two_disks(end_time=100)
     for body in d["bodies"]:
         body["velocity"] = [0, 0]  # at rest: 20000 steps stay in the grid
-    sim = sim_of(d)
+    sim = sim_of(d, threads=1)  # one engine thread: the reader keeps a core on a busy machine
     sim.run(steps=10)
-    count, stop = [0], threading.Event()
+    first, last = sim.step_count, sim.step_count + 20000
+    seen, stop = set(), threading.Event()
 
-    def spin():
+    def read_step_counts():
         while not stop.is_set():
-            count[0] += 1
-    spinner = threading.Thread(target=spin)
-    spinner.start()
+            seen.add(sim.step_count)
+    reader = threading.Thread(target=read_step_counts)
+    reader.start()
     try:
-        before = count[0]
         sim.run(steps=20000)
-        during = count[0] - before
     finally:
         stop.set()
-        spinner.join()
-    assert during > 1000
+        reader.join()
+    assert sim.step_count == last
+    assert seen <= set(range(first, last + 1))
+    within = [k for k in seen if first < k < last]
+    assert len(within) >= 2, f"the reader saw only the counts {sorted(seen)}: run() held the interpreter lock"

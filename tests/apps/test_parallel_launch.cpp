@@ -111,6 +111,13 @@ TEST(ParallelLaunch, OnlyRunRunsOnSeveralProcesses) {
   fs::remove_all(dir);
 }
 
+/// A build with MPI (MPM_WITH_MPI) must be able to start its distributed runs: a missing launcher fails the tests
+/// that need it instead of skipping them, so that a CI image without OpenMPI's mpirun cannot pass them unseen.
+bool parallel_launch_mpirun_found() { return std::system("command -v mpirun > /dev/null 2>&1") == 0; }
+const char* const parallel_launch_missing_mpirun =
+    "this build has MPI (MPM_WITH_MPI) but no mpirun is on PATH: install OpenMPI's launcher (openmpi-bin), or "
+    "configure with -DMPM_WITH_MPI=OFF";
+
 /// mpirun -np `np` mpm ARGS, as root; returns the exit status (124: mpirun did not end within 120 s).
 int mpirun(int np, const std::string& args, const fs::path& dir, const std::string& environment = "") {
   const std::string cmd = environment +
@@ -123,7 +130,7 @@ int mpirun(int np, const std::string& args, const fs::path& dir, const std::stri
 }
 
 TEST(ParallelLaunch, UnderMpirunTheRunIsDistributedAndLogsOnce) {
-  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  ASSERT_TRUE(parallel_launch_mpirun_found()) << parallel_launch_missing_mpirun;
   const auto dir = scratch("parallel_launch_mpirun");
   const fs::path out = dir / "out";
   EXPECT_EQ(mpirun(2, "run " + scene + " --steps 30 --threads 1 -o " + out.string(), dir), 0)
@@ -141,7 +148,7 @@ TEST(ParallelLaunch, UnderMpirunTheRunIsDistributedAndLogsOnce) {
 
 /// What a distributed run does not take yet is refused on every rank with exit 2, said once, before writing.
 TEST(ParallelLaunch, UnderMpirunWhatCannotBeDistributedIsRefusedOnce) {
-  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  ASSERT_TRUE(parallel_launch_mpirun_found()) << parallel_launch_missing_mpirun;
   const auto dir = scratch("parallel_launch_refused");
   const fs::path out = dir / "out";
   // The implicit scheme (its Newton-Krylov solve has no distributed vectors yet).
@@ -190,7 +197,7 @@ solver: {cfl: 0.5, gravity: [0, -9.81], end_time: 0.1}
 /// files of one uninterrupted process, bit for bit (compare_runs.py: energy.csv and every frame); so does a
 /// one-process restart of the same checkpoint.
 TEST(ParallelLaunch, UnderMpirunACheckpointRestartsOnAnyNumberOfRanks) {
-  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  ASSERT_TRUE(parallel_launch_mpirun_found()) << parallel_launch_missing_mpirun;
   const auto dir = scratch("parallel_launch_checkpoint");
   std::string text = cli::slurp(scene);
   text.replace(text.find("  interval: 0.05"), 16, "  interval: 0.25\n  checkpoint: {interval: 1.0}");
@@ -226,7 +233,7 @@ TEST(ParallelLaunch, UnderMpirunACheckpointRestartsOnAnyNumberOfRanks) {
 /// The stability guard trips on the rank holding the block (thrown out of the grid through +x): every rank rolls
 /// back together and exits 3 with the same report, said once, and the last good frame is complete.
 TEST(ParallelLaunch, UnderMpirunTheGuardStopsEveryRankWithOneReport) {
-  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  ASSERT_TRUE(parallel_launch_mpirun_found()) << parallel_launch_missing_mpirun;
   const auto dir = scratch("parallel_launch_guard");
   std::ofstream(dir / "scene.yaml") << cli::block_scene("cfl: 0.5, end_time: 1", "[20, 0]");
   const fs::path out = dir / "out";
@@ -262,7 +269,7 @@ TEST(ParallelLaunch, UnderMpirunTheGuardStopsEveryRankWithOneReport) {
 
 /// An internal error on one rank (the hidden test seam --test-fail-at R:S) ends the whole job, never a hang.
 TEST(ParallelLaunch, UnderMpirunAnErrorOnOneRankEndsTheJob) {
-  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  ASSERT_TRUE(parallel_launch_mpirun_found()) << parallel_launch_missing_mpirun;
   const auto dir = scratch("parallel_launch_abort");
   const int status =
       mpirun(3, "run " + scene + " --threads 1 -o " + (dir / "out").string() + " --test-fail-at 1:5", dir);
@@ -295,7 +302,9 @@ TEST(ParallelLaunch, EveryProcessExitsWithTwoAndTheFirstSaysWhy) {
 }
 
 TEST(ParallelLaunch, UnderOpenMpisMpirunNoProcessRuns) {
-  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not installed";
+  // Without MPI the launcher is optional: this test needs it to start two processes.
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "mpirun is not installed (a build without MPI)";
   const auto dir = scratch("parallel_launch_mpirun");
   const fs::path out = dir / "out";
   // timeout: a launcher that hangs fails the test instead of the suite

@@ -384,20 +384,33 @@ TEST(PlasticityPoint, AdiabaticHeatingAndThermalSoftening) {
   EXPECT_NEAR(jc.stress(0, std::exp(1.0), 0), 90e6 * 1.025, 1e-6);
 }
 
-// Flow laws of the J2 model in shear (review Table 9): the von Mises stress after yielding equals
-// sigma_y + H eps_p (linear) and sigma_y + Q (1 - exp(-b eps_p)) (Voce), up to the one-increment lag of
-// Alg. 12 (slope x 1e-4).
+// Flow laws of the J2 model in shear (review Table 9): the von Mises stress after yielding equals the closed
+// forms sigma_y + H eps_p (linear: sigma_y = 100 MPa, H = 1 GPa) and sigma_y + Q (1 - exp(-b eps_p)) (Voce:
+// Q = 200 MPa, b = 10), written here from those parameters (not taken from flow_stress.hpp), up to the
+// one-increment lag of Alg. 12 (slope x 1e-4). The law itself is checked against the same closed forms, with its
+// slope against theirs.
 TEST(PlasticityPoint, LinearAndVoceHardeningInShear) {
+  const auto closed_form = [](int voce, Real eps) {
+    return voce ? 100e6 + 200e6 * (1 - std::exp(-10 * eps)) : 100e6 + 1e9 * eps;
+  };
+  const auto closed_form_slope = [](int voce, Real eps) { return voce ? 200e6 * 10 * std::exp(-10 * eps) : 1e9; };
   for (int voce = 0; voce < 2; ++voce) {
     Point<J2Linear> pt;
     set_elastic(pt.c, 2700, 70e9, 0.33);
     pt.c.flow = voce ? HardeningFlow{100e6, 0, 200e6, 10} : HardeningFlow{100e6, 1e9, 0, 0};
+    for (Real e : {0.0, 0.01, 0.1, 0.3, 1.0}) {
+      EXPECT_NEAR(pt.c.flow.stress(e, 1, 0), closed_form(voce, e), 1e-9 * closed_form(voce, e)) << "voce = " << voce;
+      EXPECT_NEAR(pt.c.flow.slope(e), closed_form_slope(voce, e), 1e-9 * closed_form_slope(voce, 0));
+    }
     Mat3 L = Mat3::Zero();
-    L(0, 1) = L(1, 0) = 1e-4 * std::sqrt(3.0) / 2;
+    L(0, 1) = L(1, 0) = 1e-4 * std::sqrt(3.0) / 2;  // equivalent strain rate 1e-4 per step
     for (int s = 0; s < 3000; ++s) pt.step(L, 1.0);
     const Real eps = pt.state.plastic_strain;
-    const Real expected = pt.c.flow.stress(eps, 1, 0);
-    EXPECT_NEAR(von_mises(pt.stress.full()), expected, pt.c.flow.slope(0) * 1.1e-4) << "voce = " << voce;
+    // 3000 steps give an equivalent strain of 0.3, of which sigma / (3 G) (~5 mstrain) is elastic
+    ASSERT_GT(eps, 0.28) << "voce = " << voce;
+    ASSERT_LT(eps, 0.3) << "voce = " << voce;
+    EXPECT_NEAR(von_mises(pt.stress.full()), closed_form(voce, eps), closed_form_slope(voce, 0) * 1.1e-4)
+        << "voce = " << voce;
   }
 }
 

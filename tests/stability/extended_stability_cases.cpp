@@ -144,6 +144,7 @@ StabilityOutcome impact_10km_s(const fs::path& dir, const std::string& scheme) {
   o.measured = o.output.min_det_F;
   o.measures["max_pressure"] = p_max;
   o.measures["energy_growth"] = o.output.max_energy_growth();
+  o.measures["warning_step"] = sentinel_warning_step(o.log);
   const std::string held = o.completed() ? "the EOS held it" : "the guard stopped it";
   o.summary = fmt::format(
       "{}: {} steps to t = {:.3g} s; smallest det F {:.3f} (1D Hugoniot J_H = 0.486), largest pressure {:.3g} Pa "

@@ -30,10 +30,13 @@ TEST(CflBoundLongRun, UslIsStoppedByTheGuardAfterTheSentinelWarns) {
   const auto dir = scratch("cfl_usl");
   const StabilityOutcome o = run(dir, "usl");
   ASSERT_TRUE(o.stopped()) << o.summary;
-  EXPECT_EQ(o.measures.at("warning_step"), 50);
+  // The order of events is the property, not their steps (measured: warned at step 50, stopped at 68): the
+  // sentinel warns first, then the guard stops the run before its end.
+  EXPECT_GE(o.measures.at("warning_step"), 1) << o.log;
+  EXPECT_LT(o.measures.at("warning_step"), o.steps) << o.log;
   EXPECT_NE(o.log.find("Hint: USL is the least stable explicit scheme"), std::string::npos) << o.log;
   EXPECT_NE(o.message.find("det F = -"), std::string::npos) << o.message;
-  EXPECT_LT(o.steps, 200);  // measured: stopped at step 68
+  EXPECT_LT(o.steps, 100000);  // stopped before the end (measured: at step 68)
   expect_clean_output(o);
   expect_flight_record(dir / "usl", o);
   fs::remove_all(dir);
@@ -44,7 +47,10 @@ TEST(CflBoundLongRun, MuslRunsAndDamps) {
   const StabilityOutcome o = run(dir, "musl");
   ASSERT_TRUE(o.completed()) << o.message;
   EXPECT_EQ(o.steps, 100000);
-  EXPECT_NEAR(o.measured, -0.517, 0.05);
+  // Its double mapping damps: the energy only falls. Bounded, not pinned: at most 60% lost (measured 51.7%); less
+  // damping is an improvement and passes.
+  EXPECT_LT(o.measured, 0);
+  EXPECT_GT(o.measured, -0.6);
   EXPECT_LT(o.measures.at("energy_growth"), 1e-3);
   EXPECT_EQ(o.measures.at("warning_step"), -1) << o.log;
   EXPECT_LT(o.largest_energy_ratio, 1);  // measured 0.85
@@ -64,7 +70,9 @@ TEST(CflBoundLongRun, UsfGainsEnergyAndTheSentinelWarns) {
   const StabilityOutcome o = run(dir, "usf");
   expect_gain_and_warning(o);
   EXPECT_GT(o.measured, 30);  // measured +90.0 (91-fold)
-  EXPECT_EQ(o.measures.at("warning_step"), 700);
+  // The user is warned during the run, once (measured: at step 700), not at its end.
+  EXPECT_GE(o.measures.at("warning_step"), 1) << o.log;
+  EXPECT_LT(o.measures.at("warning_step"), o.steps) << o.log;
   EXPECT_NE(o.log.find("Hint: pure FLIP with linear hats"), std::string::npos) << o.log;
   fs::remove_all(dir);
 }
@@ -73,8 +81,13 @@ TEST(CflBoundLongRun, TlmpmGainsEnergyAndTheSentinelWarns) {
   const auto dir = scratch("cfl_tlmpm");
   const StabilityOutcome o = run(dir, "tlmpm");
   expect_gain_and_warning(o);
-  EXPECT_NEAR(o.measured, 0.425, 0.1);
-  EXPECT_EQ(o.measures.at("warning_step"), 10350);
+  // It gains energy (the property the sentinel's hint names), bounded: at most +60% over the 1e5 steps (measured
+  // +42.5%); a smaller gain is an improvement and passes.
+  EXPECT_GT(o.measured, 0);
+  EXPECT_LT(o.measured, 0.6);
+  // The user is warned during the run (measured: at step 10350), not at its end.
+  EXPECT_GE(o.measures.at("warning_step"), 1) << o.log;
+  EXPECT_LT(o.measures.at("warning_step"), o.steps) << o.log;
   EXPECT_NE(o.log.find("Hint: the total-Lagrangian scheme gains energy"), std::string::npos) << o.log;
   fs::remove_all(dir);
 }

@@ -179,8 +179,13 @@ TEST(TlmpmPaperStepLoad, PaperLoadQuadratic) {
   const TlmpmLadder l = step_ladder({8, 16, 32, 64}, "lagrange_quadratic", -1.27e6);
   for (std::size_t i = 1; i < l.rms.size(); ++i) EXPECT_LT(l.rms[i], l.rms[i - 1]) << "n_el doubling " << i;
   EXPECT_LT(l.rms[2], 0.016);  // the paper's 32 elements: measured 1.41 %
-  EXPECT_GT(l.rms[3], 0.010);  // the floor of the nonlinearity: measured 1.19 % at 64 elements
-  EXPECT_GT(std::log(l.rms[0] / l.rms[1]) / std::log(2.0), 0.55);  // measured 0.66 from 8 to 16
+  // The floor of the nonlinearity (measured 1.19 % at 64 elements) shows as a falling local rate, whatever the
+  // discretisation's share: an error C h^p + F with a floor F > 0 converges ever slower (measured: 0.66 from 8 to
+  // 16 elements, 0.25 from 32 to 64). A better discretisation lowers C and keeps that order; pinning the floor's
+  // value would fail it.
+  const auto local_rate = [&](std::size_t i) { return std::log(l.rms[i] / l.rms[i + 1]) / std::log(2.0); };
+  EXPECT_GT(local_rate(0), 0.55);  // measured 0.66 from 8 to 16
+  EXPECT_LT(local_rate(2), local_rate(0));
 }
 
 // A load 100 times smaller (0.005 % strain): the series is then the exact solution to 1e-4 and the error
