@@ -224,12 +224,18 @@ int main(int argc, char** argv) {
                               "a UMAT, its tangent against finite differences; exit status 3 when one fails");
   DiffOptions diff;  // `mpm diff`: two output directories compared for regression checks
   std::string diff_a, diff_b;
-  auto* diff_cmd = cli.add_subcommand("diff", "compare two output directories frame by frame and field by field");
+  auto* diff_cmd = cli.add_subcommand(
+      "diff", "compare two output directories field by field, frames and time-stamped rows paired by time");
   diff_cmd->add_option("run_a", diff_a, "first output directory")->required();
   diff_cmd->add_option("run_b", diff_b, "second output directory")->required();
   diff_cmd->add_option("--tolerance", diff.relative, "relative tolerance: |a-b| <= REL * max|a| of the field (0)")
       ->check(non_negative_number);
   diff_cmd->add_option("--absolute", diff.absolute, "absolute tolerance (0)")->check(non_negative_number);
+  diff_cmd
+      ->add_option("--time-tolerance", diff.time_tolerance,
+                   "frames (and CSV rows) are paired when their times differ by at most T x the smallest spacing of "
+                   "the output times; the times without a partner are listed (1e-6)")
+      ->check(non_negative_number);
   VerifyOptions verify;  // `mpm verify`: solution verification at several resolutions
   std::string verify_output;
   auto* verify_cmd = cli.add_subcommand("verify",

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <regex>
@@ -60,6 +61,15 @@ class Comparison {
     if (d.first < 0) d.first = k;
     if (d.note.empty()) d.note = note;
   }
+  /// Times of `file` (frames or rows) that one run has and the other has not: a difference of structure, listed
+  /// under the table. `first`: the first such frame (or row) of A, or of B when A has none.
+  void unmatched(const std::string& file, const std::vector<double>& only_a, const std::vector<double>& only_b,
+                 int first) {
+    if (only_a.empty() && only_b.empty()) return;
+    structure(file, "(times)", first,
+              fmt::format("({} times of A and {} of B without a partner: below)", only_a.size(), only_b.size()));
+    unmatched_.push_back({file, only_a, only_b});
+  }
   int print(std::ostream& out) const {
     int different = 0;
     fmt::print(out, "{:<28} {:<26} {:>12} {:>12}  {}\n", "file", "field", "max |a-b|", "max rel", "first difference");
@@ -67,6 +77,10 @@ class Comparison {
       different += d.first >= 0;
       fmt::print(out, "{:<28} {:<26} {:>12.4g} {:>12.4g}  {}\n", key.first, key.second, d.absolute, d.relative,
                  d.first < 0 ? std::string("-") : fmt::format("{} {}", d.first, d.note));
+    }
+    for (const auto& u : unmatched_) {
+      if (!u.only_a.empty()) fmt::print(out, "{}: in A only, t = {}\n", u.file, times_text(u.only_a));
+      if (!u.only_b.empty()) fmt::print(out, "{}: in B only, t = {}\n", u.file, times_text(u.only_b));
     }
     if (different == 0)
       fmt::print(out, "equal: {} fields within |a-b| <= max({:g}, {:g} |a|max)\n", fields_.size(), absolute_,
@@ -77,9 +91,74 @@ class Comparison {
   }
 
  private:
+  struct Unmatched {
+    std::string file;
+    std::vector<double> only_a, only_b;
+  };
+  /// The first eight times, then how many in all.
+  static std::string times_text(const std::vector<double>& t) {
+    std::string text;
+    for (std::size_t i = 0; i < std::min<std::size_t>(t.size(), 8); ++i)
+      text += fmt::format("{}{:.9g}", i ? ", " : "", t[i]);
+    if (t.size() > 8) text += fmt::format(", ... ({} in all)", t.size());
+    return text + " s";
+  }
   double relative_, absolute_;
   std::map<std::pair<std::string, std::string>, FieldDifference> fields_;
+  std::vector<Unmatched> unmatched_;
 };
+
+/// Frames (or rows) of A and B paired by time: two runs with other output intervals write other times, and only
+/// the same times are compared (by index, frame 10 of a run every 2.5 us, t = 25 us, met frame 10 of a run every
+/// 2.25 us, t = 22.5 us). Times are the same when they differ by at most `tolerance` times the smallest spacing of
+/// consecutive times in either run (the finer output interval); each time pairs at most once, in order.
+struct TimePairs {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  ///< (index in A, index in B), by increasing time
+  std::vector<double> only_a, only_b;                      ///< times without a partner, increasing
+  int first_unmatched = -1;                                ///< the first unpaired index of A (else of B), or -1
+};
+
+TimePairs pair_by_time(const std::vector<double>& ta, const std::vector<double>& tb, double tolerance) {
+  auto order = [](const std::vector<double>& t) {
+    std::vector<std::size_t> k(t.size());
+    for (std::size_t i = 0; i < k.size(); ++i) k[i] = i;
+    std::stable_sort(k.begin(), k.end(), [&](std::size_t i, std::size_t j) { return t[i] < t[j]; });
+    return k;
+  };
+  const auto ka = order(ta), kb = order(tb);
+  double spacing = std::numeric_limits<double>::infinity(), largest = 0;
+  auto scan = [&](const std::vector<double>& t, const std::vector<std::size_t>& k) {
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      largest = std::max(largest, std::abs(t[k[i]]));
+      const double gap = i > 0 ? t[k[i]] - t[k[i - 1]] : 0.0;
+      if (gap > 0) spacing = std::min(spacing, gap);
+    }
+  };
+  scan(ta, ka);
+  scan(tb, kb);
+  if (!std::isfinite(spacing)) spacing = largest > 0 ? largest : 1;  // one time each
+  const double within = tolerance * spacing;
+  TimePairs p;
+  int first_b = -1;
+  std::size_t i = 0, j = 0;
+  while (i < ka.size() || j < kb.size()) {
+    const double a = i < ka.size() ? ta[ka[i]] : std::numeric_limits<double>::infinity();
+    const double b = j < kb.size() ? tb[kb[j]] : std::numeric_limits<double>::infinity();
+    if (std::abs(a - b) <= within) {
+      p.pairs.emplace_back(ka[i++], kb[j++]);
+    } else if (a < b) {
+      p.only_a.push_back(a);
+      if (p.first_unmatched < 0) p.first_unmatched = static_cast<int>(ka[i]);
+      ++i;
+    } else {
+      p.only_b.push_back(b);
+      if (first_b < 0) first_b = static_cast<int>(kb[j]);
+      ++j;
+    }
+  }
+  if (p.first_unmatched < 0) p.first_unmatched = first_b;
+  return p;
+}
 
 struct Frame {
   double time;
@@ -149,21 +228,24 @@ void compare_arrays(Comparison& c, const std::string& file, const std::string& n
       c.values(file, name, frame, a->GetComponent(i, k), b->GetComponent(match[static_cast<std::size_t>(i)], k), scale);
 }
 
-void compare_series(Comparison& c, const fs::path& a_dir, const fs::path& b_dir, const std::string& pvd) {
+void compare_series(Comparison& c, const fs::path& a_dir, const fs::path& b_dir, const std::string& pvd,
+                    double time_tolerance) {
   const auto fa = read_pvd(a_dir / pvd);
   if (!fs::exists(b_dir / pvd)) {
     c.structure(pvd, "(series)", 0, "(missing in B)");
     return;
   }
   const auto fb = read_pvd(b_dir / pvd);
-  if (fa.size() != fb.size())
-    c.structure(pvd, "(frames)", static_cast<int>(std::min(fa.size(), fb.size())),
-                fmt::format("({} frames against {})", fa.size(), fb.size()));
-  for (std::size_t k = 0; k < std::min(fa.size(), fb.size()); ++k) {
-    const int frame = static_cast<int>(k);
-    c.values(pvd, "(time)", frame, fa[k].time, fb[k].time, std::abs(fa[k].time));
-    auto a = read_dataset(a_dir / fa[k].file);
-    auto b = read_dataset(b_dir / fb[k].file);
+  std::vector<double> ta, tb;
+  for (const auto& f : fa) ta.push_back(f.time);
+  for (const auto& f : fb) tb.push_back(f.time);
+  const TimePairs paired = pair_by_time(ta, tb, time_tolerance);
+  c.unmatched(pvd, paired.only_a, paired.only_b, paired.first_unmatched);
+  for (const auto& [ia, ib] : paired.pairs) {
+    const int frame = static_cast<int>(ia);  // A's frame number
+    c.values(pvd, "(time)", frame, fa[ia].time, fb[ib].time, std::abs(fa[ia].time));
+    auto a = read_dataset(a_dir / fa[ia].file);
+    auto b = read_dataset(b_dir / fb[ib].file);
     if (a->GetNumberOfPoints() != b->GetNumberOfPoints()) {
       c.structure(pvd, "(points)", frame,
                   fmt::format("({} points against {})", a->GetNumberOfPoints(), b->GetNumberOfPoints()));
@@ -202,7 +284,8 @@ std::vector<std::vector<std::string>> read_csv(const fs::path& file) {
   return rows;
 }
 
-void compare_csv(Comparison& c, const fs::path& a_dir, const fs::path& b_dir, const std::string& name) {
+void compare_csv(Comparison& c, const fs::path& a_dir, const fs::path& b_dir, const std::string& name,
+                 double time_tolerance) {
   if (!fs::exists(b_dir / name)) {
     c.structure(name, "(file)", 0, "(missing in B)");
     return;
@@ -212,29 +295,41 @@ void compare_csv(Comparison& c, const fs::path& a_dir, const fs::path& b_dir, co
     c.structure(name, "(columns)", 0, "(other columns)");
     return;
   }
-  if (a.size() != b.size())
-    c.structure(name, "(rows)", static_cast<int>(std::min(a.size(), b.size())) - 1,
-                fmt::format("({} rows against {})", a.size() - 1, b.size() - 1));
   const auto& header = a[0];
+  // Rows paired by time when the first column is the time (energy.csv, the histories), else by index.
+  std::vector<std::pair<std::size_t, std::size_t>> rows;
+  if (header[0] == "time" || header[0].starts_with("time [")) {
+    std::vector<double> ta, tb;
+    for (std::size_t r = 1; r < a.size(); ++r) ta.push_back(a[r].empty() ? 0.0 : std::strtod(a[r][0].c_str(), nullptr));
+    for (std::size_t r = 1; r < b.size(); ++r) tb.push_back(b[r].empty() ? 0.0 : std::strtod(b[r][0].c_str(), nullptr));
+    const TimePairs paired = pair_by_time(ta, tb, time_tolerance);
+    c.unmatched(name, paired.only_a, paired.only_b, paired.first_unmatched);
+    for (const auto& [ra, rb] : paired.pairs) rows.emplace_back(ra + 1, rb + 1);
+  } else {
+    if (a.size() != b.size())
+      c.structure(name, "(rows)", static_cast<int>(std::min(a.size(), b.size())) - 1,
+                  fmt::format("({} rows against {})", a.size() - 1, b.size() - 1));
+    for (std::size_t r = 1; r < std::min(a.size(), b.size()); ++r) rows.emplace_back(r, r);
+  }
   for (std::size_t col = 0; col < header.size(); ++col) {
     // wall times (solver.csv: wall_seconds and its parts, projection_seconds, ...): not results
     if (header[col].ends_with("_seconds")) continue;
     double scale = 0;
     for (std::size_t r = 1; r < a.size(); ++r)
       if (col < a[r].size()) scale = std::max(scale, std::abs(std::strtod(a[r][col].c_str(), nullptr)));
-    for (std::size_t r = 1; r < std::min(a.size(), b.size()); ++r) {
-      if (col >= a[r].size() || col >= b[r].size()) continue;
-      if (a[r][col].empty() || b[r][col].empty()) {  // no data (an empty probe, a particle that has left)
-        if (a[r][col].empty() != b[r][col].empty())
+    for (const auto& [r, rb] : rows) {
+      if (col >= a[r].size() || col >= b[rb].size()) continue;
+      if (a[r][col].empty() || b[rb][col].empty()) {  // no data (an empty probe, a particle that has left)
+        if (a[r][col].empty() != b[rb][col].empty())
           c.structure(name, header[col], static_cast<int>(r) - 1,
                       a[r][col].empty() ? "(no data in A)" : "(no data in B)");
         continue;
       }
       char* end_a = nullptr;
       char* end_b = nullptr;
-      const double x = std::strtod(a[r][col].c_str(), &end_a), y = std::strtod(b[r][col].c_str(), &end_b);
+      const double x = std::strtod(a[r][col].c_str(), &end_a), y = std::strtod(b[rb][col].c_str(), &end_b);
       if (*end_a || *end_b) {  // text (a body's name in the contact forces)
-        if (a[r][col] != b[r][col]) c.structure(name, header[col], static_cast<int>(r) - 1, "(other text)");
+        if (a[r][col] != b[rb][col]) c.structure(name, header[col], static_cast<int>(r) - 1, "(other text)");
         continue;
       }
       c.values(name, header[col], static_cast<int>(r) - 1, x, y, scale);
@@ -256,13 +351,14 @@ int diff_command(const DiffOptions& o, std::ostream& out, std::ostream& err) {
   try {
     for (const auto& dir : {o.a, o.b})
       if (!fs::is_directory(dir)) throw BadInput(dir.string() + " is not a directory");
-    if (!(o.relative >= 0) || !(o.absolute >= 0)) throw BadInput("the tolerances must be >= 0");
+    if (!(o.relative >= 0) || !(o.absolute >= 0) || !(o.time_tolerance >= 0))
+      throw BadInput("the tolerances must be >= 0");
     const auto series = files_with(o.a, ".pvd");
     const auto tables = files_with(o.a, ".csv");
     if (series.empty() && tables.empty()) throw BadInput(o.a.string() + " holds no .pvd or .csv output");
     Comparison c(o.relative, o.absolute);
-    for (const auto& pvd : series) compare_series(c, o.a, o.b, pvd);
-    for (const auto& csv : tables) compare_csv(c, o.a, o.b, csv);
+    for (const auto& pvd : series) compare_series(c, o.a, o.b, pvd, o.time_tolerance);
+    for (const auto& csv : tables) compare_csv(c, o.a, o.b, csv, o.time_tolerance);
     for (const auto& pvd : files_with(o.b, ".pvd"))
       if (!fs::exists(o.a / pvd)) c.structure(pvd, "(series)", 0, "(missing in A)");
     for (const auto& csv : files_with(o.b, ".csv"))

@@ -180,10 +180,53 @@ TEST(Diff, EqualForAnyThreadCountDifferentWhenTheSceneChanges) {
   // A loose enough tolerance accepts it (the largest difference is in the stress, about 3e4 Pa; a relative
   // tolerance does not do, as the total momentum_x of run one is 0 up to round-off).
   EXPECT_EQ(mpm("diff " + (dir / "one").string() + " " + (dir / "faster").string() + " --tolerance 1", dir).status, 1);
-  EXPECT_EQ(mpm("diff " + (dir / "one").string() + " " + (dir / "faster").string() + " --absolute 1e6", dir).status, 0);
+  // The faster disks take shorter steps (the CFL step counts |v|), so their frames fall on other step times: only
+  // the first is at the same time. Paired within half the output interval (--time-tolerance 0.5), every frame
+  // meets its counterpart.
+  const auto loose = mpm("diff " + (dir / "one").string() + " " + (dir / "faster").string() + " --absolute 1e6", dir);
+  EXPECT_EQ(loose.status, 1) << loose.out;
+  EXPECT_NE(loose.out.find("particles.pvd: in A only, t = "), std::string::npos) << loose.out;
+  EXPECT_EQ(
+      mpm("diff " + (dir / "one").string() + " " + (dir / "faster").string() + " --absolute 1e6 --time-tolerance 0.5",
+          dir)
+          .status,
+      0);
   const auto missing = mpm("diff " + (dir / "one").string() + " " + (dir / "nowhere").string(), dir);
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("is not a directory"), std::string::npos) << missing.err;
+  fs::remove_all(dir);
+}
+
+// Frames are paired by time, not by number: a run writing every 0.01 s and one writing every 0.0125 s of the same
+// scene (the same steps) meet at t = 0, 0.05 and 0.1 s, where they are equal; the other times are named as having
+// no partner. By number, frame 1 (t = 0.01 s) met frame 1 (t = 0.0125 s) and the velocities "differed".
+TEST(Diff, PairsFramesByTimeAndNamesTheTimesWithoutAPartner) {
+  const auto dir = scratch("diff_by_time");
+  std::ofstream(dir / "every_10ms.yaml") << disks;
+  std::string coarser = disks;
+  coarser.replace(coarser.find("interval: 0.01\n"), 15, "interval: 0.0125\n");
+  std::ofstream(dir / "every_12.5ms.yaml") << coarser;
+  ASSERT_EQ(mpm("run " + (dir / "every_10ms.yaml").string() + " -o " + (dir / "a").string(), dir).status, 0);
+  ASSERT_EQ(mpm("run " + (dir / "every_12.5ms.yaml").string() + " -o " + (dir / "b").string(), dir).status, 0);
+  const auto r = mpm("diff " + (dir / "a").string() + " " + (dir / "b").string(), dir);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;  // the runs hold other times: not equal
+  // 11 frames against 9, 3 of them at common times
+  EXPECT_NE(r.out.find("(8 times of A and 6 of B without a partner: below)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("particles.pvd: in A only, t = "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("particles.pvd: in B only, t = "), std::string::npos) << r.out;
+  // every field of the common frames, and of energy.csv's common rows, is equal: its row ends in "-"
+  std::istringstream lines(r.out);
+  int rows = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (!(line.starts_with("particles.pvd ") || line.starts_with("energy.csv ")) || line.find("(times)") != line.npos)
+      continue;
+    ++rows;
+    EXPECT_TRUE(line.ends_with(" -")) << line;
+  }
+  EXPECT_GE(rows, 6) << r.out;  // (time), (coordinates), velocity, stress, ... and energy.csv's columns
+  EXPECT_NE(r.out.find("velocity"), std::string::npos) << r.out;
+  // the first time of A without a partner: its frame after t = 0.01 s (the first step past it)
+  EXPECT_NE(r.out.find("in A only, t = 0.01"), std::string::npos) << r.out;
   fs::remove_all(dir);
 }
 
