@@ -223,7 +223,10 @@ TEST(ImplicitScheme, CollidingCylindersDissipateEnergyAndKeepMomenta) {
 }
 
 // The same cylinders with MUSL and the same law (U(J)) at the same dt, for the record: its energy is not bounded
-// by the scheme (it rises) and its angular momentum drifts. Only what it does is asserted loosely.
+// by the scheme (it rises) and its angular momentum drifts. Asserted: what the scheme guarantees, linear momentum
+// (the lumped transfers move every particle's momentum to the nodes and back), and bounds, not the values seen, on
+// what it loses (measured: angular momentum 1.35% of L0, the energy identity 1.2% of H0): a transfer that loses
+// less (APIC keeps angular momentum) passes; the earlier "drift > 1e-6 L0" would have failed it.
 TEST(ImplicitScheme, CollidingCylindersWithMuslForComparison) {
   const CylinderRun r = run_cylinders("musl", "", false);
   std::printf(
@@ -231,7 +234,10 @@ TEST(ImplicitScheme, CollidingCylindersWithMuslForComparison) {
       "plastic work %.2f%% of H0; momentum %.2e of %.4f, angular %.2e of %.4f\n",
       r.max_rise / r.H0, r.identity / r.H0, 100 * r.plastic / r.H0, r.p_drift, r.p0, r.L_drift, r.L0);
   EXPECT_EQ(r.steps, 120);
-  EXPECT_GT(r.L_drift, 1e-6 * std::abs(r.L0));  // MUSL's lumped transfers lose angular momentum
+  EXPECT_LT(r.p_drift, 1e-10 * r.p0);           // measured 9e-15 of p0
+  EXPECT_LT(r.L_drift, 0.02 * std::abs(r.L0));  // measured 0.0135
+  EXPECT_LT(r.identity, 0.02 * r.H0);           // measured 0.0118
+  EXPECT_GT(r.plastic, 0.3 * r.H0);             // the cylinders yield where they meet (measured 38.9% of H0)
 }
 
 // The catalogue's implicit case (tests/verification/implicit_cases.cpp): the hencky_j2 bar of review §6.1.1 at
