@@ -227,6 +227,9 @@ TEST(Diff, PairsFramesByTimeAndNamesTheTimesWithoutAPartner) {
   EXPECT_NE(r.out.find("velocity"), std::string::npos) << r.out;
   // the first time of A without a partner: its frame after t = 0.01 s (the first step past it)
   EXPECT_NE(r.out.find("in A only, t = 0.01"), std::string::npos) << r.out;
+  const auto negative = mpm("diff " + (dir / "a").string() + " " + (dir / "b").string() + " --time-tolerance -1", dir);
+  EXPECT_EQ(negative.status, 2);
+  EXPECT_NE(negative.err.find("--time-tolerance: must be >= 0, got -1"), std::string::npos) << negative.err;
   fs::remove_all(dir);
 }
 
