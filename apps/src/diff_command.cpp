@@ -298,7 +298,7 @@ void compare_csv(Comparison& c, const fs::path& a_dir, const fs::path& b_dir, co
   const auto& header = a[0];
   // Rows paired by time when the first column is the time (energy.csv, the histories), else by index.
   std::vector<std::pair<std::size_t, std::size_t>> rows;
-  if (header[0] == "time" || header[0].starts_with("time [")) {
+  if (!header.empty() && (header[0] == "time" || header[0].starts_with("time ["))) {
     std::vector<double> ta, tb;
     for (std::size_t r = 1; r < a.size(); ++r) ta.push_back(a[r].empty() ? 0.0 : std::strtod(a[r][0].c_str(), nullptr));
     for (std::size_t r = 1; r < b.size(); ++r) tb.push_back(b[r].empty() ? 0.0 : std::strtod(b[r][0].c_str(), nullptr));
