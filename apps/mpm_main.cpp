@@ -233,8 +233,8 @@ int main(int argc, char** argv) {
   diff_cmd->add_option("--absolute", diff.absolute, "absolute tolerance (0)")->check(non_negative_number);
   diff_cmd
       ->add_option("--time-tolerance", diff.time_tolerance,
-                   "frames (and CSV rows) are paired when their times differ by at most T x the smallest spacing of "
-                   "the output times; the times without a partner are listed (1e-6)")
+                   "frames (and CSV rows) are paired when their times differ by at most T x the finer output "
+                   "interval of the two runs; the times without a partner are listed (1e-6)")
       ->check(non_negative_number);
   VerifyOptions verify;  // `mpm verify`: solution verification at several resolutions
   std::string verify_output;

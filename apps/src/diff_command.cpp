@@ -110,8 +110,9 @@ class Comparison {
 
 /// Frames (or rows) of A and B paired by time: two runs with other output intervals write other times, and only
 /// the same times are compared (by index, frame 10 of a run every 2.5 us, t = 25 us, met frame 10 of a run every
-/// 2.25 us, t = 22.5 us). Times are the same when they differ by at most `tolerance` times the smallest spacing of
-/// consecutive times in either run (the finer output interval); each time pairs at most once, in order.
+/// 2.25 us, t = 22.5 us). Times are the same when they differ by at most `tolerance` times the finer of the two
+/// runs' spacings (the median gap between consecutive times: the output interval); each time pairs at most once,
+/// in order.
 struct TimePairs {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  ///< (index in A, index in B), by increasing time
   std::vector<double> only_a, only_b;                      ///< times without a partner, increasing
@@ -126,13 +127,18 @@ TimePairs pair_by_time(const std::vector<double>& ta, const std::vector<double>&
     return k;
   };
   const auto ka = order(ta), kb = order(tb);
+  // A run's spacing is the median gap between its consecutive times (its output interval; the last frame, written
+  // where the run ends, may fall just after another).
   double spacing = std::numeric_limits<double>::infinity(), largest = 0;
   auto scan = [&](const std::vector<double>& t, const std::vector<std::size_t>& k) {
+    std::vector<double> gaps;
     for (std::size_t i = 0; i < k.size(); ++i) {
       largest = std::max(largest, std::abs(t[k[i]]));
-      const double gap = i > 0 ? t[k[i]] - t[k[i - 1]] : 0.0;
-      if (gap > 0) spacing = std::min(spacing, gap);
+      if (i > 0 && t[k[i]] > t[k[i - 1]]) gaps.push_back(t[k[i]] - t[k[i - 1]]);
     }
+    if (gaps.empty()) return;
+    std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+    spacing = std::min(spacing, gaps[gaps.size() / 2]);
   };
   scan(ta, ka);
   scan(tb, kb);
@@ -144,7 +150,7 @@ TimePairs pair_by_time(const std::vector<double>& ta, const std::vector<double>&
   while (i < ka.size() || j < kb.size()) {
     const double a = i < ka.size() ? ta[ka[i]] : std::numeric_limits<double>::infinity();
     const double b = j < kb.size() ? tb[kb[j]] : std::numeric_limits<double>::infinity();
-    if (std::abs(a - b) <= within) {
+    if (i < ka.size() && j < kb.size() && std::abs(a - b) <= within) {
       p.pairs.emplace_back(ka[i++], kb[j++]);
     } else if (a < b) {
       p.only_a.push_back(a);

@@ -7,8 +7,8 @@
 /// that differs. A value differs when |a - b| > max(ABS, REL * the largest |a| of that field in that frame); by
 /// default (0, 0) only identical values are equal. Frames, and the rows of a CSV whose first column is the time,
 /// are paired by time, not by number: two times are the same when they differ by at most T (default 1e-6) times
-/// the smallest spacing of consecutive times in either run; the times one run has and the other has not are
-/// listed, and make the runs different.
+/// the finer output interval of the two (the median gap between a run's consecutive times); the times one run has
+/// and the other has not are listed, and make the runs different.
 
 #include <filesystem>
 #include <iosfwd>
@@ -19,7 +19,7 @@ struct DiffOptions {
   std::filesystem::path a, b;
   double relative = 0;           ///< --tolerance
   double absolute = 0;           ///< --absolute
-  double time_tolerance = 1e-6;  ///< --time-tolerance: of the smallest spacing of the output times
+  double time_tolerance = 1e-6;  ///< --time-tolerance: of the finer output interval
 };
 
 /// Exit status: 0 equal within the tolerance, 1 different (times without a partner included), 2 bad input (a directory
