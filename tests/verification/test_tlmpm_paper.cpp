@@ -181,7 +181,7 @@ TEST(TlmpmPaperStepLoad, PaperLoadQuadratic) {
   EXPECT_LT(l.rms[2], 0.016);  // the paper's 32 elements: measured 1.41 %
   // The floor of the nonlinearity (measured 1.19 % at 64 elements) shows as a falling local rate, whatever the
   // discretisation's share: an error C h^p + F with a floor F > 0 converges ever slower (measured: 0.66 from 8 to
-  // 16 elements, 0.25 from 32 to 64). A better discretisation lowers C and keeps that order; pinning the floor's
+  // 16 elements, 0.24 from 32 to 64). A better discretisation lowers C and keeps that order; pinning the floor's
   // value would fail it.
   const auto local_rate = [&](std::size_t i) { return std::log(l.rms[i] / l.rms[i + 1]) / std::log(2.0); };
   EXPECT_GT(local_rate(0), 0.55);  // measured 0.66 from 8 to 16
