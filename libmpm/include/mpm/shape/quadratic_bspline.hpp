@@ -49,6 +49,9 @@ struct QuadraticBSpline {
   static constexpr int slab_reach_below = 1, slab_reach_above = 2;
   static constexpr int min_cells = 2;
   static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)
+  /// sum phi_I ((x_I - x_p)/h)^2 of a particle whose nodes are all of the uniform type (the B-spline's variance);
+  /// smaller in the cells next to a face (APIC's filter of light nodes, transfer_kernels.hpp).
+  static constexpr Real interior_second_moment = Real(0.25);
 
   /// Type 3, the uniform quadratic B-spline B(r).
   static inline void interior(Real r, Real& w, Real& dw) {
