@@ -160,8 +160,8 @@ inline Vec<Dim> light_node_velocity(Real m, Real light, const Vec<Dim>& v_p, con
 /// D_p is the interior one, and are left unchanged there. The boundary-modified B-splines are hats in the cells next
 /// to a face (quadratic: the half cell; there D_dd falls below the interior moment h^2/4, cubic h^2/3), so the columns
 /// of C_p along such axes take the hats' filter: without it, APIC with quadratic or cubic B-splines gained energy in a
-/// closed tank once the splash ran up the walls (Tait water: det F = -5.3 at 0.56 s; incompressible: +43% of E0 at
-/// 0.63 s, 20 cells across the column) and with it both lose energy at every output. Filtering every column of such a
+/// closed tank once the splash ran up the walls (Tait water inverted a particle, the incompressible fluid's energy rose
+/// to 20 E0) and with it both lose energy at every output. Filtering every column of such a
 /// particle let stacked blocks in contact sink 0.14 mm (quadratic) and 0.37 mm (cubic) at the side walls, 1.4-3.7% of
 /// a cell (docs/theory.md §2).
 template <int Dim, class Shape, class NodeVelocityOf>
