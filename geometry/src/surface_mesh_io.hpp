@@ -19,9 +19,15 @@ using Point3 = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 
 /// The closed, manifold, self-intersection-free, outward-oriented triangle mesh of `shape.file`, with
-/// the shape's scale, rotation and translation applied. Throws GeometryError naming the file and the
-/// problem; an inside-out or inconsistently oriented mesh is repaired and a warning appended.
+/// the shape's scale, rotation and translation applied (after the checks, so that messages give the file's
+/// coordinates), of the shape's `object` or `shell` alone when it names one, its vertices welded when it says.
+/// Throws GeometryError naming the file and the problem (and the key for `object` and `shell`); an inside-out or
+/// inconsistently oriented mesh is repaired and a warning appended, as is one for several shells or objects merged.
 SurfaceMesh load_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings);
+
+/// load_surface_mesh's mesh, read once per process for each content of the file and each shape
+/// (surface_mesh_cache.cpp); its warnings are appended at every call (print each once).
+std::shared_ptr<const SurfaceMesh> shared_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings);
 
 /// The closed, manifold, self-intersection-free, outward-oriented triangle mesh of a polygon soup (points in m):
 /// duplicated points merged, degenerate faces dropped, orientation repaired (with a warning). Throws GeometryError
