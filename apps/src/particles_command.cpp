@@ -139,7 +139,9 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
     elements.volumes = seeds.volumes;  // a kind's own particles' (a Gmsh mesh's elements), else the lattice's
     if (elements.volumes.empty()) elements.volumes.assign(seeds.positions.size(), seeds.volume);
   }
-  for (const auto& w : warnings) err << "warning: " << w << '\n';
+  // The region, the fill and the domains each ask for the mesh, and each gets its repairs: print each once.
+  for (auto w = warnings.begin(); w != warnings.end(); ++w)
+    if (std::find(warnings.begin(), w, *w) == w) err << "warning: " << *w << '\n';
 
   io::PointCloud cloud;
   io::FieldArray volume{"volume", 1, elements.volumes}, body{"body", 1, {}}, id{"id", 1, {}};
