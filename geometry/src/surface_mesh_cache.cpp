@@ -1,8 +1,9 @@
 // The surface meshes a process has read, kept: a scene's mesh is asked for by the memory estimate, the lattice fill,
 // the conforming domains and the fidelity certificate, and `mpm particles` asks for its region before filling it;
 // each used to read and check the file again (a 1M-triangle STL takes seconds), and each repeated the warnings of its
-// repairs. An entry is keyed by the file's content (its bytes hashed), not its name or time, so a file rewritten in
-// place is read again, and by every key of the shape that changes the mesh.
+// repairs. The inside test is kept with the mesh, so that its AABB tree too is built once. An entry is keyed by the
+// file's content (its bytes hashed), not its name or time, so a file rewritten in place is read again, and by every key
+// of the shape that changes the mesh.
 #include <fmt/format.h>
 
 #include <cstdint>
@@ -39,28 +40,35 @@ std::string mesh_cache_key(const MeshShape& shape) {
 }
 
 struct CachedSurfaceMesh {
-  std::shared_ptr<const SurfaceMesh> mesh;
+  ClosedSurface surface;
   std::vector<std::string> warnings;  ///< of its repairs: given to every caller, who prints each once
 };
 
 }  // namespace
 
-std::shared_ptr<const SurfaceMesh> shared_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings) {
+ClosedSurface ClosedSurface::of(SurfaceMesh mesh) {
+  ClosedSurface surface;
+  surface.mesh = std::make_shared<const SurfaceMesh>(std::move(mesh));
+  surface.inside = std::make_shared<const InsideTest>(*surface.mesh);
+  return surface;
+}
+
+ClosedSurface shared_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings) {
   static std::mutex mutex;
   static std::map<std::string, CachedSurfaceMesh> meshes;
   std::error_code error;
   if (!std::filesystem::is_regular_file(shape.file, error))  // not found, a folder: the reader's messages
-    return std::make_shared<const SurfaceMesh>(load_surface_mesh(shape, warnings));
+    return ClosedSurface::of(load_surface_mesh(shape, warnings));
   const std::string key = mesh_cache_key(shape);
   const std::scoped_lock lock(mutex);
   auto found = meshes.find(key);
   if (found == meshes.end()) {  // a bad mesh throws here and is not kept
     CachedSurfaceMesh entry;
-    entry.mesh = std::make_shared<const SurfaceMesh>(load_surface_mesh(shape, &entry.warnings));
+    entry.surface = ClosedSurface::of(load_surface_mesh(shape, &entry.warnings));
     found = meshes.emplace(key, std::move(entry)).first;
   }
   if (warnings) warnings->insert(warnings->end(), found->second.warnings.begin(), found->second.warnings.end());
-  return found->second.mesh;
+  return found->second.surface;
 }
 
 }  // namespace mpm::geometry::detail
