@@ -5,13 +5,17 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 
+#include "mpm/app/modules.hpp"
+#include "mpm/app/scene_builder.hpp"
 #include "mpm/geometry/geometry_error.hpp"
 #include "mpm/geometry/mesh_region.hpp"
+#include "mpm/scene/scene_loader.hpp"
 #include "test_meshes.hpp"
 
 namespace fs = std::filesystem;
@@ -78,6 +82,29 @@ void import_write_objects(const fs::path& file, const std::vector<std::pair<std:
 
 double import_volume(const MeshShape& shape, std::vector<std::string>* warnings = nullptr) {
   return *mpm::geometry::make_mesh_region(shape, warnings)->exact_volume();
+}
+
+/// An ASCII STL of the unit cube whose corners are written with different copies: copy k of a corner shared by m
+/// triangles is moved by 1e-7 (cos 2 pi k / m, sin 2 pi k / m, 0), so the copies' mean is the corner itself.
+void import_write_gaps_stl(const fs::path& file) {
+  const TriMesh cube = mpm::test::cube_mesh();
+  std::map<int, int> copies, written;
+  for (const auto& t : cube.triangles)
+    for (const int v : t) ++copies[v];
+  std::ofstream out(file);
+  out.precision(17);
+  out << "solid gaps\n";
+  for (const auto& t : cube.triangles) {
+    const auto n = mpm::test::normal(cube, t);
+    out << "facet normal " << n[0] << ' ' << n[1] << ' ' << n[2] << "\nouter loop\n";
+    for (const int v : t) {
+      const double angle = 2 * M_PI * written[v]++ / copies[v];
+      const auto& p = cube.points[v];
+      out << "vertex " << p[0] + 1e-7 * std::cos(angle) << ' ' << p[1] + 1e-7 * std::sin(angle) << ' ' << p[2] << '\n';
+    }
+    out << "endloop\nendfacet\n";
+  }
+  out << "endsolid gaps\n";
 }
 
 }  // namespace
@@ -204,33 +231,13 @@ TEST(MeshImport, NamedObjectsAreSaidToMergeAndOneCanBeChosen) {
   fs::remove_all(dir);
 }
 
-// An ASCII STL of the unit cube whose corners are written with different copies: copy k of a corner shared by m
-// triangles is moved by 1e-7 (cos 2 pi k / m, sin 2 pi k / m, 0). Without `weld` no two triangles share a corner
+// An ASCII STL of the unit cube whose corners are written with different copies, 1e-7 apart (import_write_gaps_stl).
+// Without `weld` no two triangles share a corner
 // and the mesh is refused as open; with `weld: 1e-6` the copies merge into their mean, which is the corner itself
 // (the displacements sum to zero), so the volume is the clean cube's, 1, to round-off (asked: 1e-9).
 TEST(MeshImport, WeldClosesAMeshWhoseCornersWereWrittenApart) {
   const fs::path dir = import_scratch();
-  const TriMesh cube = mpm::test::cube_mesh();
-  std::map<int, int> copies, written;
-  for (const auto& t : cube.triangles)
-    for (const int v : t) ++copies[v];
-  {
-    std::ofstream out(dir / "gaps.stl");
-    out.precision(17);
-    out << "solid gaps\n";
-    for (const auto& t : cube.triangles) {
-      const auto n = mpm::test::normal(cube, t);
-      out << "facet normal " << n[0] << ' ' << n[1] << ' ' << n[2] << "\nouter loop\n";
-      for (const int v : t) {
-        const double angle = 2 * M_PI * written[v]++ / copies[v];
-        const auto& p = cube.points[v];
-        out << "vertex " << p[0] + 1e-7 * std::cos(angle) << ' ' << p[1] + 1e-7 * std::sin(angle) << ' ' << p[2]
-            << '\n';
-      }
-      out << "endloop\nendfacet\n";
-    }
-    out << "endsolid gaps\n";
-  }
+  import_write_gaps_stl(dir / "gaps.stl");
   MeshShape shape = import_shape(dir / "gaps.stl");
   const auto [message, key] = import_error(shape);
   EXPECT_NE(message.find("gaps.stl: the mesh is open: 36 edges bound a single face"), std::string::npos) << message;
@@ -245,5 +252,49 @@ TEST(MeshImport, WeldClosesAMeshWhoseCornersWereWrittenApart) {
   // A tolerance above the cube's edge merges all eight corners: nothing of positive area is left.
   shape.weld = 2;
   EXPECT_NE(import_error(shape).first.find("gaps.stl: the mesh has no face of positive area"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// The keys through a scene: `object: cubeB` and `shell: 0` of tests/data/meshes/two_cubes.obj (unit cubes at x in
+// [2, 3] and [0, 1]) and `weld: 1.0e-6` of the gapped cube STL (moved to x = 3 by `translation`) each make one body
+// of volume 1 (the particles share the mesh's volume) on the lattice of the unit cube: (1 / 0.25 x 2)^3 = 512
+// particles, inside the x range of its cube.
+TEST(MeshImport, ObjectShellAndWeldFromAScene) {
+  const fs::path dir = import_scratch();
+  import_write_gaps_stl(dir / "gaps.stl");
+  mpm::app::register_modules();
+  const std::string obj = (fs::path(MPM_SOURCE_DIR) / "tests" / "data" / "meshes" / "two_cubes.obj").string();
+  const auto scene = mpm::parse_scene(
+      "dimension: 3\n"
+      "grid: {extent: [4, 2, 2], cell_size: 0.25}\n"
+      "materials: {m: {model: linear_elastic, density: 1000, youngs_modulus: 1.0e6, poisson_ratio: 0.3}}\n"
+      "bodies:\n"
+      "  - {name: b, material: m, shape: {mesh: " +
+          obj +
+          ", object: cubeB}}\n"
+          "  - {name: a, material: m, shape: {mesh: " +
+          obj +
+          ", shell: 0}}\n"
+          "  - {name: w, material: m, shape: {mesh: " +
+          (dir / "gaps.stl").string() +
+          ", weld: 1.0e-6, translation: [3, 0, 0]}}\n"
+          "solver: {cfl: 0.5, end_time: 0.001}\n",
+      (dir / "scene.yaml").string());
+  const auto sim = mpm::app::build_simulation<3>(scene);
+  const double lower[3] = {2, 0, 3};
+  ASSERT_EQ(sim->bodies().size(), 3u);
+  for (const auto& body : sim->bodies()) {
+    const auto k = static_cast<std::size_t>(body.index);
+    EXPECT_EQ(body.particles.size(), 512) << body.name;
+    double volume = 0, x_min = 1e9, x_max = -1e9;
+    for (mpm::Index i = 0; i < body.particles.size(); ++i) {
+      volume += body.particles.volume0[i];
+      x_min = std::min(x_min, body.particles.x[i][0]);
+      x_max = std::max(x_max, body.particles.x[i][0]);
+    }
+    EXPECT_NEAR(volume, 1, 1e-9) << body.name;
+    EXPECT_GT(x_min, lower[k]) << body.name;
+    EXPECT_LT(x_max, lower[k] + 1) << body.name;
+  }
   fs::remove_all(dir);
 }
