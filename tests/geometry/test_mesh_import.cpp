@@ -133,7 +133,8 @@ TEST(MeshImport, OpenMeshNamesTheEdgesOfTheHole) {
   fs::remove_all(dir);
 }
 
-// Two cubes touching along an edge (x = y = 1, z in [0, 1]): four faces share it; two cubes sharing the face x = 1:
+// Two cubes touching along an edge (x = y = 1, z in [0, 1]): four faces share it; at a corner: the corner is named;
+// two cubes sharing the face x = 1:
 // after the duplicated face is dropped, each of its four edges has three faces. Both name the edges and suggest two
 // bodies; the OBJ's objects then give each cube alone (volume 1, the unit cube's).
 TEST(MeshImport, NonManifoldMeshNamesTheEdgesAndSuggestsTwoBodies) {
@@ -146,6 +147,14 @@ TEST(MeshImport, NonManifoldMeshNamesTheEdgesAndSuggestsTwoBodies) {
               message.find("(1, 1, 1)-(1, 1, 0)") != std::string::npos)
       << message;
   EXPECT_NE(message.find("make them two bodies"), std::string::npos) << message;
+
+  // Two cubes touching at the corner (1, 1, 1) only: no edge is shared, the corner is.
+  mpm::test::write_off(dir / "corner.off", import_join(import_cube(1, {0, 0, 0}), import_cube(1, {1, 1, 1})));
+  std::tie(message, key) = import_error(import_shape(dir / "corner.off"));
+  EXPECT_NE(message.find("the mesh is not manifold: faces meet at a single vertex at (1, 1, 1) (in the file's "
+                         "coordinates); where two solids touch, make them two bodies"),
+            std::string::npos)
+      << message;
 
   const TriMesh a = import_cube(1, {0, 0, 0}), b = import_cube(1, {1, 0, 0});
   mpm::test::write_off(dir / "face.off", import_join(a, b));
