@@ -54,6 +54,24 @@ void push_point(std::vector<double>& out, const Vec<Dim>& x) {
   for (int d = 0; d < 3; ++d) out.push_back(d < Dim ? x[d] : 0.0);
 }
 
+/// A file without a length unit (a surface or Gmsh mesh) drawn in millimetres and read as metres is 1000 times too
+/// large and its fill 1e9 (3D) times too big: when the fill would fit with the coordinates taken as millimetres, the
+/// refusal says so (a user saw "15.8 PB of memory" and no reason).
+template <int Dim>
+std::string millimetre_hint(const ParticlesOptions& o, const geometry::Region<Dim>& region, double bytes,
+                            const MemoryBudget& budget) {
+  const std::string ext = lower_extension(o.input);
+  const bool unitless = ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".msh";
+  if (!unitless || o.scale != 1 || !(bytes * std::pow(1e-3, Dim) <= budget.bytes)) return "";
+  const geometry::Box<Dim> box = region.bounds();
+  std::string size;
+  for (int d = 0; d < Dim; ++d) size += fmt::format("{}{:.4g}", d ? " x " : "", box.hi[d] - box.lo[d]);
+  return fmt::format(
+      ". The input spans {} m: if its coordinates are millimetres, --scale 0.001 (in a scene, the "
+      "shape's `scale: 1.0e-3`) makes it fit",
+      size);
+}
+
 /// Refuses a fill that cannot fit in memory before it is made: the particle count of the region's lattice (on a
 /// sample, geometry/particle_count.hpp) times what this command keeps per particle (position and volume, then the
 /// .vtu's points and three fields, 3 x 8 + 3 x 8 B, and CPDI corners), against the memory available.
@@ -68,10 +86,10 @@ void check_fill_memory(const ParticlesOptions& o, const geometry::Region<Dim>& r
   if (bytes > budget.bytes)
     throw UsageError(
         fmt::format("--ppc {} with cells of {:g} m makes about {:.3g} particles{}, about {} of memory; "
-                    "{} available ({}): use a smaller --ppc or a larger --spacing",
+                    "{} available ({}): use a smaller --ppc or a larger --spacing{}",
                     o.particles_per_cell, grid.h[0], count.count * elements,
                     count.exact ? "" : " (estimated on a sample of the input)", format_bytes(bytes),
-                    format_bytes(budget.bytes), budget.source));
+                    format_bytes(budget.bytes), budget.source, millimetre_hint<Dim>(o, region, bytes, budget)));
 }
 
 /// Particles of an input file on a grid: the scene's or one of `spacing` around the input.
@@ -121,7 +139,9 @@ std::string write_input(const ParticlesOptions& o, const ShapeDescription& shape
     elements.volumes = seeds.volumes;  // a kind's own particles' (a Gmsh mesh's elements), else the lattice's
     if (elements.volumes.empty()) elements.volumes.assign(seeds.positions.size(), seeds.volume);
   }
-  for (const auto& w : warnings) err << "warning: " << w << '\n';
+  // The region, the fill and the domains each ask for the mesh, and each gets its repairs: print each once.
+  for (auto w = warnings.begin(); w != warnings.end(); ++w)
+    if (std::find(warnings.begin(), w, *w) == w) err << "warning: " << *w << '\n';
 
   io::PointCloud cloud;
   io::FieldArray volume{"volume", 1, elements.volumes}, body{"body", 1, {}}, id{"id", 1, {}};

@@ -240,7 +240,9 @@ Body<Dim> build_body(const SceneDescription& scene, int index, const GridGeometr
   mark_particle_sets(scene, body);  // which particles belong to which set, from their state at t = 0
   track_corners = add_domain_fields<Dim>(body, scene, bd, geometry, shape, elements) || track_corners;
   add_run_fields<Dim>(body, scene, geometry);
-  for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
+  // The fill and the conforming domains each ask for the mesh, and each gets its repairs: print each once.
+  for (auto w = warnings.begin(); w != warnings.end(); ++w)
+    if (std::find(warnings.begin(), w, *w) == w) std::cerr << "warning: " << *w << '\n';
   return body;
 }
 

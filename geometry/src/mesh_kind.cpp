@@ -4,6 +4,9 @@
 // meshes it.
 #include <fmt/format.h>
 
+#include <cctype>
+#include <filesystem>
+
 #include "mpm/geometry/mesh_region.hpp"
 #include "mpm/scene/yaml_reader.hpp"
 #include "shape_kinds.hpp"
@@ -39,6 +42,25 @@ const std::vector<io::KeySpec>& keys() {
        .absent = "none",
        .description = "added last",
        .type_text = "list of 3 numbers"},
+      {.name = "weld",
+       .type = KeyType::number,
+       .unit = "-",
+       .range = io::Range::above(0),
+       .absent = "off (only exactly repeated vertices are merged)",
+       .description = "vertices closer than this (in the file's coordinates, before `scale`) are merged into their "
+                      "mean before the checks, so that a surface whose triangles carry slightly different copies of "
+                      "their shared corners is closed; keep it well below the smallest edge of the mesh"},
+      {.name = "object",
+       .type = KeyType::name,
+       .absent = "all objects, one body",
+       .description = "`.obj` only: the faces of the named object (`o NAME` line) alone; an unknown name is refused "
+                      "with the file's names"},
+      {.name = "shell",
+       .type = KeyType::integer,
+       .range = io::Range::at_least(0),
+       .absent = "all shells, one body",
+       .description = "the connected surface with this index alone, 0-based in the order of its first face in the "
+                      "file (after `object`): one part of a file that holds several"},
       {.name = "section",
        .type = KeyType::number,
        .unit = "m",
@@ -51,7 +73,7 @@ const std::vector<io::KeySpec>& keys() {
 std::any parse(const io::YamlReader& reader, const io::YamlMap& map, const ShapeContext& context) {
   const io::YamlValue file = *map.find("mesh");
   if (context.dimension == 1) reader.fail(file, "mesh bodies are available in 2D (a section of the mesh) and 3D");
-  std::vector<std::string> allowed{"mesh", "scale", "rotation", "translation"};
+  std::vector<std::string> allowed{"mesh", "scale", "rotation", "translation", "weld", "object", "shell"};
   if (context.dimension == 2) allowed.push_back("section");
   map.allow(allowed);
   MeshShape mesh;
@@ -62,6 +84,17 @@ std::any parse(const io::YamlReader& reader, const io::YamlMap& map, const Shape
     mesh.rotation = reader.vector(*rotation, 3, io::Range::any(), "degrees");
   if (const auto translation = map.find("translation"))
     mesh.translation = reader.vector(*translation, 3, io::Range::any(), "m");
+  if (const auto weld = map.find("weld")) mesh.weld = reader.number(*weld, io::Range::above(0), "");
+  if (const auto object = map.find("object")) {
+    mesh.object = reader.name(*object);
+    std::string extension = std::filesystem::path(mesh.file).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".obj")
+      reader.fail(*object,
+                  "object: only an .obj file names objects (`o NAME`); choose a separate surface of another "
+                  "format with shell: INDEX");
+  }
+  if (const auto shell = map.find("shell")) mesh.shell = static_cast<std::size_t>(reader.integer(*shell, 0));
   if (context.dimension == 2)
     mesh.section = reader.number(
         map.required("section", "key", " (a 2D body is the section of the mesh by the plane z = section, m)"));

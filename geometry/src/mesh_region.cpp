@@ -24,13 +24,11 @@ using detail::SurfaceMesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 /// Inside a closed triangle mesh: CGAL's ray-shooting Side_of_triangle_mesh on an AABB tree (built on the
-/// first query).
+/// first query). Mesh and test are shared with the process's cache of read meshes (surface_mesh_cache.cpp).
 class MeshRegion : public Region<3>, public detail::KnownProperties {
  public:
-  explicit MeshRegion(SurfaceMesh mesh)
-      : mesh_(std::make_unique<SurfaceMesh>(std::move(mesh))),
-        side_(std::make_unique<CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>>(*mesh_)),
-        volume_(PMP::volume(*mesh_)) {
+  explicit MeshRegion(detail::ClosedSurface surface)
+      : mesh_(std::move(surface.mesh)), side_(std::move(surface.inside)), volume_(PMP::volume(*mesh_)) {
     const CGAL::Bbox_3 b = PMP::bbox(*mesh_);
     bounds_.lo = Vec<3>(b.xmin(), b.ymin(), b.zmin());
     bounds_.hi = Vec<3>(b.xmax(), b.ymax(), b.zmax());
@@ -62,8 +60,8 @@ class MeshRegion : public Region<3>, public detail::KnownProperties {
   std::string properties_source() const override { return "surface mesh (exact integrals)"; }
 
  private:
-  std::unique_ptr<SurfaceMesh> mesh_;  // on the heap: side_ keeps its address
-  std::unique_ptr<CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>> side_;
+  std::shared_ptr<const SurfaceMesh> mesh_;  // before side_, which refers to it
+  std::shared_ptr<const detail::InsideTest> side_;
   Box<3> bounds_;
   Real volume_;
 };
@@ -71,7 +69,7 @@ class MeshRegion : public Region<3>, public detail::KnownProperties {
 }  // namespace
 
 std::unique_ptr<Region<3>> detail::surface_region(SurfaceMesh mesh) {
-  return std::make_unique<MeshRegion>(std::move(mesh));
+  return std::make_unique<MeshRegion>(detail::ClosedSurface::of(std::move(mesh)));
 }
 
 std::optional<SourceProperties> exact_properties(const Region<3>& region) {
@@ -87,7 +85,7 @@ const SurfaceMesh* detail::surface_of(const Region<3>& region) {
 
 std::unique_ptr<Region<3>> make_mesh_region(const MeshShape& shape, std::vector<std::string>* warnings,
                                             MeshSummary* summary) {
-  auto region = std::make_unique<MeshRegion>(detail::load_surface_mesh(shape, warnings));
+  auto region = std::make_unique<MeshRegion>(detail::shared_surface_mesh(shape, warnings));
   if (summary) {
     summary->vertices = region->mesh().number_of_vertices();
     summary->triangles = region->mesh().number_of_faces();
@@ -97,7 +95,8 @@ std::unique_ptr<Region<3>> make_mesh_region(const MeshShape& shape, std::vector<
 }
 
 std::unique_ptr<Region<2>> make_mesh_section(const MeshShape& shape, std::vector<std::string>* warnings) {
-  const SurfaceMesh mesh = detail::load_surface_mesh(shape, warnings);
+  const detail::ClosedSurface shared = detail::shared_surface_mesh(shape, warnings);
+  const SurfaceMesh& mesh = *shared.mesh;
   const double z = shape.section.value_or(0.0);
   const CGAL::Bbox_3 b = PMP::bbox(mesh);
   CGAL::Polygon_mesh_slicer<SurfaceMesh, Kernel> slicer(mesh);

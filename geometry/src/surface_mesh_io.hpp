@@ -2,6 +2,7 @@
 // Internal to geometry/src (includes CGAL): reading, checking and transforming a CAD surface mesh into a
 // CGAL Surface_mesh. Used by mesh_region.cpp (inside test, sections) and conforming_domains_3d.cpp (Mesh_3).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <memory>
@@ -19,9 +20,27 @@ using Point3 = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 
 /// The closed, manifold, self-intersection-free, outward-oriented triangle mesh of `shape.file`, with
-/// the shape's scale, rotation and translation applied. Throws GeometryError naming the file and the
-/// problem; an inside-out or inconsistently oriented mesh is repaired and a warning appended.
+/// the shape's scale, rotation and translation applied (after the checks, so that messages give the file's
+/// coordinates), of the shape's `object` or `shell` alone when it names one, its vertices welded when it says.
+/// Throws GeometryError naming the file and the problem (and the key for `object` and `shell`); an inside-out or
+/// inconsistently oriented mesh is repaired and a warning appended, as is one for several shells or objects merged.
 SurfaceMesh load_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings);
+
+/// CGAL's ray-shooting inside test of a closed triangle mesh, on an AABB tree built on its first query (thread-safe)
+/// and kept.
+using InsideTest = CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>;
+
+/// A closed mesh with its inside test, shared by the regions made of one mesh (so its tree is built once).
+struct ClosedSurface {
+  std::shared_ptr<const SurfaceMesh> mesh;
+  std::shared_ptr<const InsideTest> inside;  ///< of *mesh
+  /// A surface of its own (not shared): a CAD solid's tessellation.
+  static ClosedSurface of(SurfaceMesh mesh);
+};
+
+/// load_surface_mesh's mesh, read once per process for each content of the file and each shape
+/// (surface_mesh_cache.cpp); its warnings are appended at every call (print each once).
+ClosedSurface shared_surface_mesh(const MeshShape& shape, std::vector<std::string>* warnings);
 
 /// The closed, manifold, self-intersection-free, outward-oriented triangle mesh of a polygon soup (points in m):
 /// duplicated points merged, degenerate faces dropped, orientation repaired (with a warning). Throws GeometryError

@@ -135,6 +135,26 @@ std::unique_ptr<Region<Dim>> make_shape_region(const ShapeDescription& shape, st
   return maker(shape.spec, warnings);
 }
 
+namespace {
+
+/// A file of a kind with a `scale` (a mesh: its coordinates carry no unit) drawn in millimetres in a metre scene is
+/// 1000 times too large: when the shape is more than 20 times the grid's size, the refusal says so (a part of a
+/// fiftieth of the grid drawn in millimetres is 20 times it; a shape in metres that large is a mistake of another
+/// kind, and the hint asks rather than asserts).
+template <int Dim>
+std::string millimetre_hint(const ShapeKind& kind, const Box<Dim>& box, const GridGeometry<Dim>& grid) {
+  if (!io::find_key(kind.keys, "scale")) return "";
+  Real ratio = 0;
+  for (int d = 0; d < Dim; ++d) ratio = std::max(ratio, (box.hi[d] - box.lo[d]) / (grid.upper()[d] - grid.origin[d]));
+  if (!(ratio > 20)) return "";
+  return fmt::format(
+      "; the shape is {:.3g} times the grid's size: if the file's coordinates are millimetres, give "
+      "the shape `scale: 1.0e-3`",
+      ratio);
+}
+
+}  // namespace
+
 template <int Dim>
 ParticleSeeds<Dim> fill_shape(const ShapeDescription& shape, const GridGeometry<Dim>& grid,
                               const std::array<int, 3>& particles_per_cell, std::vector<std::string>* warnings,
@@ -155,8 +175,9 @@ ParticleSeeds<Dim> fill_shape(const ShapeDescription& shape, const GridGeometry<
     if ((box.lo[d] < grid.origin[d] - tolerance && !clipped_at_axis) || box.hi[d] > upper[d] + tolerance)
       throw ShapeError(shape_file(shape),
                        fmt::format("lies outside the grid: on axis {} it spans [{:.6g}, {:.6g}] m, the grid "
-                                   "[{:.6g}, {:.6g}] m",
-                                   axis_names[d], box.lo[d], box.hi[d], grid.origin[d], upper[d]));
+                                   "[{:.6g}, {:.6g}] m{}",
+                                   axis_names[d], box.lo[d], box.hi[d], grid.origin[d], upper[d],
+                                   millimetre_hint<Dim>(kind, box, grid)));
   }
   if (own_fill)  // after the region's checks (an image whose pixels become particles)
     if (auto own = own_fill(shape.spec, grid)) return std::move(*own);

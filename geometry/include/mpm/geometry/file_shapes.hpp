@@ -18,6 +18,9 @@ struct MeshShape {
   std::array<double, 3> rotation{0, 0, 0};     ///< rotation angles about x, then y, then z, degrees
   std::array<double, 3> translation{0, 0, 0};  ///< added last, m
   std::optional<double> section;               ///< 2D: the plane z = section, m
+  std::optional<double> weld;         ///< vertices closer than this are merged first, in the file's coordinates
+  std::optional<std::string> object;  ///< an OBJ's object (`o NAME`) alone
+  std::optional<std::size_t> shell;   ///< the connected shell with this index (0-based, in file order) alone
 };
 
 /// `cad: FILE` (.step, .stp, .iges, .igs, .brep; 3D): solids of a B-rep file read with OpenCASCADE (MPM_WITH_OCCT),
