@@ -21,9 +21,6 @@ struct CubicBSpline {
   static constexpr int slab_reach_below = 2, slab_reach_above = 3;
   static constexpr int min_cells = 4;
   static constexpr bool axisymmetric = true;  ///< usable as it is on an axisymmetric grid (review Remark 42)
-  /// sum phi_I ((x_I - x_p)/h)^2 of a particle whose nodes are all of the uniform type (the B-spline's variance);
-  /// smaller in the cells next to a face (APIC's filter of light nodes, transfer_kernels.hpp).
-  static constexpr Real interior_second_moment = Real(1) / 3;
 
   /// Type 1, eq. 3.18 (symmetric in r).
   static inline void boundary(Real r, Real& w, Real& dw) {
