@@ -7,10 +7,12 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 
 #include "mpm/checkpoint/checkpoint_file.hpp"
 #include "mpm/checkpoint/checksum.hpp"
 #include "mpm/core/due_time.hpp"
+#include "mpm/io/atomic_file.hpp"
 #include "mpm/scene/scene_error.hpp"
 
 namespace mpm::app {
@@ -162,15 +164,30 @@ RestartPoint find_restart_point(const fs::path& file_or_directory, const SceneDe
       point.changes.push_back(std::move(d));
       continue;
     }
-    refused +=
-        fmt::format("\n  {}:{}: {}: {} in the checkpoint, {} now", d.where.file, d.where.line, d.key, d.was, d.now);
+    refused += fmt::format("\n  {}:{}: {}: {} in the checkpoint, {} now: {}", d.where.file, d.where.line, d.key, d.was,
+                           d.now, d.refusal);
   }
   if (!refused.empty())
     throw RestartError(fmt::format(
-        "{}: the scene differs from the checkpoint's (scene {}) in keys a fork may not change (only end_time, cfl, "
-        "output, prescribed boundary velocities):{}",
+        "{}: the scene differs from the checkpoint's (scene {}) in keys a fork may not change (a fork may change "
+        "what keeps the state's meaning: output, end time and time step, boundary conditions, material parameters, "
+        "loads, gravity; docs/scene-reference.md, \"Restart and fork\"):{}",
         where, point.archive.text("run/scene_file"), refused));
   return point;
+}
+
+void write_fork_changes(const fs::path& directory, const RestartPoint& point) {
+  if (point.changes.empty()) return;
+  std::string text = fmt::format("# a fork of {} (step {}, t = {:.9g} s, scene {}): the keys it changed\n",
+                                 point.file.string(), point.archive.integer("simulation/step"),
+                                 point.archive.number("simulation/time"), point.archive.text("run/scene_file"));
+  for (const auto& d : point.changes)
+    text += fmt::format("{}: {} in the checkpoint, {} now  # {}:{}\n", d.key, d.was, d.now, d.where.file, d.where.line);
+  io::write_atomically(directory / fork_changes_file, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw std::runtime_error("cannot write " + (directory / fork_changes_file).string());
+  });
 }
 
 }  // namespace mpm::app

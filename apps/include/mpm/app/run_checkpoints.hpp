@@ -90,4 +90,12 @@ struct RestartPoint {
 RestartPoint find_restart_point(const std::filesystem::path& file_or_directory, const SceneDescription& scene,
                                 const std::string& scene_text, std::ostream& log);
 
+/// The name of the file in a fork's output directory that lists what the fork changed.
+inline constexpr const char* fork_changes_file = "fork_changes.txt";
+/// A fork (`point` with changes): writes `directory`/fork_changes.txt atomically, a line per changed key
+/// ("solver.gravity: [0, 0] in the checkpoint, [0, -9.81] now  # fork.yaml:9") after a line naming the checkpoint,
+/// so that the forked run's files say what it changed; nothing for a plain restart (its files are those of the
+/// uninterrupted run).
+void write_fork_changes(const std::filesystem::path& directory, const RestartPoint& point);
+
 }  // namespace mpm::app
