@@ -29,7 +29,8 @@ std::string description_cell(const io::KeySpec& key) {
   if (key.run_control)
     return key.description + (section ? "; a fork may change it and everything in it" : "; a fork may change it");
   if (key.fork_refusal.empty()) return key.description;
-  if (section && !io::fork_rules(key.keys).empty())  // some keys in it say what a fork may do with them
+  const auto inner = io::fork_rules(key.keys);
+  if (section && std::any_of(inner.begin(), inner.end(), [](const io::ForkRule& r) { return r.allowed; }))
     return key.description + "; a fork may not change it but the keys in it marked so: " + key.fork_refusal;
   return key.description + "; a fork may not change it: " + key.fork_refusal;
 }
