@@ -134,7 +134,13 @@ std::optional<RestartPoint> restart_from(const SceneDescription& scene, const st
                                          std::ostream& log) {
   if (!options.restart) return std::nullopt;
   RestartPoint point = find_restart_point(*options.restart, scene, scene_text, log);
+  const double shift = rebase_gravity_potential(point, scene);
   restore_simulation(sim, point, log);
+  if (shift != 0)
+    fmt::print(log,
+               "fork: the gravity potential jumps by {:+.6g} J at the checkpoint with the new gravity; the energy "
+               "audit's E(0) is shifted by as much\n",
+               shift);
   if (const int removed = checkpoints.restore(point.archive))
     fmt::print(log, "restart: removed {} later checkpoint(s) of the interrupted run from {}\n", removed,
                checkpoints.directory().string());

@@ -171,6 +171,10 @@ TEST(ForkPhysics, GravitySwitchedOnMakesTheBlockFallFromTheCheckpoint) {
   const Result fork = fork_physics_run(dir, "falling.yaml", "fork", checkpoint);
   ASSERT_EQ(fork.status, 0) << fork.err;
   EXPECT_NE(fork.err.find(":6: solver.gravity[1]: 0 in the checkpoint, -9.81 now"), std::string::npos) << fork.err;
+  // The potential -sum m g . x jumps at T by M 9.81 m/s^2 0.7 m (the block's centre) = 274.68 J; E(0) of the energy
+  // audit moves with it, so the audit sees no gain (without the shift it warned: balance +274.6 J).
+  EXPECT_NE(fork.err.find("fork: the gravity potential jumps by +274.68 J"), std::string::npos) << fork.err;
+  EXPECT_EQ(fork.err.find("warning: energy sentinel"), std::string::npos) << fork.err;
   EXPECT_NE(cli::slurp(dir / "fork" / "fork_changes.txt").find("solver.gravity[1]: 0 in the checkpoint, -9.81 now"),
             std::string::npos);
   const auto still = fork_physics_last_row(dir / "still" / "energy.csv");
