@@ -7,10 +7,12 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 
 #include "mpm/checkpoint/checkpoint_file.hpp"
 #include "mpm/checkpoint/checksum.hpp"
 #include "mpm/core/due_time.hpp"
+#include "mpm/io/atomic_file.hpp"
 #include "mpm/scene/scene_error.hpp"
 
 namespace mpm::app {
@@ -59,6 +61,7 @@ RunCheckpoints::RunCheckpoints(const SceneDescription& scene, std::string scene_
     : settings_(scene.output.checkpoint),
       scene_file_(scene.file),
       scene_text_(std::move(scene_text)),
+      gravity_(scene.solver.gravity.begin(), scene.solver.gravity.begin() + scene.dimension),
       directory_(std::move(directory)),
       last_wall_(Clock::now()),
       writes_files_(writes_files) {
@@ -78,6 +81,7 @@ fs::path RunCheckpoints::write(StateArchive& archive, Index step, double time) {
   archive.put_integer("run/format", checkpoint_format);
   archive.put_text("run/program_version", MPM_VERSION);
   archive.put_text("run/scene_file", scene_file_);
+  archive.put_values<double>("run/gravity", gravity_);
   archive.put_text("run/scene_text", scene_text_);
   archive.put_text("run/scene_hash", checkpoint::checksum_hex(scene_text_));
   archive.put_number("run/checkpoint_next_time", next_time_);
@@ -162,15 +166,57 @@ RestartPoint find_restart_point(const fs::path& file_or_directory, const SceneDe
       point.changes.push_back(std::move(d));
       continue;
     }
-    refused +=
-        fmt::format("\n  {}:{}: {}: {} in the checkpoint, {} now", d.where.file, d.where.line, d.key, d.was, d.now);
+    refused += fmt::format("\n  {}:{}: {}: {} in the checkpoint, {} now: {}", d.where.file, d.where.line, d.key, d.was,
+                           d.now, d.refusal);
   }
   if (!refused.empty())
     throw RestartError(fmt::format(
-        "{}: the scene differs from the checkpoint's (scene {}) in keys a fork may not change (only end_time, cfl, "
-        "output, prescribed boundary velocities):{}",
+        "{}: the scene differs from the checkpoint's (scene {}) in keys a fork may not change (a fork may change "
+        "what keeps the state's meaning: output, end time and time step, boundary conditions, material parameters, "
+        "loads, gravity; docs/scene-reference.md, \"Restart and fork\"):{}",
         where, point.archive.text("run/scene_file"), refused));
   return point;
+}
+
+void write_fork_changes(const fs::path& directory, const RestartPoint& point) {
+  if (point.changes.empty()) return;
+  std::string text = fmt::format("# a fork of {} (step {}, t = {:.9g} s, scene {}): the keys it changed\n",
+                                 point.file.string(), point.archive.integer("simulation/step"),
+                                 point.archive.number("simulation/time"), point.archive.text("run/scene_file"));
+  for (const auto& d : point.changes)
+    text += fmt::format("{}: {} in the checkpoint, {} now  # {}:{}\n", d.key, d.was, d.now, d.where.file, d.where.line);
+  io::write_atomically(directory / fork_changes_file, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw std::runtime_error("cannot write " + (directory / fork_changes_file).string());
+  });
+}
+
+double rebase_gravity_potential(RestartPoint& point, const SceneDescription& scene) {
+  StateArchive& archive = point.archive;
+  if (!archive.contains("run/gravity")) return 0;
+  const auto before = archive.values<double>("run/gravity");
+  std::vector<double> change(before.size());
+  bool changed = false;
+  for (std::size_t d = 0; d < before.size(); ++d) {
+    change[d] = scene.solver.gravity[d] - before[d];
+    changed = changed || change[d] != 0;
+  }
+  if (!changed) return 0;
+  double shift = 0;  // -(g_new - g_old) . sum m x over the saved particles
+  for (const auto& body : archive.children("bodies/")) {
+    const std::string prefix = "bodies/" + body + "/";
+    if (!archive.contains(prefix + "mass") || !archive.contains(prefix + "position")) continue;
+    const auto mass = archive.values<double>(prefix + "mass");
+    const auto position = archive.values<double>(prefix + "position");
+    for (std::size_t p = 0; p < mass.size(); ++p)
+      for (std::size_t d = 0; d < change.size(); ++d) shift -= mass[p] * change[d] * position[p * change.size() + d];
+  }
+  std::vector<std::string> shifted;
+  for (const auto& [name, array] : archive.entries())
+    if (name == "run/initial_energy" || name.ends_with("/initial_gravity")) shifted.push_back(name);
+  for (const auto& name : shifted) archive.put_number(name, archive.number(name) + shift);
+  return shift;
 }
 
 }  // namespace mpm::app

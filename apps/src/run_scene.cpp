@@ -94,9 +94,13 @@ void check(const SceneDescription& scene, std::ostream& out, std::ostream& log, 
   if (ranks > 0) rank_report<Dim>(scene, *sim, ranks, out, log);
 }
 
-/// The command line's changes to the scene, as "key: value" lines (recorded in the output files).
-std::vector<std::string> overrides(const RunOptions& options) {
+/// The command line's changes to the scene and a fork's (`fork`, nullptr for none), as "key: value" lines
+/// (recorded in the output files).
+std::vector<std::string> overrides(const RunOptions& options, const RestartPoint* fork) {
   std::vector<std::string> lines;
+  if (fork)
+    for (const auto& d : fork->changes)
+      lines.push_back(fmt::format("{}: {}  # fork: {} in the checkpoint", d.key, d.now, d.was));
   if (options.output_directory) lines.push_back("output.directory: " + options.output_directory->string());
   if (options.end_time) lines.push_back(fmt::format("solver.end_time: {}", *options.end_time));
   if (options.steps) lines.push_back(fmt::format("steps: {}  # --steps", *options.steps));
@@ -130,7 +134,13 @@ std::optional<RestartPoint> restart_from(const SceneDescription& scene, const st
                                          std::ostream& log) {
   if (!options.restart) return std::nullopt;
   RestartPoint point = find_restart_point(*options.restart, scene, scene_text, log);
+  const double shift = rebase_gravity_potential(point, scene);
   restore_simulation(sim, point, log);
+  if (shift != 0)
+    fmt::print(log,
+               "fork: the gravity potential jumps by {:+.6g} J at the checkpoint with the new gravity; the energy "
+               "audit's E(0) is shifted by as much\n",
+               shift);
   if (const int removed = checkpoints.restore(point.archive))
     fmt::print(log, "restart: removed {} later checkpoint(s) of the interrupted run from {}\n", removed,
                checkpoints.directory().string());
@@ -276,8 +286,9 @@ RunSummary run(const SceneDescription& scene_in, const RunOptions& options, std:
   checkpoints.kill_in_checkpoint(options.test.kill_in_checkpoint);
   const std::optional<RestartPoint> restart = restart_from(scene, scene_text, options, checkpoints, sim, log);
   if (comm) distribute(sim, options);
-  job->start({directory, run_field_data(scene, overrides(options)), view_script_for(scene),
-              restart ? &restart->archive : nullptr, comm, &checkpoints, options.profile});
+  job->start({directory, run_field_data(scene, overrides(options, restart ? &*restart : nullptr)),
+              view_script_for(scene), restart ? &restart->archive : nullptr, comm, &checkpoints, options.profile});
+  if (restart && (!comm || comm->rank() == 0)) write_fork_changes(job->output_directory(), *restart);
   RunSummary summary = particles_of(sim, comm);
   note_time_step(sim, log);
   const Index first_step = sim.step();  // 0, or the step a restart continues

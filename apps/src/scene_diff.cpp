@@ -14,38 +14,12 @@
 namespace mpm::app {
 namespace {
 
-/// The run-control keys the specs do not mark: a face condition's velocity (its kind's keys are not KeySpecs).
-const std::vector<std::string> unspecified_run_control_keys{"grid.boundary.*.velocity"};
-
-/// Every run-control key: those the sections' specs mark (KeySpec::run_control), the others'.
-std::vector<std::string> run_control_keys() {
-  std::vector<std::string> patterns = io::run_control_patterns(scene_keys());
-  patterns.insert(patterns.end(), unspecified_run_control_keys.begin(), unspecified_run_control_keys.end());
-  return patterns;
-}
-
-std::vector<std::string> split(const std::string& path) {
-  std::vector<std::string> parts;
-  std::string part;
-  for (const char c : path) {
-    if (c == '.' || c == '[' || c == ']') {
-      if (!part.empty()) parts.push_back(part);
-      part.clear();
-    } else {
-      part += c;
-    }
-  }
-  if (!part.empty()) parts.push_back(part);
-  return parts;
-}
-
-/// `pattern` (with `*` for any one key or index) is `key` or a group that holds it.
-bool matches(const std::string& pattern, const std::string& key) {
-  const auto p = split(pattern), k = split(key);
-  if (p.size() > k.size()) return false;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p[i] != "*" && p[i] != k[i]) return false;
-  return true;
+/// What a fork may change, from the specs: the sections' keys (KeySpec::run_control, KeySpec::fork_refusal),
+/// the materials' parameters (material_fork_rules). Built on each call: the registered kinds are the rules' source.
+std::vector<io::ForkRule> all_fork_rules() {
+  std::vector<io::ForkRule> rules = io::fork_rules(scene_keys());
+  for (auto& rule : material_fork_rules()) rules.push_back(std::move(rule));
+  return rules;
 }
 
 std::string text_of(const YAML::Node& node) {
@@ -75,7 +49,8 @@ bool same_scalar(const YAML::Node& a, const YAML::Node& b) {
 
 class Differ {
  public:
-  Differ(const std::string& file, std::vector<SceneDifference>& out) : file_(file), out_(out) {}
+  Differ(const std::string& file, std::vector<SceneDifference>& out)
+      : file_(file), out_(out), rules_(all_fork_rules()) {}
 
   void compare(const YAML::Node& saved, const YAML::Node& now, const std::string& path, const YAML::Mark& mark) {
     const bool had = saved.IsDefined() && !saved.IsNull(), has = now.IsDefined() && !now.IsNull();
@@ -99,7 +74,11 @@ class Differ {
       const YAML::Mark m = saved.Mark();
       d.where = {"the checkpoint's scene", m.line + 1, m.column + 1};
     }
-    d.run_control = is_run_control_key(path);
+    if (const io::ForkRule* rule = io::fork_rule_for(rules_, path)) {
+      d.run_control = rule->allowed;
+      d.refusal = rule->reason;
+    }
+    if (!d.run_control && d.refusal.empty()) d.refusal = undeclared_refusal;
     out_.push_back(std::move(d));
   }
 
@@ -122,13 +101,14 @@ class Differ {
 
   std::string file_;
   std::vector<SceneDifference>& out_;
+  std::vector<io::ForkRule> rules_;
 };
 
 }  // namespace
 
 bool is_run_control_key(const std::string& key) {
-  const auto patterns = run_control_keys();
-  return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return matches(p, key); });
+  const io::ForkRule* rule = io::fork_rule_for(all_fork_rules(), key);
+  return rule && rule->allowed;
 }
 
 std::vector<SceneDifference> scene_differences(const std::string& saved, const std::string& current,

@@ -24,9 +24,15 @@ constexpr std::string_view top_level = "top-level keys";
 constexpr std::string_view keys_of_shape = "keys of shape ";
 
 std::string description_cell(const io::KeySpec& key) {
-  if (!key.run_control) return key.description;
-  const bool section = key.type == io::KeyType::map || key.type == io::KeyType::named_map;
-  return key.description + (section ? "; a fork may change it and everything in it" : "; a fork may change it");
+  const bool section =
+      key.type == io::KeyType::map || key.type == io::KeyType::named_map || key.type == io::KeyType::list;
+  if (key.run_control)
+    return key.description + (section ? "; a fork may change it and everything in it" : "; a fork may change it");
+  if (key.fork_refusal.empty()) return key.description;
+  const auto inner = io::fork_rules(key.keys);
+  if (section && std::any_of(inner.begin(), inner.end(), [](const io::ForkRule& r) { return r.allowed; }))
+    return key.description + "; a fork may not change it but the keys in it marked so: " + key.fork_refusal;
+  return key.description + "; a fork may not change it: " + key.fork_refusal;
 }
 
 /// The keys of the section at `path` below `keys` ("" for `keys` themselves), or nullptr.

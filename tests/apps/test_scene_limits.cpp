@@ -27,7 +27,7 @@ using cli::slurp;
 const fs::path examples = fs::path(MPM_SOURCE_DIR) / "examples";
 
 /// `text` with its first `from` replaced by `to` (the test fails when `from` is absent).
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
+std::string scene_limits_replaced(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   if (at != std::string::npos) text.replace(at, from.size(), to);
@@ -39,7 +39,7 @@ fs::path changed_example(const fs::path& dir, const std::string& example, const 
                          const std::string& from, const std::string& to) {
   fs::copy(examples / example, dir / example, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
   const fs::path file = dir / example / scene;
-  const std::string text = replaced(slurp(file), from, to);
+  const std::string text = scene_limits_replaced(slurp(file), from, to);
   std::ofstream(file) << text;
   return file;
 }

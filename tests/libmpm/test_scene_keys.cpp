@@ -98,6 +98,38 @@ TEST(KeySpec, RunControlPatternsComeFromTheSpecs) {
             (std::vector<std::string>{"top.walls.*.speed", "top.files"}));
 }
 
+TEST(KeySpec, ForkRulesTakeTheMostSpecificDeclaration) {
+  // A refused section with an allowed key inside, and a refused key inside an allowed one: the rule with the most
+  // parts decides; a refusal wins a tie; a key no rule matches has none (the caller's general reason).
+  using mpm::io::KeySpec;
+  using mpm::io::KeyType;
+  const std::vector<KeySpec> keys{
+      {.name = "box",
+       .type = KeyType::map,
+       .fork_refusal = "the box is fixed",
+       .keys = {{.name = "size"}, {.name = "faces", .type = KeyType::named_map, .run_control = true}}},
+      {.name = "items",
+       .type = KeyType::list,
+       .keys = {{.name = "speed", .run_control = true}, {.name = "start", .fork_refusal = "acts at t = 0"}}},
+      {.name = "colour", .type = KeyType::name},
+  };
+  auto rules = mpm::io::fork_rules(keys, "top");
+  ASSERT_EQ(rules.size(), 4u);
+  const auto decide = [&](const std::string& key) {
+    const mpm::io::ForkRule* rule = mpm::io::fork_rule_for(rules, key);
+    return !rule ? std::string("none") : rule->allowed ? std::string("allowed") : rule->reason;
+  };
+  EXPECT_EQ(decide("top.box.size"), "the box is fixed");
+  EXPECT_EQ(decide("top.box.faces.x_min.velocity[1]"), "allowed");
+  EXPECT_EQ(decide("top.box.faces"), "allowed");
+  EXPECT_EQ(decide("top.items[2].speed"), "allowed");
+  EXPECT_EQ(decide("top.items[0].start"), "acts at t = 0");
+  EXPECT_EQ(decide("top.items"), "none");  // a list that grew: no rule declares it
+  EXPECT_EQ(decide("top.colour"), "none");
+  rules.push_back({"top.items.*.speed", false, "refused too"});  // a tie: the refusal decides
+  EXPECT_EQ(decide("top.items[2].speed"), "refused too");
+}
+
 TEST(KeySpec, ReferenceCellsSayTypeDefaultAndAllowedValues) {
   const auto& keys = sample_keys();
   EXPECT_EQ(mpm::io::key_default_text(keys[0]), "2.5");

@@ -2,7 +2,9 @@
 // and their mass, momentum and energies are booked per face; the books and the first departures are module state
 // (checkpoints, the stability guard's snapshots).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -107,9 +109,20 @@ void GridBoundary<Dim>::save_state(StateArchive& archive, const std::string& pre
 
 template <int Dim>
 void GridBoundary<Dim>::restore_state(const StateArchive& archive, const std::string& prefix) {
+  // A fork may change a face's condition (grid.boundary), but not which faces let material out: their books are
+  // energy.csv's outflow_FACE_* columns, which the continued file has from its first row or not at all.
+  std::vector<std::string> saved = archive.children(prefix + "outflow/"), now;
+  for (const auto& b : books_) now.push_back(face_names[static_cast<std::size_t>(b.face)]);
+  std::sort(saved.begin(), saved.end());
+  std::sort(now.begin(), now.end());
+  if (saved != now)
+    throw ArchiveError(fmt::format(
+        "the outflow faces differ: [{}] in the checkpoint, [{}] in the scene; a fork may not add or remove an "
+        "outflow face (its books are energy.csv's outflow_FACE_* columns, which the checkpoint's run has or not)",
+        fmt::join(saved, ", "), fmt::join(now, ", ")));
   if (books_.empty()) return;
   notices_.clear();
-  for (auto& b : books_)  // a checkpoint of a run without this outflow face: empty books
+  for (auto& b : books_)
     restore_book(archive, fmt::format("{}outflow/{}/", prefix, face_names[static_cast<std::size_t>(b.face)]), b);
   if (!archive.contains(prefix + "notices/face")) return;
   const auto face = archive.values<std::int64_t>(prefix + "notices/face");

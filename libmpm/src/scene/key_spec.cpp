@@ -24,6 +24,22 @@ std::optional<std::vector<long long>> few_integers(const Range& range) {
   return values;
 }
 
+/// `path` in parts: "a.b[2].c" is a, b, 2, c.
+std::vector<std::string> path_parts(const std::string& path) {
+  std::vector<std::string> parts;
+  std::string part;
+  for (const char c : path) {
+    if (c == '.' || c == '[' || c == ']') {
+      if (!part.empty()) parts.push_back(part);
+      part.clear();
+    } else {
+      part += c;
+    }
+  }
+  if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
 }  // namespace
 
 double KeySpec::default_number() const {
@@ -135,6 +151,39 @@ std::vector<std::string> run_control_patterns(const std::vector<KeySpec>& keys, 
     patterns.insert(patterns.end(), inner.begin(), inner.end());
   }
   return patterns;
+}
+
+std::vector<ForkRule> fork_rules(const std::vector<KeySpec>& keys, const std::string& prefix) {
+  std::vector<ForkRule> rules;
+  for (const auto& key : keys) {
+    const std::string path = prefix.empty() ? key.name : prefix + "." + key.name;
+    if (key.run_control) {
+      rules.push_back({path, true, ""});
+      continue;
+    }
+    if (!key.fork_refusal.empty()) rules.push_back({path, false, key.fork_refusal});
+    const auto inner = fork_rules(key.keys, key.type == KeyType::map ? path : path + ".*");
+    rules.insert(rules.end(), inner.begin(), inner.end());
+  }
+  return rules;
+}
+
+const ForkRule* fork_rule_for(const std::vector<ForkRule>& rules, const std::string& key) {
+  const auto k = path_parts(key);
+  const ForkRule* best = nullptr;
+  std::size_t best_parts = 0;
+  for (const auto& rule : rules) {
+    const auto p = path_parts(rule.pattern);
+    if (p.size() > k.size()) continue;
+    bool match = true;
+    for (std::size_t i = 0; i < p.size() && match; ++i) match = p[i] == "*" || p[i] == k[i];
+    if (!match) continue;
+    if (!best || p.size() > best_parts || (p.size() == best_parts && best->allowed && !rule.allowed)) {
+      best = &rule;
+      best_parts = p.size();
+    }
+  }
+  return best;
 }
 
 }  // namespace mpm::io

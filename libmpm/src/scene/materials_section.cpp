@@ -19,14 +19,35 @@ const std::vector<io::KeySpec>& material_keys() {
        .type = io::KeyType::choice,
        .required = true,
        .description = "the material model; its parameters are the other keys of the entry (tables below)",
-       .allowed_text = "a registered material model, see [Models](#models)"},
+       .allowed_text = "a registered material model, see [Models](#models)",
+       .fork_refusal = "the state layout of the model: the particles' state fields are the checkpoint's model's"},
       {.name = "failure",
        .type = io::KeyType::map,
        .absent = "never fails",
        .description = "when the material's particles fail and what they become (keys of materials.failure below)",
+       .fork_refusal = "the particles' failure state (damage, erosion) comes from the checkpoint",
        .keys = failure_keys()},
   };
   return keys;
+}
+
+std::vector<io::ForkRule> material_fork_rules() {
+  // Material::density() gives the particles their masses when the bodies are built; a restore keeps the
+  // checkpoint's masses, so a new density would not take effect (and would disagree with them in the wave speed)
+  constexpr std::string_view mass_parameter = "density";
+  std::vector<io::ForkRule> rules;
+  for (const auto& name : material_model_names()) {
+    const MaterialModel& model = *find_material_model(name);
+    for (const auto& p : material_parameters(model)) {
+      const std::string pattern = "materials.*." + p.name;
+      if (p.name == mass_parameter)
+        rules.push_back({pattern, false, "the particles' masses come from the checkpoint (computed from it at t = 0)"});
+      else if (std::none_of(rules.begin(), rules.end(), [&](const io::ForkRule& r) { return r.pattern == pattern; }))
+        rules.push_back({pattern, true, ""});
+    }
+    for (auto& rule : io::fork_rules(model.keys, "materials.*")) rules.push_back(std::move(rule));
+  }
+  return rules;
 }
 
 namespace sections {

@@ -62,13 +62,17 @@ std::vector<io::KeySpec> gravity_stage_keys() {
 /// The core's keys of `solver:`.
 std::vector<io::KeySpec> core_solver_keys() {
   using io::KeyType;
+  // why a fork may not change the keys that choose the scheme's kernels: the particles carry the fields those
+  // kernels need (C_p, CPDI corners, the reference configuration of TLMPM) in the checkpoint's layout
+  const std::string scheme_layout = "the state layout of the scheme: the particles' fields are the checkpoint's";
   return {
       {.name = "scheme",
        .type = KeyType::choice,
        .choices = scheme_names(),
        .default_value = std::string("musl"),
        .description = "the time integration; a module's scheme and its own keys are described with the module",
-       .allowed_text = scheme_choices_text()},
+       .allowed_text = scheme_choices_text(),
+       .fork_refusal = scheme_layout},
       {.name = "velocity_transfer",
        .type = KeyType::choice,
        .choices = enum_names<VelocityTransfer>(),
@@ -95,7 +99,8 @@ std::vector<io::KeySpec> core_solver_keys() {
            "cells: -5.61%/-1.75%/-1.14% by 1.7 s (`apic` -13.4%/-4.85%/-2.80%; sensitive to the step's last "
            "digits: -2.08% at 70 cells with dt = 0.1 h/c unrounded); like `flip` it keeps grid-scale noise: the "
            "FSI example with hats inverts a spray particle at 0.234 s at `cfl: 0.5`, and loses 25.3% by 0.5 s at "
-           "`cfl: 0.25` (physics/fluids/README.md, Limits). Not with `tlmpm`, no `flip_fraction`"},
+           "`cfl: 0.25` (physics/fluids/README.md, Limits). Not with `tlmpm`, no `flip_fraction`",
+       .fork_refusal = scheme_layout},
       {.name = "shape_function",
        .type = KeyType::choice,
        .choices = shape_function_names(),
@@ -109,7 +114,8 @@ std::vector<io::KeySpec> core_solver_keys() {
            "`cpdi_r4` (2D parallelograms convected with F, the original CPDI), `cpdi_q4` (2D quadrilaterals with "
            "tracked corners, \"CPDI2\"), `cpdi_t3` (2D triangles: each particle sub-cell is split into two), "
            "`cpdi_tet4` (3D tetrahedra: each sub-cell is split into six). A CPDI function exists in its dimension "
-           "only"},
+           "only",
+       .fork_refusal = scheme_layout},
       {.name = "cpdi_domain_update",
        .type = KeyType::choice,
        .choices = enum_names<CpdiDomainUpdate>(),
@@ -117,13 +123,15 @@ std::vector<io::KeySpec> core_solver_keys() {
        .description = "CPDI only. `deformation_gradient`: corners x_p + F (X_c - X_p) (eq. 3.27); `corners`: every "
                       "corner moves with the grid velocity at the corner (eq. 3.38), so neighbouring domains stay "
                       "glued. `corners` is refused with `cpdi_r4` (use `cpdi_q4`) and with `tlmpm` (its weights "
-                      "never change)"},
+                      "never change)",
+       .fork_refusal = scheme_layout},
       {.name = "flip_fraction",
        .type = KeyType::number,
        .unit = "-",
        .range = io::Range::closed(0, 1),
        .default_value = 1.0,
-       .description = "1 = pure FLIP, 0 = pure PIC (eq. 2.53); only with `velocity_transfer: flip`"},
+       .description = "1 = pure FLIP, 0 = pure PIC (eq. 2.53); only with `velocity_transfer: flip`",
+       .run_control = true},
       {.name = "damping",
        .type = KeyType::number,
        .unit = "-",
@@ -139,13 +147,15 @@ std::vector<io::KeySpec> core_solver_keys() {
            "3D, and each body's own field under `contact:`; refused by a scheme without an explicit momentum "
            "update (`implicit`). The energy it removes is booked: `energy.csv` gains the column `damped_energy` "
            "(eq. 2.75; total_energy + damped_energy = E(0) + W) and the energy sentinel counts it as it counts "
-           "eroded material"},
+           "eroded material",
+       .fork_refusal = "its energy book (energy.csv's damped_energy column) is the checkpoint's"},
       {.name = "dt",
        .type = KeyType::number,
        .unit = "s",
        .range = io::Range::above(0),
        .absent = "none: give `dt` or `cfl`",
-       .description = "a fixed time step; exactly one of `dt` and `cfl`"},
+       .description = "a fixed time step; exactly one of `dt` and `cfl`",
+       .run_control = true},
       {.name = "cfl",
        .type = KeyType::number,
        .unit = "-",
@@ -167,14 +177,16 @@ std::vector<io::KeySpec> core_solver_keys() {
        .range = io::Range::at_least(0),
        .default_value = 1e-12,
        .description = "small-nodal-mass cut-off of eq. 2.63 as a fraction of the largest particle mass: nodes "
-                      "lighter than that get zero velocity"},
+                      "lighter than that get zero velocity",
+       .run_control = true},
       {.name = "gravity",
        .type = KeyType::list,
        .unit = "m/s^2",
        .absent = "zeros",
        .description = "the body force per unit mass",
        .type_text = "list of `dimension` numbers",
-       .allowed_text = "any"},
+       .allowed_text = "any",
+       .run_control = true},
       {.name = "snapshot_interval",
        .type = KeyType::integer,
        .range = io::Range::at_least(1),
@@ -182,13 +194,15 @@ std::vector<io::KeySpec> core_solver_keys() {
        .description = "steps between in-memory snapshots used by the stability guard (on a failure the run is "
                       "rolled back to the snapshot and replayed to the last good step, so this only trades memory "
                       "traffic against replay time)",
-       .type_text = "integer (steps)"},
+       .type_text = "integer (steps)",
+       .run_control = true},
       {.name = "sort_interval",
        .type = KeyType::integer,
        .range = io::Range::at_least(1),
        .default_value = 20.0,
        .description = "steps between particle reorderings by cell",
-       .type_text = "integer (steps)"},
+       .type_text = "integer (steps)",
+       .run_control = true},
       {.name = "energy_tolerance",
        .type = KeyType::number,
        .unit = "-",
@@ -198,7 +212,8 @@ std::vector<io::KeySpec> core_solver_keys() {
            "the energy sentinel's tolerance, a fraction of the largest energy of the run so far: every 50 steps the "
            "balance E(t) - E(0) - W (kinetic + strain + gravity potential + plastic work, less the work of the face "
            "conditions, moving rigid bodies and planes and body forces; docs/theory.md §8) is compared with it. "
-           "Dissipation the audit does not track only lowers the balance, so only a gain can exceed it"},
+           "Dissipation the audit does not track only lowers the balance, so only a gain can exceed it",
+       .run_control = true},
       {.name = "on_energy_drift",
        .type = KeyType::choice,
        .choices = enum_names<EnergyDriftAction>(),
@@ -207,12 +222,14 @@ std::vector<io::KeySpec> core_solver_keys() {
                       "once (step, time, balance, which energy grew most, and the hint of docs/VERIFICATION.md's "
                       "table for the scheme, shape function and transfer); `stop`: the run also ends there through "
                       "the stability path (exit status 3, the state of that step written as the last frame). The "
-                      "largest balance / tolerance of the run is printed at the end"},
+                      "largest balance / tolerance of the run is printed at the end",
+       .run_control = true},
       {.name = "gravity_stage",
        .type = KeyType::map,
        .absent = "none: the run starts from the scene's state",
        .description = "bring the bodies to rest under gravity before t = 0, see "
                       "[solver.gravity_stage](#solvergravity_stage)",
+       .fork_refusal = "the gravity stage ran before t = 0: the checkpoint's state is after it",
        .keys = gravity_stage_keys()},
   };
 }

@@ -68,6 +68,7 @@ class RunCheckpoints final : public CheckpointSink {
  private:
   CheckpointDescription settings_;
   std::string scene_file_, scene_text_;
+  std::vector<double> gravity_;  ///< m/s^2, a component per axis: what a fork that changes it rebases on
   std::filesystem::path directory_;
   double next_time_ = 0;
   Clock::time_point last_wall_;
@@ -89,5 +90,20 @@ struct RestartPoint {
 };
 RestartPoint find_restart_point(const std::filesystem::path& file_or_directory, const SceneDescription& scene,
                                 const std::string& scene_text, std::ostream& log);
+
+/// The name of the file in a fork's output directory that lists what the fork changed.
+inline constexpr const char* fork_changes_file = "fork_changes.txt";
+/// A fork (`point` with changes): writes `directory`/fork_changes.txt atomically, a line per changed key
+/// ("solver.gravity: [0, 0] in the checkpoint, [0, -9.81] now  # fork.yaml:9") after a line naming the checkpoint,
+/// so that the forked run's files say what it changed; nothing for a plain restart (its files are those of the
+/// uninterrupted run).
+void write_fork_changes(const std::filesystem::path& directory, const RestartPoint& point);
+
+/// A fork that changed `solver.gravity` (the checkpoint's run/gravity differs from `scene`'s): the particles'
+/// gravity potential -sum m g . x jumps at the checkpoint by dE = -(g_new - g_old) . sum m x (particles as saved).
+/// Shifts E(0) in `point`'s archive by dE (the energy sentinel's initial gravity potential and run/initial_energy),
+/// so that the audit's balance E(t) - E(0) - W and the summary's energy change continue across the change instead
+/// of reading the new potential as a gain. Returns dE; 0 without a change.
+double rebase_gravity_potential(RestartPoint& point, const SceneDescription& scene);
 
 }  // namespace mpm::app

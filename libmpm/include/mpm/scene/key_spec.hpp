@@ -52,6 +52,10 @@ struct KeySpec {
   std::string allowed_text{};
   /// A fork (`mpm run --restart` with a changed scene) may change this key; for a map or a list, everything in it.
   bool run_control = false;
+  /// Why a fork may not change this key, as the refusal words it ("the grid is the checkpoint's"); for a map or a
+  /// list, the reason of every key in it that declares none of its own and is not run_control. Empty: the
+  /// enclosing section's reason, or the general one (fork_rule_for).
+  std::string fork_refusal{};
   /// map, list: the keys of the section or of each entry (empty: not declared here).
   std::vector<KeySpec> keys{};
 
@@ -78,5 +82,22 @@ std::string key_allowed_text(const KeySpec& key);
 /// dotted patterns of `mpm run --restart`, with `*` for a list index or an entry's name
 /// ("contact.planes.*.velocity").
 std::vector<std::string> run_control_patterns(const std::vector<KeySpec>& keys, const std::string& prefix = "");
+
+/// What a fork may do with the keys a pattern matches (a dotted path with `*` for a list index or an entry's
+/// name; a pattern matches its key and every key inside it).
+struct ForkRule {
+  std::string pattern{};
+  bool allowed = false;  ///< KeySpec::run_control
+  std::string reason{};  ///< KeySpec::fork_refusal, when not allowed
+};
+
+/// The rules below `keys` (whose section is at `prefix`): one per key that is run_control or declares a
+/// fork_refusal.
+std::vector<ForkRule> fork_rules(const std::vector<KeySpec>& keys, const std::string& prefix = "");
+
+/// The rule of `rules` that decides `key` (a dotted path, "[i]" for list indices): the matching pattern with
+/// the most parts, a refusal before an allowance of as many parts; nullptr when none matches (a fork may not
+/// change the key, for no declared reason).
+const ForkRule* fork_rule_for(const std::vector<ForkRule>& rules, const std::string& key);
 
 }  // namespace mpm::io

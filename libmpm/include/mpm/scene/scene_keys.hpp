@@ -29,6 +29,11 @@ const std::vector<io::KeySpec>& set_keys();
 const std::vector<io::KeySpec>& condition_keys();
 /// One entry of `materials:` besides its model's parameters (src/scene/materials_section.cpp).
 const std::vector<io::KeySpec>& material_keys();
+/// What a fork may do with a material's parameters and model keys (src/scene/materials_section.cpp): change
+/// every registered model's parameters ("materials.*.youngs_modulus") but the density, from which the particles'
+/// masses were computed at t = 0 (they come from the checkpoint); a model's own keys (MaterialModel::keys) by
+/// their specs.
+std::vector<io::ForkRule> material_fork_rules();
 /// `failure:` of a material (src/scene/failure_block.cpp): the criteria and the action of failure_criteria.hpp.
 const std::vector<io::KeySpec>& failure_keys();
 
