@@ -163,9 +163,8 @@ inline Vec<Dim> light_node_velocity(Real m, Real light, const Vec<Dim>& v_p, con
 /// closed tank once the splash ran up the walls (Tait water inverted a particle, the incompressible fluid's energy rose
 /// to 20 E0) and with it both lose energy at every output. (The same rule for the cubic fixed its tank too but moved
 /// its affine transfer near the axis of an axisymmetric grid by 0.7% of a step's increment, not understood: the cubic
-/// is left unchanged.) Filtering every column of such a
-/// particle let stacked blocks in contact sink 0.14 mm (quadratic) and 0.37 mm (cubic) at the side walls, 1.4-3.7% of
-/// a cell (docs/theory.md §2).
+/// is left unchanged.) Filtering every column of such a particle let stacked blocks in contact sink 0.14 mm at the side
+/// walls, 1.4% of a cell (docs/theory.md §2).
 template <int Dim, class Shape, class NodeVelocityOf>
 Mat<Dim> affine_matrix_of_trial(const Stencil<Dim, Shape>& st, const NodeRecord<Dim>* node, Real light_mass,
                                 const Vec<Dim>& v_p, NodeVelocityOf&& velocity_of) {
@@ -177,7 +176,8 @@ Mat<Dim> affine_matrix_of_trial(const Stencil<Dim, Shape>& st, const NodeRecord<
   } else if constexpr (requires { Shape::interior_second_moment; }) {
     // Column d of B_p = sum phi_I v_I (x_I - x_p)^T takes the filtered velocities where D_dd falls below the interior
     // moment (the hat-like cells next to a face); the other columns keep every node's own. (D_p is diagonal where the
-    // functions reproduce linear fields, so column d of C_p is then column d of B_p over D_dd.)
+    // functions reproduce linear fields, so column d of C_p is then column d of B_p over D_dd.) D_p first, in
+    // affine_matrix's order of summation, so that a particle away from the faces gets its bits.
     Mat<Dim> B = Mat<Dim>::Zero(), D = Mat<Dim>::Zero();
     for (int a = 0; a < st.count; ++a) {
       const Vec<Dim> r = st.node_offset(a);
@@ -189,13 +189,18 @@ Mat<Dim> affine_matrix_of_trial(const Stencil<Dim, Shape>& st, const NodeRecord<
       hat_like[d] = D(d, d) < Real(0.999) * Shape::interior_second_moment * h * h;
       any = any || hat_like[d];
     }
-    if (!any) return affine_matrix(st, velocity_of);
-    const Real scale = D.trace() / Dim;
-    if (!(std::abs(D.determinant()) > 1e-12 * std::pow(scale, Dim))) return affine_matrix(st, filtered);  // on a face
+    if (any) {
+      const Real scale = D.trace() / Dim;
+      if (!(std::abs(D.determinant()) > 1e-12 * std::pow(scale, Dim))) return affine_matrix(st, filtered);  // on a face
+    }
     for (int a = 0; a < st.count; ++a) {
       const Vec<Dim> v = velocity_of(st.node[a]), r = st.node_offset(a);
+      if (!any) {
+        B += st.w[a] * v * r.transpose();
+        continue;
+      }
       const Vec<Dim> v_light = filtered(st.node[a]);
-      for (int d = 0; d < Dim; ++d) B.col(d) += st.w[a] * r[d] * (hat_like[d] ? v_light : v);
+      for (int d = 0; d < Dim; ++d) B.col(d) += st.w[a] * (hat_like[d] ? v_light : v) * r[d];
     }
     return B * D.inverse();
   } else {
